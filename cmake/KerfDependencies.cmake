@@ -1,0 +1,9 @@
+# Every dependency comes from Debian 12's packages (scripts/install-deps installs them).
+find_package(glm REQUIRED)
+find_package(TBB REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(PkgConfig REQUIRED)
+# OpenImageIO's CMake config names an OpenCV include folder that exists only when OpenCV is
+# installed, so it is linked through its pkg-config file instead.
+pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
+find_package(Catch2 REQUIRED)

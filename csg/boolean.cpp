@@ -1,0 +1,189 @@
+// Union, intersection, difference and xor nodes. Children the ray cannot reach within the
+// current parameter range are skipped by their bounds; wide unions and the cutters of a
+// difference are found through a BVH, so a box minus 1000 spheres tests a handful of spheres.
+#include "csg/bvh.h"
+#include "csg/solids.h"
+
+#include <algorithm>
+
+namespace kerf {
+
+namespace {
+
+// Below this many candidates a linear scan of bounds beats walking a tree.
+constexpr size_t kBvhThreshold = 4;
+
+class BooleanNode final : public Node {
+public:
+    BooleanNode(BoolOp op, std::vector<NodePtr> children)
+        : mOp(op), mChildren(std::move(children)) {
+        std::vector<Bounds3> boxes;
+        for (const NodePtr& c : mChildren) boxes.push_back(c->bounds());
+        mBounds = boxes[0];
+        for (size_t i = 1; i < boxes.size(); ++i) {
+            if (mOp == BoolOp::Intersection)
+                mBounds = Bounds3::overlap(mBounds, boxes[i]);
+            else if (mOp != BoolOp::Difference)
+                mBounds = Bounds3::hull(mBounds, boxes[i]);
+        }
+        // The BVH covers the operands that are found by search: all of a union, the cutters
+        // of a difference (index i in the tree is child i + mFirstSearched).
+        mFirstSearched = (mOp == BoolOp::Difference) ? 1 : 0;
+        const bool searchable = mOp == BoolOp::Union || mOp == BoolOp::Difference;
+        if (searchable && mChildren.size() - mFirstSearched > kBvhThreshold) {
+            mUseBvh = true;
+            mBvh = Bvh(std::vector<Bounds3>(boxes.begin() + mFirstSearched, boxes.end()));
+        }
+    }
+
+    void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+               SpanList& out) const override {
+        out.clear();
+        switch (mOp) {
+            case BoolOp::Union: return unionSpans(ray, tmin, tmax, ctx, out);
+            case BoolOp::Intersection: return intersectionSpans(ray, tmin, tmax, ctx, out);
+            case BoolOp::Difference: return differenceSpans(ray, tmin, tmax, ctx, out);
+            case BoolOp::Xor: return xorSpans(ray, tmin, tmax, ctx, out);
+        }
+    }
+
+    double value(const Vec3& p) const override {
+        double v = mChildren[0]->value(p);
+        for (size_t i = 1; i < mChildren.size(); ++i) {
+            const double c = mChildren[i]->value(p);
+            switch (mOp) {
+                case BoolOp::Union: v = std::min(v, c); break;
+                case BoolOp::Intersection: v = std::max(v, c); break;
+                case BoolOp::Difference: v = std::max(v, -c); break;
+                case BoolOp::Xor: v = std::max(std::min(v, c), -std::max(v, c)); break;
+            }
+        }
+        return v;
+    }
+
+    Interval valueInterval(const IntervalVec3& box) const override {
+        Interval v = mChildren[0]->valueInterval(box);
+        for (size_t i = 1; i < mChildren.size(); ++i) {
+            const Interval c = mChildren[i]->valueInterval(box);
+            switch (mOp) {
+                case BoolOp::Union: v = min(v, c); break;
+                case BoolOp::Intersection: v = max(v, c); break;
+                case BoolOp::Difference: v = max(v, -c); break;
+                case BoolOp::Xor: v = max(min(v, c), -max(v, c)); break;
+            }
+        }
+        return v;
+    }
+
+    int primitiveCount() const override {
+        int n = 0;
+        for (const NodePtr& c : mChildren) n += c->primitiveCount();
+        return n;
+    }
+
+    int depth() const override {
+        int d = 0;
+        for (const NodePtr& c : mChildren) d = std::max(d, c->depth());
+        return d + 1;
+    }
+
+private:
+    /// Spans of child i if its bounds meet the ray within [tmin, tmax]; else leaves `s` empty.
+    bool childSpans(size_t i, const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                    SpanList& s) const {
+        double t0 = tmin, t1 = tmax;
+        ++ctx.stats.boundsTests;
+        if (!mChildren[i]->bounds().clipRay(ray, t0, t1)) {
+            s.clear();
+            return false;
+        }
+        mChildren[i]->spans(ray, tmin, tmax, ctx, s);
+        return !s.empty();
+    }
+
+    /// acc = acc op child.
+    void fold(BoolOp op, SpanList& acc, const SpanList& child, TraceContext& ctx) const {
+        SpanList result;
+        combineSpans(op, acc, child, ctx.relTolerance, result);
+        acc.swap(result);
+    }
+
+    /// Calls f(childIndex) for every searched child whose bounds may meet the ray segment.
+    template <class F>
+    void forSearched(const Ray& ray, double tmin, double tmax, TraceContext& ctx, F&& f) const {
+        if (mUseBvh) {
+            mBvh.traverse(ray, tmin, tmax, ctx.stats, [&](int i, double) {
+                f(static_cast<size_t>(i) + mFirstSearched);
+                return tmax;
+            });
+        } else {
+            for (size_t i = mFirstSearched; i < mChildren.size(); ++i) f(i);
+        }
+    }
+
+    void unionSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                    SpanList& out) const {
+        SpanList child;
+        forSearched(ray, tmin, tmax, ctx, [&](size_t i) {
+            if (!childSpans(i, ray, tmin, tmax, ctx, child)) return;
+            if (out.empty())
+                out = child;
+            else
+                fold(BoolOp::Union, out, child, ctx);
+        });
+    }
+
+    void intersectionSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                           SpanList& out) const {
+        if (!childSpans(0, ray, tmin, tmax, ctx, out)) return;
+        SpanList child;
+        for (size_t i = 1; i < mChildren.size() && !out.empty(); ++i) {
+            // Only where every earlier operand is inside can the result be.
+            const double lo = std::max(tmin, out[0].in.t), hi = std::min(tmax, out.back().out.t);
+            if (!childSpans(i, ray, lo, hi, ctx, child)) {
+                out.clear();
+                return;
+            }
+            fold(BoolOp::Intersection, out, child, ctx);
+        }
+    }
+
+    void differenceSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                         SpanList& out) const {
+        if (!childSpans(0, ray, tmin, tmax, ctx, out)) return;
+        // Cutters matter only where the body is: search them over the body's extent.
+        const double lo = std::max(tmin, out[0].in.t), hi = std::min(tmax, out.back().out.t);
+        SpanList child;
+        forSearched(ray, lo, hi, ctx, [&](size_t i) {
+            if (out.empty() || !childSpans(i, ray, lo, hi, ctx, child)) return;
+            fold(BoolOp::Difference, out, child, ctx);
+        });
+    }
+
+    void xorSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                  SpanList& out) const {
+        SpanList child;
+        for (size_t i = 0; i < mChildren.size(); ++i) {
+            if (!childSpans(i, ray, tmin, tmax, ctx, child)) continue;
+            if (out.empty())
+                out = child;
+            else
+                fold(BoolOp::Xor, out, child, ctx);
+        }
+    }
+
+    BoolOp mOp;
+    std::vector<NodePtr> mChildren;
+    size_t mFirstSearched = 0;
+    bool mUseBvh = false;
+    Bvh mBvh;
+};
+
+}  // namespace
+
+NodePtr makeBoolean(BoolOp op, std::vector<NodePtr> children) {
+    if (children.size() == 1) return children[0];
+    return std::make_shared<BooleanNode>(op, std::move(children));
+}
+
+}  // namespace kerf

@@ -1,0 +1,50 @@
+/// @file csg/expr.h
+/// @brief Expression graphs over x, y, z: hash-consed, so equal subexpressions are one node.
+/// Built by lang/ for `implicit { f … }` and compiled into a Tape (csg/tape.h).
+#pragma once
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace kerf {
+
+enum class Op : uint8_t {
+    Const, VarX, VarY, VarZ,
+    // unary
+    Neg, Square, Sqrt, Abs, Sin, Cos, Tan, Asin, Acos, Atan, Exp, Log, Floor, Ceil,
+    // binary
+    Add, Sub, Mul, Div, Pow, Atan2, Min, Max,
+    // binary with an integer exponent held in `value`: a^n
+    PowInt,
+};
+
+/// One node of the graph. Operands are indices of earlier nodes (-1 when unused).
+struct ExprNode {
+    Op op = Op::Const;
+    int32_t a = -1;
+    int32_t b = -1;
+    double value = 0.0;  ///< the constant for Const, the exponent for PowInt
+};
+
+using ExprId = int32_t;
+
+class ExprGraph {
+public:
+    ExprId constant(double v);
+    ExprId x();
+    ExprId y();
+    ExprId z();
+    ExprId unary(Op op, ExprId a);
+    ExprId binary(Op op, ExprId a, ExprId b);
+    ExprId powInt(ExprId a, int n);
+
+    const std::vector<ExprNode>& nodes() const { return mNodes; }
+
+private:
+    ExprId intern(const ExprNode& n);
+    std::vector<ExprNode> mNodes;
+    std::unordered_map<uint64_t, std::vector<ExprId>> mIndex;  // hash -> candidates
+};
+
+}  // namespace kerf

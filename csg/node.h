@@ -1,0 +1,51 @@
+/// @file csg/node.h
+/// @brief The solid-tree interface: every primitive, transform, material and Boolean node is a
+/// Node. Trees are immutable once built and shared freely between objects and threads
+/// (an instance is the same subtree under another transform).
+#pragma once
+
+#include "csg/interval.h"
+#include "csg/span.h"
+#include "csg/trace_context.h"
+#include "csg/types.h"
+
+#include <memory>
+
+namespace kerf {
+
+/// A box of points as three intervals, for interval evaluation of implicit forms.
+struct IntervalVec3 {
+    Interval x, y, z;
+};
+
+class Node {
+public:
+    virtual ~Node() = default;
+
+    /// A box holding the solid, in this node's own space (the space of its parent).
+    /// May be unbounded (half-spaces); never smaller than the solid.
+    const Bounds3& bounds() const { return mBounds; }
+
+    /// Writes into `out` (cleared first) the spans where the ray is inside the solid, sorted.
+    /// They must be exact on [tmin, tmax]; outside it they may be clipped (a clipped end is a
+    /// Boundary with primitive 0) or omitted. The caller has not necessarily tested bounds.
+    virtual void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                       SpanList& out) const = 0;
+
+    /// The implicit form: ≤ 0 inside, > 0 outside. Its magnitude is not a distance.
+    virtual double value(const Vec3& p) const = 0;
+    /// An interval holding value(p) for every p in the box.
+    virtual Interval valueInterval(const IntervalVec3& box) const = 0;
+
+    /// For `kerf check`: how many primitive leaves (shared subtrees counted per use) and how
+    /// deep the tree is (a leaf has depth 1).
+    virtual int primitiveCount() const = 0;
+    virtual int depth() const = 0;
+
+protected:
+    Bounds3 mBounds;
+};
+
+using NodePtr = std::shared_ptr<const Node>;
+
+}  // namespace kerf

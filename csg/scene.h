@@ -1,0 +1,71 @@
+/// @file csg/scene.h
+/// @brief The scene description that lang/ builds and render/ draws: plain data, validated
+/// when it was built. It lives in csg/ because both sides depend on csg/ and not on each other.
+#pragma once
+
+#include "csg/node.h"
+#include "csg/types.h"
+
+#include <string>
+#include <vector>
+
+namespace kerf {
+
+struct Material {
+    std::string name = "default";
+    Vec3 color{0.8, 0.8, 0.8};
+    double ambient = 0.1;
+    double diffuse = 0.8;
+    double specular = 0.0;
+    double shininess = 20.0;
+    double reflect = 0.0;   ///< mirror weight
+    double transmit = 0.0;  ///< refraction weight; > 0 makes the material a dielectric
+    double ior = 1.5;
+    Vec3 absorb{0.0};       ///< Beer absorption coefficient per unit length inside
+    Vec3 emit{0.0};         ///< emitted radiance, added unlit
+};
+
+struct Light {
+    enum class Kind { Point, Directional };
+    Kind kind = Kind::Point;
+    Vec3 position{0.0};            ///< point lights
+    Vec3 direction{0.0, -1.0, 0.0};  ///< directional lights: the direction light travels
+    Vec3 color{1.0};
+    /// Point lights: irradiance at distance d is color·power / (4π d²). Directional: color.
+    double power = 1.0;
+};
+
+struct CameraDesc {
+    Vec3 eye{0.0, 0.0, -5.0};
+    Vec3 lookAt{0.0};
+    Vec3 up{0.0, 1.0, 0.0};
+    double fovDegrees = 40.0;  ///< vertical field of view, in (0, 180)
+};
+
+struct Mist {
+    bool enabled = false;
+    Vec3 color{0.0};
+    double distance = 1.0;  ///< colour blends to the mist colour by exp(-d / distance)
+};
+
+struct RenderSettings {
+    int width = 640;
+    int height = 480;
+    int spp = 1;       ///< samples per pixel, taken as an n×n jittered grid, n = ceil(sqrt(spp))
+    int maxDepth = 8;  ///< bounces of reflection and refraction
+};
+
+struct Scene {
+    CameraDesc camera;
+    std::vector<Light> lights;
+    /// materials[0] is the default (grey, diffuse) that objects without a material get.
+    std::vector<Material> materials{Material{}};
+    Mist mist;
+    Vec3 background{0.0};
+    RenderSettings settings;
+    /// Each object's tree already holds its transforms and materials; objects are separate
+    /// (overlapping objects are not merged), the nearest surface of any of them is seen.
+    std::vector<NodePtr> objects;
+};
+
+}  // namespace kerf

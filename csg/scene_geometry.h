@@ -1,0 +1,59 @@
+/// @file csg/scene_geometry.h
+/// @brief The objects of a scene behind one BVH: nearest hit for camera and bounce rays, all
+/// spans along a segment for shadow rays.
+#pragma once
+
+#include "csg/bvh.h"
+#include "csg/node.h"
+
+#include <optional>
+#include <vector>
+
+namespace kerf {
+
+struct Hit {
+    double t = 0.0;
+    Vec3 normal{0.0};  ///< world space, unit, outward of the solid (along the ray when leaving)
+    bool entering = true;  ///< the ray goes from outside to inside the solid here
+    int32_t material = 0;  ///< never kNoMaterial: objects without one get 0, the default
+    uint32_t primitive = 0;
+    int object = -1;
+};
+
+class SceneGeometry {
+public:
+    explicit SceneGeometry(std::vector<NodePtr> objects);
+
+    /// The first surface crossing with tmin < t ≤ tmax, over all objects.
+    std::optional<Hit> nearestHit(const Ray& ray, double tmin, double tmax,
+                                  TraceContext& ctx) const;
+
+    /// Calls visit(objectIndex, spans) for every object whose spans meet (tmin, tmax);
+    /// spans are as Node::spans gives them (exact on [tmin, tmax], materials filled).
+    template <class Visit>
+    void forEachObjectSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                            Visit&& visit) const;
+
+    const std::vector<NodePtr>& objects() const { return mObjects; }
+    Bounds3 bounds() const;
+
+private:
+    std::vector<NodePtr> mObjects;
+    Bvh mBvh;
+};
+
+template <class Visit>
+void SceneGeometry::forEachObjectSpans(const Ray& ray, double tmin, double tmax,
+                                       TraceContext& ctx, Visit&& visit) const {
+    SpanList spans;
+    mBvh.traverse(ray, tmin, tmax, ctx.stats, [&](int index, double) {
+        mObjects[index]->spans(ray, tmin, tmax, ctx, spans);
+        if (!spans.empty()) {
+            fillMaterial(spans, 0);
+            visit(index, spans);
+        }
+        return tmax;
+    });
+}
+
+}  // namespace kerf

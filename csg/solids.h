@@ -1,0 +1,36 @@
+/// @file csg/solids.h
+/// @brief Factories for every kind of node. Arguments are validated by the caller (lang/):
+/// these assume radii > 0, non-degenerate axes and non-empty boxes.
+#pragma once
+
+#include "csg/node.h"
+#include "csg/span.h"
+#include "csg/tape.h"
+
+#include <vector>
+
+namespace kerf {
+
+NodePtr makeSphere(const Vec3& center, double radius);
+NodePtr makeBox(const Vec3& lo, const Vec3& hi);
+/// Capped cylinder from `a` to `b`.
+NodePtr makeCylinder(const Vec3& a, const Vec3& b, double radius);
+/// Capped cone (frustum) from `a` (radius r1) to `b` (radius r2); one radius may be 0.
+NodePtr makeCone(const Vec3& a, const Vec3& b, double r1, double r2);
+/// Torus around the y axis, centred at the origin: major radius R, minor radius r.
+NodePtr makeTorus(double majorRadius, double minorRadius);
+/// All p with dot(normal, p) ≤ offset. `normal` need not be unit length.
+NodePtr makeHalfSpace(const Vec3& normal, double offset);
+/// {p in bound : f(p) ≤ 0}, f given as a tape over x, y, z.
+NodePtr makeImplicit(std::shared_ptr<const Tape> f, const Bounds3& bound);
+
+/// The child seen through worldFromLocal (maps the child's space into this node's space).
+NodePtr makeTransform(NodePtr child, const Affine& worldFromLocal);
+/// Gives boundaries of the child that have no material yet this material.
+NodePtr makeMaterial(NodePtr child, int32_t material);
+/// Union / intersection / xor of all children; difference is the first minus all the rest.
+/// Wide nodes get a BVH over their children's bounds.
+NodePtr makeBoolean(BoolOp op, std::vector<NodePtr> children);
+
+
+}  // namespace kerf

@@ -1,0 +1,108 @@
+// The Boolean algebra of spans (Roth 1982): merge the boundary events of two span lists in t
+// order, track inside/outside of each operand, and emit a boundary wherever the result changes.
+#include "csg/span.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kerf {
+
+namespace {
+
+// Below this relative width a span or gap is rounding noise even for closed forms: coincident
+// faces computed by different formulas differ by a few ulps of t.
+constexpr double kRoundingFloor = 32.0 * 0x1p-52;
+
+bool evaluate(BoolOp op, bool a, bool b) {
+    switch (op) {
+        case BoolOp::Union: return a || b;
+        case BoolOp::Intersection: return a && b;
+        case BoolOp::Difference: return a && !b;
+        case BoolOp::Xor: return a != b;
+    }
+    return false;
+}
+
+const Boundary& boundaryAt(const SpanList& s, int k) { return (k & 1) ? s[k >> 1].out : s[k >> 1].in; }
+
+bool thin(double t0, double t1, double rel) {
+    if (!std::isfinite(t0) || !std::isfinite(t1)) return false;
+    return t1 - t0 <= rel * std::max(std::fabs(t0), std::fabs(t1));
+}
+
+}  // namespace
+
+void SpanList::grow() {
+    const int capacity = mCapacity * 2;
+    Span* data = new Span[capacity];
+    std::copy(mData, mData + mSize, data);
+    if (mData != mInline) delete[] mData;
+    mData = data;
+    mCapacity = capacity;
+}
+
+void combineSpans(BoolOp op, const SpanList& a, const SpanList& b, double relTolerance,
+                  SpanList& out) {
+    out.clear();
+    const int na = 2 * a.size(), nb = 2 * b.size();
+    int ia = 0, ib = 0;
+    bool inA = false, inB = false, inResult = false;
+    while (ia < na || ib < nb) {
+        const double ta = ia < na ? boundaryAt(a, ia).t : kInf;
+        const double tb = ib < nb ? boundaryAt(b, ib).t : kInf;
+        // At equal t both events happen at once: coincident faces are decided as if they
+        // coincided exactly, so a shared face leaves no sliver and abutting solids no seam.
+        const bool takeA = ia < na && (ib >= nb || ta <= tb);
+        const bool takeB = ib < nb && (ia >= na || tb <= ta);
+        const bool wasA = inA, wasB = inB;
+        if (takeA) inA = !inA;
+        if (takeB) inB = !inB;
+        const bool now = evaluate(op, inA, inB);
+        if (now != inResult) {
+            // The boundary that made the change: A's when A alone would have made it (a fixed
+            // preference keeps ties deterministic), else B's.
+            const bool fromA = takeA && evaluate(op, inA, wasB) != evaluate(op, wasA, wasB);
+            Boundary bd = fromA ? boundaryAt(a, ia) : boundaryAt(b, ib);
+            // The result's outward normal: a cutter's surface faces the other way, and so does
+            // either operand's surface where it lies inside the other operand of a xor.
+            const bool flip = (op == BoolOp::Difference && !fromA) ||
+                              (op == BoolOp::Xor && (fromA ? inB : inA));
+            if (flip) bd.normal = -bd.normal;
+            if (now) {
+                out.push_back(Span{bd, bd});
+            } else {
+                out.back().out = bd;
+            }
+            inResult = now;
+        }
+        if (takeA) ++ia;
+        if (takeB) ++ib;
+    }
+    dropThinSpans(out, relTolerance);
+}
+
+void dropThinSpans(SpanList& s, double relTolerance) {
+    const double rel = std::max(relTolerance, kRoundingFloor);
+    int w = 0;
+    for (int r = 0; r < s.size(); ++r) {
+        // A gap thinner than the tolerance closes: the spans on both sides join.
+        if (w > 0 && thin(s[w - 1].out.t, s[r].in.t, rel)) {
+            s[w - 1].out = s[r].out;
+            continue;
+        }
+        s[w++] = s[r];
+    }
+    int k = 0;
+    for (int r = 0; r < w; ++r)
+        if (!thin(s[r].in.t, s[r].out.t, rel) && s[r].out.t > s[r].in.t) s[k++] = s[r];
+    s.truncate(k);
+}
+
+void fillMaterial(SpanList& s, int32_t material) {
+    for (Span& span : s) {
+        if (span.in.material == Boundary::kNoMaterial) span.in.material = material;
+        if (span.out.material == Boundary::kNoMaterial) span.out.material = material;
+    }
+}
+
+}  // namespace kerf

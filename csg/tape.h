@@ -1,0 +1,45 @@
+/// @file csg/tape.h
+/// @brief A compiled expression: a flat, immutable list of instructions in evaluation order,
+/// and the per-thread evaluators over it (point, interval, gradient).
+#pragma once
+
+#include "csg/expr.h"
+#include "csg/interval.h"
+#include "csg/types.h"
+
+#include <memory>
+#include <vector>
+
+namespace kerf {
+
+/// Instruction i writes slot i; operands name earlier slots.
+struct TapeInstr {
+    Op op;
+    int32_t a;
+    int32_t b;
+    double value;
+};
+
+class Tape {
+public:
+    /// Compiles the part of the graph that `root` depends on.
+    static std::shared_ptr<const Tape> compile(const ExprGraph& graph, ExprId root);
+
+    const std::vector<TapeInstr>& instrs() const { return mInstrs; }
+    int size() const { return static_cast<int>(mInstrs.size()); }
+
+    /// f at a point.
+    double eval(const Vec3& p) const;
+    /// An interval holding f over the box.
+    Interval evalInterval(const Interval& x, const Interval& y, const Interval& z) const;
+    /// f and its gradient at a point (forward-mode differentiation).
+    double evalGradient(const Vec3& p, Vec3& gradient) const;
+    /// Along a ray p(t) = o + t·d for t in `t`: an interval holding f, and one holding df/dt
+    /// (forward-mode differentiation on intervals). Used by root isolation.
+    void evalIntervalAlongRay(const Ray& ray, const Interval& t, Interval& f, Interval& dfdt) const;
+
+private:
+    std::vector<TapeInstr> mInstrs;
+};
+
+}  // namespace kerf

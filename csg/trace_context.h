@@ -1,0 +1,33 @@
+/// @file csg/trace_context.h
+/// @brief Per-thread state for tracing: the tolerance in force and the statistics counters.
+#pragma once
+
+#include <cstdint>
+
+namespace kerf {
+
+/// Counters kept per thread and summed at the end (`--stats`).
+struct TraceStats {
+    uint64_t primitiveTests = 0;   ///< calls of a primitive's span computation
+    uint64_t boundsTests = 0;      ///< ray–box tests of node bounds and BVH nodes
+    uint64_t rootSteps = 0;        ///< interval subdivisions and polish iterations
+    uint64_t intervalEvals = 0;    ///< interval evaluations of implicit functions
+
+    TraceStats& operator+=(const TraceStats& o) {
+        primitiveTests += o.primitiveTests;
+        boundsTests += o.boundsTests;
+        rootSteps += o.rootSteps;
+        intervalEvals += o.intervalEvals;
+        return *this;
+    }
+};
+
+/// What a trace needs besides the ray. One per thread; never shared.
+struct TraceContext {
+    /// Hit distances must satisfy |t − t*| ≤ relTolerance·|t*|; spans thinner than
+    /// relTolerance·|t| vanish. Closed-form primitives are exact to double precision anyway.
+    double relTolerance = 1e-9;
+    TraceStats stats;
+};
+
+}  // namespace kerf

@@ -1,0 +1,90 @@
+// Transform and material nodes: the two modifiers that wrap a shared subtree.
+#include "csg/solids.h"
+
+namespace kerf {
+
+namespace {
+
+/// The child seen through an affine map. The ray goes into the child's space by the inverse
+/// map with its direction not renormalised, so t is the same in both spaces; normals come
+/// back by the inverse transpose.
+class TransformNode final : public Node {
+public:
+    TransformNode(NodePtr child, const Affine& worldFromLocal)
+        : mChild(std::move(child)),
+          mLocalFromWorld(worldFromLocal.inverse()),
+          mNormalToWorld(glm::transpose(mLocalFromWorld.linear)) {
+        mBounds = worldFromLocal.map(mChild->bounds());
+    }
+
+    void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+               SpanList& out) const override {
+        const Ray local{mLocalFromWorld.point(ray.origin), mLocalFromWorld.vector(ray.dir)};
+        mChild->spans(local, tmin, tmax, ctx, out);
+        for (Span& s : out) {
+            s.in.normal = mNormalToWorld * s.in.normal;
+            s.out.normal = mNormalToWorld * s.out.normal;
+        }
+    }
+
+    double value(const Vec3& p) const override { return mChild->value(mLocalFromWorld.point(p)); }
+
+    Interval valueInterval(const IntervalVec3& box) const override {
+        const Interval in[3] = {box.x, box.y, box.z};
+        Interval out[3];
+        for (int row = 0; row < 3; ++row) {
+            Interval acc(mLocalFromWorld.offset[row]);
+            for (int col = 0; col < 3; ++col) {
+                const double m = mLocalFromWorld.linear[col][row];
+                if (m != 0.0) acc = acc + Interval(m) * in[col];
+            }
+            out[row] = acc;
+        }
+        return mChild->valueInterval({out[0], out[1], out[2]});
+    }
+
+    int primitiveCount() const override { return mChild->primitiveCount(); }
+    int depth() const override { return mChild->depth(); }
+
+private:
+    NodePtr mChild;
+    Affine mLocalFromWorld;
+    Mat3 mNormalToWorld;
+};
+
+/// Gives the child's boundaries that have no material yet this one: the innermost wins.
+class MaterialNode final : public Node {
+public:
+    MaterialNode(NodePtr child, int32_t material) : mChild(std::move(child)), mMaterial(material) {
+        mBounds = mChild->bounds();
+    }
+
+    void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+               SpanList& out) const override {
+        mChild->spans(ray, tmin, tmax, ctx, out);
+        fillMaterial(out, mMaterial);
+    }
+
+    double value(const Vec3& p) const override { return mChild->value(p); }
+    Interval valueInterval(const IntervalVec3& box) const override {
+        return mChild->valueInterval(box);
+    }
+    int primitiveCount() const override { return mChild->primitiveCount(); }
+    int depth() const override { return mChild->depth(); }
+
+private:
+    NodePtr mChild;
+    int32_t mMaterial;
+};
+
+}  // namespace
+
+NodePtr makeTransform(NodePtr child, const Affine& worldFromLocal) {
+    return std::make_shared<TransformNode>(std::move(child), worldFromLocal);
+}
+
+NodePtr makeMaterial(NodePtr child, int32_t material) {
+    return std::make_shared<MaterialNode>(std::move(child), material);
+}
+
+}  // namespace kerf

@@ -1,0 +1,49 @@
+/// @file lang/diagnostic.h
+/// @brief Diagnostics are values: a location, a severity, a message and an optional hint,
+/// collected in a sink so one run can report several.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace kerf {
+
+/// A position in a source file; line and column are 1-based, the column counts bytes.
+struct SourceLoc {
+    std::shared_ptr<const std::string> file;  ///< the path as the user named it
+    int line = 0;
+    int col = 0;
+};
+
+enum class Severity { Error, Warning, Note };
+
+struct Diagnostic {
+    SourceLoc loc;
+    Severity severity = Severity::Error;
+    std::string message;
+    std::string hint;  ///< may be empty
+};
+
+/// Collects diagnostics and knows the text of every file read, to print the offending line.
+class DiagnosticSink {
+public:
+    void report(Diagnostic d);
+    void error(const SourceLoc& loc, std::string message, std::string hint = {});
+    void rememberSource(std::shared_ptr<const std::string> file, std::shared_ptr<const std::string> text);
+
+    bool hasErrors() const { return mErrorCount > 0; }
+    int errorCount() const { return mErrorCount; }
+    const std::vector<Diagnostic>& diagnostics() const { return mDiagnostics; }
+
+    /// `FILE:LINE:COL: error: message`, then the source line and a caret under the column,
+    /// then `hint: …` where there is one; one block per diagnostic.
+    std::string format() const;
+
+private:
+    std::vector<Diagnostic> mDiagnostics;
+    std::vector<std::pair<std::shared_ptr<const std::string>, std::shared_ptr<const std::string>>> mSources;
+    int mErrorCount = 0;
+};
+
+}  // namespace kerf

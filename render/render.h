@@ -1,0 +1,49 @@
+/// @file render/render.h
+/// @brief The front door of render/: a Scene and options in, images and statistics out.
+#pragma once
+
+#include "csg/scene.h"
+#include "csg/trace_context.h"
+#include "render/image.h"
+
+#include <functional>
+
+namespace kerf {
+
+struct RenderOptions {
+    int width = 0;        ///< 0: take the scene's render settings
+    int height = 0;       ///< 0: take the scene's render settings
+    int spp = 0;          ///< 0: take the scene's render settings
+    int threads = 0;      ///< 0: all hardware threads
+    double tolerance = 0; ///< relative hit-distance tolerance; 0: derived from the pixel footprint
+    bool wantDepth = false;   ///< fill RenderResult::depth
+    bool wantNormal = false;  ///< fill RenderResult::normal
+    /// Called now and then with the fraction done (0..1); may be empty.
+    std::function<void(double)> progress;
+};
+
+struct RenderStats {
+    uint64_t cameraRays = 0;
+    uint64_t shadowRays = 0;
+    uint64_t reflectionRays = 0;
+    uint64_t refractionRays = 0;
+    TraceStats trace;
+    double secondsSetup = 0;
+    double secondsTrace = 0;
+    double tolerance = 0;  ///< the relative tolerance in force
+};
+
+struct RenderResult {
+    Image color;   ///< 3 channels, linear RGB
+    Image depth;   ///< 1 channel: eye-to-first-hit distance of the pixel-centre ray, +inf on a miss
+    Image normal;  ///< 3 channels: world unit normal at that hit (0 on a miss)
+    RenderStats stats;
+};
+
+/// The default relative tolerance for an image of `height` rows and vertical field of view
+/// `fovDegrees`: a fraction of the angle one pixel spans (see docs/accuracy.md).
+double defaultTolerance(int height, double fovDegrees);
+
+RenderResult render(const Scene& scene, const RenderOptions& options);
+
+}  // namespace kerf
