@@ -1,0 +1,74 @@
+// Expression graph construction: hash-consing (equal nodes share one id) and folding of
+// operations whose operands are all constants.
+#include "csg/expr.h"
+
+#include <cstring>
+#include <utility>
+
+#include "csg/scalar_ops.h"
+
+namespace kerf {
+namespace {
+
+uint64_t bitsOf(double v) {
+    uint64_t b;
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+}
+
+uint64_t mix(uint64_t h, uint64_t v) {
+    // boost::hash_combine's recipe, widened to 64 bits.
+    return h ^ (v + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2));
+}
+
+uint64_t hashOf(const ExprNode& n) {
+    uint64_t h = static_cast<uint64_t>(n.op);
+    h = mix(h, static_cast<uint32_t>(n.a));
+    h = mix(h, static_cast<uint32_t>(n.b));
+    return mix(h, bitsOf(n.value));
+}
+
+/// Constants compare by bits, so 0 and −0 stay distinct (1/x tells them apart).
+bool sameNode(const ExprNode& p, const ExprNode& q) {
+    return p.op == q.op && p.a == q.a && p.b == q.b && bitsOf(p.value) == bitsOf(q.value);
+}
+
+}  // namespace
+
+ExprId ExprGraph::intern(const ExprNode& n) {
+    std::vector<ExprId>& bucket = mIndex[hashOf(n)];
+    for (ExprId id : bucket)
+        if (sameNode(mNodes[id], n)) return id;
+    const ExprId id = static_cast<ExprId>(mNodes.size());
+    mNodes.push_back(n);
+    bucket.push_back(id);
+    return id;
+}
+
+ExprId ExprGraph::constant(double v) { return intern({Op::Const, -1, -1, v}); }
+ExprId ExprGraph::x() { return intern({Op::VarX, -1, -1, 0.0}); }
+ExprId ExprGraph::y() { return intern({Op::VarY, -1, -1, 0.0}); }
+ExprId ExprGraph::z() { return intern({Op::VarZ, -1, -1, 0.0}); }
+
+ExprId ExprGraph::unary(Op op, ExprId a) {
+    // Folding uses the point evaluator's own arithmetic, so the folded tape evaluates to
+    // the same doubles as the unfolded one would.
+    if (mNodes[a].op == Op::Const) return constant(applyScalarOp(op, mNodes[a].value, 0.0, 0.0));
+    return intern({op, a, -1, 0.0});
+}
+
+ExprId ExprGraph::binary(Op op, ExprId a, ExprId b) {
+    if (mNodes[a].op == Op::Const && mNodes[b].op == Op::Const)
+        return constant(applyScalarOp(op, mNodes[a].value, mNodes[b].value, 0.0));
+    if (isCommutative(op) && a > b) std::swap(a, b);
+    return intern({op, a, b, 0.0});
+}
+
+ExprId ExprGraph::powInt(ExprId a, int n) {
+    const double exponent = static_cast<double>(n);
+    if (mNodes[a].op == Op::Const)
+        return constant(applyScalarOp(Op::PowInt, mNodes[a].value, 0.0, exponent));
+    return intern({Op::PowInt, a, -1, exponent});
+}
+
+}  // namespace kerf

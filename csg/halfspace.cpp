@@ -1,0 +1,117 @@
+// The half-space dot(n, p) ≤ offset: one plane crossing per ray, computed with compensated
+// dot products so the hit is exact to a few ulps even for nearly parallel rays.
+#include "csg/primitive.h"
+#include "csg/solids.h"
+
+namespace kerf {
+namespace {
+
+// Error-free transformations (Ogita, Rump and Oishi, "Accurate sum and dot product", 2005).
+// Written without std::fma: without hardware FMA enabled it becomes a slow library call.
+inline void twoSum(double a, double b, double& s, double& err) {
+    s = a + b;
+    const double bb = s - a;
+    err = (a - (s - bb)) + (b - bb);
+}
+
+// Veltkamp split: hi + lo == v exactly, each half with at most 26 significant bits.
+inline void split(double v, double& hi, double& lo) {
+    const double c = 134217729.0 * v;  // 2^27 + 1
+    hi = c - (c - v);
+    lo = v - hi;
+}
+
+inline void twoProduct(double a, double b, double& p, double& err) {
+    p = a * b;
+    double ah, al, bh, bl;
+    split(a, ah, al);
+    split(b, bh, bl);
+    err = al * bl - (((p - ah * bh) - al * bh) - ah * bl);
+}
+
+/// n·v + extra, evaluated as if in twice the working precision (Dot2).
+inline double dot2Slow(const Vec3& n, const Vec3& v, double extra) {
+    double s = extra, c = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        double p, ep, es;
+        twoProduct(n[i], v[i], p, ep);
+        twoSum(s, p, s, es);
+        c += ep + es;
+    }
+    return s + c;
+}
+
+/// n·v + extra to a few ulps: the plain sum when it cannot have cancelled much (its error is
+/// at most ~3 ulps of Σ|terms|, so ≤ 6 ulps of the result here), else Dot2.
+inline double dot2(const Vec3& n, const Vec3& v, double extra) {
+    const double x = n.x * v.x, y = n.y * v.y, z = n.z * v.z;
+    const double sum = x + y + z + extra;
+    const double magnitude = std::fabs(x) + std::fabs(y) + std::fabs(z) + std::fabs(extra);
+    if (std::fabs(sum) >= 0.5 * magnitude) return sum;
+    return dot2Slow(n, v, extra);
+}
+
+class HalfSpace final : public Primitive {
+public:
+    HalfSpace(const Vec3& normal, double offset)
+        : mNormal(normal), mOffset(offset), mInvLength(1.0 / glm::length(normal)) {
+        mBounds = Bounds3::everything();
+        int nonZero = 0, axis = 0;
+        for (int a = 0; a < 3; ++a)
+            if (normal[a] != 0.0) { ++nonZero; axis = a; }
+        if (nonZero == 1) {
+            // n_a·p_a ≤ offset: one side of a plane perpendicular to axis a. Round the
+            // division outward unless it is exact, so the bound never cuts the solid.
+            const double n = normal[axis], q = offset / n;
+            double p, err;
+            twoProduct(q, n, p, err);
+            const bool exact = p == offset && err == 0.0;
+            if (n > 0.0) mBounds.hi[axis] = exact ? q : roundUp(q);
+            else mBounds.lo[axis] = exact ? q : roundDown(q);
+        }
+    }
+
+    void spans(const Ray& ray, double, double, TraceContext& ctx, SpanList& out) const override {
+        out.clear();
+        ++ctx.stats.primitiveTests;
+        const double nd = dot2(mNormal, ray.dir, 0.0);
+        const double g0 = dot2(mNormal, ray.origin, -mOffset);  // n·o − offset: > 0 outside
+        if (nd == 0.0) {  // +0 or −0: parallel to the plane, inside everywhere or nowhere
+            if (g0 <= 0.0) out.push_back({endless(-kInf), endless(kInf)});
+            return;
+        }
+        const double t = -g0 / nd;
+        if (nd > 0.0)  // heading outward: inside before the plane
+            out.push_back({endless(-kInf), boundary(t, mNormal)});
+        else
+            out.push_back({boundary(t, mNormal), endless(kInf)});
+    }
+
+    double value(const Vec3& p) const override {
+        return (mNormal.x * p.x + mNormal.y * p.y + mNormal.z * p.z - mOffset) * mInvLength;
+    }
+
+    Interval valueInterval(const IntervalVec3& b) const override {
+        return (mNormal.x * b.x + mNormal.y * b.y + mNormal.z * b.z - mOffset) * mInvLength;
+    }
+
+private:
+    /// An end of an unbounded span: not a surface, like a clip of the parameter range.
+    static Boundary endless(double t) {
+        Boundary b;
+        b.t = t;
+        return b;
+    }
+
+    Vec3 mNormal;
+    double mOffset;
+    double mInvLength;
+};
+
+}  // namespace
+
+NodePtr makeHalfSpace(const Vec3& normal, double offset) {
+    return std::make_shared<HalfSpace>(normal, offset);
+}
+
+}  // namespace kerf

@@ -1,0 +1,115 @@
+// The implicit primitive {f ≤ 0} ∩ box: spans by interval root isolation of the tape along the
+// ray, clipped to the box; where the box cuts the inside region, the box face is the boundary.
+#include <algorithm>
+
+#include "csg/primitive.h"
+#include "csg/root_isolation.h"
+#include "csg/solids.h"
+
+namespace kerf {
+namespace {
+
+/// f along the ray, in the form root isolation wants.
+struct TapeAlongRay {
+    const Tape& tape;
+    const Ray& ray;
+
+    void range(double a, double b, Interval& f, Interval& dfdt) const {
+        tape.evalIntervalAlongRay(ray, Interval(a, b), f, dfdt);
+    }
+    double value(double t) const { return tape.eval(ray.at(t)); }
+    double valueAndSlope(double t, double& dfdt) const {
+        Vec3 g;
+        const double f = tape.evalGradient(ray.at(t), g);
+        dfdt = glm::dot(g, ray.dir);
+        return f;
+    }
+};
+
+class Implicit final : public Primitive {
+public:
+    Implicit(std::shared_ptr<const Tape> f, const Bounds3& box) : mTape(std::move(f)) {
+        mBounds = box;
+    }
+
+    void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+               SpanList& out) const override {
+        out.clear();
+        ++ctx.stats.primitiveTests;
+        double boxIn = -kInf, boxOut = kInf;
+        if (!mBounds.clipRay(ray, boxIn, boxOut)) return;
+        const double t0 = std::max(boxIn, tmin), t1 = std::min(boxOut, tmax);
+        // An unbounded range cannot be bisected; the language always gives a finite box.
+        if (!(t0 <= t1) || !std::isfinite(t0) || !std::isfinite(t1)) return;
+
+        TapeAlongRay problem{*mTape, ray};
+        bool inside = isInside(problem.value(t0));
+        Boundary pending = inside ? endBoundary(ray, t0, boxIn >= tmin, true) : Boundary{};
+        isolateRoots(problem, t0, t1, 0.0, ctx, [&](double t, bool entering) {
+            const Boundary b = boundary(t, normalAt(ray.at(t)));
+            if (entering)
+                pending = b;
+            else
+                out.push_back({pending, b});
+            inside = entering;
+        });
+        if (inside) out.push_back({pending, endBoundary(ray, t1, boxOut <= tmax, false)});
+        // A touch (double root) can leave a span no wider than the tolerance: drop it.
+        dropThinSpans(out, ctx.relTolerance);
+    }
+
+    double value(const Vec3& p) const override {
+        const Vec3 outside = glm::max(mBounds.lo - p, p - mBounds.hi);
+        return std::max(mTape->eval(p), std::max(outside.x, std::max(outside.y, outside.z)));
+    }
+
+    Interval valueInterval(const IntervalVec3& box) const override {
+        const Interval f = mTape->evalInterval(box.x, box.y, box.z);
+        const Interval* axes[3] = {&box.x, &box.y, &box.z};
+        Interval outside(-kInf);
+        for (int a = 0; a < 3; ++a)
+            outside = max(outside, max(Interval(mBounds.lo[a]) - *axes[a],
+                                       *axes[a] - Interval(mBounds.hi[a])));
+        return max(f, outside);
+    }
+
+private:
+    Vec3 normalAt(const Vec3& p) const {
+        Vec3 g;
+        mTape->evalGradient(p, g);
+        return g;
+    }
+
+    /// The boundary where the clipped range starts (entering) or ends while inside f: the box
+    /// face the ray crosses there, or a clip of the caller's range (primitive 0).
+    Boundary endBoundary(const Ray& ray, double t, bool onBox, bool entering) const {
+        if (!onBox) {
+            Boundary clip;
+            clip.t = t;
+            return clip;
+        }
+        // The face is on the axis whose slab gives the latest entry / earliest exit.
+        int axis = 0;
+        double best = entering ? -kInf : kInf;
+        for (int a = 0; a < 3; ++a) {
+            const double d = ray.dir[a];
+            if (d == 0.0) continue;
+            const double plane = (d > 0.0) == entering ? mBounds.lo[a] : mBounds.hi[a];
+            const double ta = (plane - ray.origin[a]) / d;
+            if (entering ? ta > best : ta < best) best = ta, axis = a;
+        }
+        Vec3 n(0.0);
+        n[axis] = (ray.dir[axis] > 0.0) == entering ? -1.0 : 1.0;
+        return boundary(t, n);
+    }
+
+    std::shared_ptr<const Tape> mTape;
+};
+
+}  // namespace
+
+NodePtr makeImplicit(std::shared_ptr<const Tape> f, const Bounds3& bound) {
+    return std::make_shared<Implicit>(std::move(f), bound);
+}
+
+}  // namespace kerf

@@ -1,0 +1,30 @@
+// Tape compilation: the nodes the root depends on, in evaluation order, renumbered densely.
+// The evaluators live in tape_eval_*.cpp, one per kind of value.
+#include "csg/tape.h"
+
+namespace kerf {
+
+std::shared_ptr<const Tape> Tape::compile(const ExprGraph& graph, ExprId root) {
+    const std::vector<ExprNode>& nodes = graph.nodes();
+    // Operands always precede their users in the graph, so one backward sweep marks every
+    // node the root needs, and one forward sweep emits them in a valid order.
+    std::vector<char> needed(nodes.size(), 0);
+    needed[root] = 1;
+    for (ExprId i = root; i >= 0; --i) {
+        if (!needed[i]) continue;
+        if (nodes[i].a >= 0) needed[nodes[i].a] = 1;
+        if (nodes[i].b >= 0) needed[nodes[i].b] = 1;
+    }
+    std::vector<int32_t> slotOf(nodes.size(), -1);
+    auto tape = std::make_shared<Tape>();
+    for (ExprId i = 0; i <= root; ++i) {
+        if (!needed[i]) continue;
+        const ExprNode& n = nodes[i];
+        slotOf[i] = static_cast<int32_t>(tape->mInstrs.size());
+        tape->mInstrs.push_back(
+            {n.op, n.a >= 0 ? slotOf[n.a] : -1, n.b >= 0 ? slotOf[n.b] : -1, n.value});
+    }
+    return tape;
+}
+
+}  // namespace kerf

@@ -1,0 +1,109 @@
+// Point evaluation with the gradient: forward-mode dual numbers, one value and one
+// ∂/∂(x, y, z) per slot, in per-thread scratch.
+#include "csg/scalar_ops.h"
+#include "csg/tape.h"
+
+namespace kerf {
+namespace {
+
+struct Dual {
+    double v;
+    Vec3 g;
+};
+
+/// The derivative rules; the value itself comes from applyScalarOp, so eval() and
+/// evalGradient() return the same f bit for bit.
+Vec3 derivative(Op op, const Dual& a, const Dual& b, double value, double result) {
+    switch (op) {
+        case Op::Neg:
+            return -a.g;
+        case Op::Square:
+            return (2.0 * a.v) * a.g;
+        case Op::Sqrt:
+            return a.g / (2.0 * result);
+        case Op::Abs:
+            return a.v < 0.0 ? -a.g : a.g;
+        case Op::Sin:
+            return std::cos(a.v) * a.g;
+        case Op::Cos:
+            return -std::sin(a.v) * a.g;
+        case Op::Tan:
+            return (1.0 + result * result) * a.g;
+        case Op::Asin:
+            return a.g / std::sqrt(1.0 - a.v * a.v);
+        case Op::Acos:
+            return -a.g / std::sqrt(1.0 - a.v * a.v);
+        case Op::Atan:
+            return a.g / (1.0 + a.v * a.v);
+        case Op::Exp:
+            return result * a.g;
+        case Op::Log:
+            return a.g / a.v;
+        case Op::Floor:
+        case Op::Ceil:
+            return Vec3(0.0);  // piecewise constant
+        case Op::Add:
+            return a.g + b.g;
+        case Op::Sub:
+            return a.g - b.g;
+        case Op::Mul:
+            return b.v * a.g + a.v * b.g;
+        case Op::Div:
+            return (a.g - result * b.g) / b.v;
+        case Op::Pow: {
+            // d(aᵇ) = b·aᵇ⁻¹·da + aᵇ·ln a·db; the second term only when b varies, so that a
+            // constant exponent at a = 0 does not bring in 0·ln 0.
+            Vec3 g = (b.v * std::pow(a.v, b.v - 1.0)) * a.g;
+            if (b.g != Vec3(0.0)) g += (result * std::log(a.v)) * b.g;
+            return g;
+        }
+        case Op::Atan2:
+            return (b.v * a.g - a.v * b.g) / (a.v * a.v + b.v * b.v);
+        case Op::Min:
+            return a.v <= b.v ? a.g : b.g;
+        case Op::Max:
+            return a.v >= b.v ? a.g : b.g;
+        case Op::PowInt: {
+            const int n = static_cast<int>(value);
+            return n == 0 ? Vec3(0.0) : (value * std::pow(a.v, n - 1)) * a.g;
+        }
+        default:
+            return Vec3(0.0);
+    }
+}
+
+}  // namespace
+
+double Tape::evalGradient(const Vec3& p, Vec3& gradient) const {
+    thread_local std::vector<Dual> slots;
+    slots.resize(mInstrs.size());
+    Dual* s = slots.data();
+    const Dual none{0.0, Vec3(0.0)};
+    for (size_t i = 0; i < mInstrs.size(); ++i) {
+        const TapeInstr& in = mInstrs[i];
+        switch (in.op) {
+            case Op::Const:
+                s[i] = {in.value, Vec3(0.0)};
+                break;
+            case Op::VarX:
+                s[i] = {p.x, Vec3(1.0, 0.0, 0.0)};
+                break;
+            case Op::VarY:
+                s[i] = {p.y, Vec3(0.0, 1.0, 0.0)};
+                break;
+            case Op::VarZ:
+                s[i] = {p.z, Vec3(0.0, 0.0, 1.0)};
+                break;
+            default: {
+                const Dual& a = s[in.a];
+                const Dual& b = in.b >= 0 ? s[in.b] : none;
+                const double v = applyScalarOp(in.op, a.v, b.v, in.value);
+                s[i] = {v, derivative(in.op, a, b, in.value, v)};
+            }
+        }
+    }
+    gradient = s[mInstrs.size() - 1].g;
+    return s[mInstrs.size() - 1].v;
+}
+
+}  // namespace kerf

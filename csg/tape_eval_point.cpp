@@ -1,0 +1,34 @@
+// Point evaluation of a tape on doubles, with per-thread scratch slots.
+#include "csg/scalar_ops.h"
+#include "csg/tape.h"
+
+namespace kerf {
+
+double Tape::eval(const Vec3& p) const {
+    // Reused per thread: no allocation once a thread has seen its largest tape.
+    thread_local std::vector<double> slots;
+    slots.resize(mInstrs.size());
+    double* s = slots.data();
+    for (size_t i = 0; i < mInstrs.size(); ++i) {
+        const TapeInstr& in = mInstrs[i];
+        switch (in.op) {
+            case Op::Const:
+                s[i] = in.value;
+                break;
+            case Op::VarX:
+                s[i] = p.x;
+                break;
+            case Op::VarY:
+                s[i] = p.y;
+                break;
+            case Op::VarZ:
+                s[i] = p.z;
+                break;
+            default:
+                s[i] = applyScalarOp(in.op, s[in.a], in.b >= 0 ? s[in.b] : 0.0, in.value);
+        }
+    }
+    return s[mInstrs.size() - 1];
+}
+
+}  // namespace kerf

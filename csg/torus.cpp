@@ -1,0 +1,161 @@
+// The torus around the y axis: spans by interval root isolation of its quartic along the ray.
+//
+// Conditioning: coordinates are divided by S = R + r (so every quantity is O(1) whatever the
+// scene scale) and the ray is re-parameterised by arc length s from its point nearest the
+// centre, p(s) = p0 + s·u with |u| = 1. The quartic in s then has coefficients of order 1 and
+// no cancellation from a far-away origin. Isolation uses a Taylor-form enclosure of the quartic
+// at each sub-interval's midpoint; point signs and the polish use the better-conditioned
+// h(p) = (ρ − R)² + (y − r)(y + r) (ρ = √(x² + z²)), which has the same sign as the quartic because
+// the quartic is h times (ρ + R)² + y² − r² > 0.
+#include <algorithm>
+#include <limits>
+
+#include "csg/primitive.h"
+#include "csg/root_isolation.h"
+#include "csg/solids.h"
+
+namespace kerf {
+namespace {
+
+/// Absolute slack added to the enclosures (normalised units, where the coefficients are O(1)):
+/// far above the rounding of the coefficients and of the Taylor terms, far below any value
+/// that matters except within ~1e-13 of a tangency.
+constexpr double kEnclosureSlack = 1e-13;
+
+/// The quartic s⁴ + c3·s³ + c2·s² + c1·s + c0 along the normalised ray, and h along it.
+struct TorusRay {
+    double c3, c2, c1, c0;
+    Vec3 p0, u;        ///< normalised ray: p(s) = p0 + s·u
+    double R, rm, r2;  ///< normalised major radius, minor radius and its square
+
+    /// Taylor form at the midpoint: exact polynomial identity, so the enclosure holds the
+    /// quartic (plus slack for rounding) over [a, b], and likewise its derivative.
+    void range(double a, double b, Interval& f, Interval& dfds) const {
+        const double m = 0.5 * (a + b), h = std::max(b - m, m - a);
+        const double p0 = (((m + c3) * m + c2) * m + c1) * m + c0;
+        const double p1 = ((4.0 * m + 3.0 * c3) * m + 2.0 * c2) * m + c1;
+        const double p2 = (6.0 * m + 3.0 * c3) * m + c2;
+        const double p3 = 4.0 * m + c3;
+        const double h2 = h * h, h3 = h2 * h, h4 = h2 * h2;
+        const double spread = std::fabs(p1) * h + std::fabs(p3) * h3;
+        f = {p0 - spread + std::min(0.0, p2) * h2 - kEnclosureSlack,
+             p0 + spread + std::max(0.0, p2) * h2 + h4 + kEnclosureSlack};
+        const double dSpread = 2.0 * std::fabs(p2) * h + 4.0 * h3;
+        dfds = {p1 - dSpread + std::min(0.0, 3.0 * p3) * h2 - kEnclosureSlack,
+                p1 + dSpread + std::max(0.0, 3.0 * p3) * h2 + kEnclosureSlack};
+    }
+    double value(double s) const {
+        const Vec3 q = p0 + s * u;
+        const double rho = std::sqrt(q.x * q.x + q.z * q.z), e = rho - R;
+        return e * e + (q.y - rm) * (q.y + rm);
+    }
+    double valueAndSlope(double s, double& dhds) const {
+        const Vec3 q = p0 + s * u;
+        const double rho = std::sqrt(q.x * q.x + q.z * q.z), e = rho - R;
+        dhds = 2.0 * (e * (q.x * u.x + q.z * u.z) / rho + q.y * u.y);
+        return e * e + (q.y - rm) * (q.y + rm);
+    }
+};
+
+class Torus final : public Primitive {
+public:
+    Torus(double majorRadius, double minorRadius) : mR(majorRadius), mr(minorRadius) {
+        const double e = mR + mr;
+        mBounds = {Vec3(-e, -mr, -e), Vec3(e, mr, e)};
+    }
+
+    void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+               SpanList& out) const override {
+        out.clear();
+        ++ctx.stats.primitiveTests;
+        double t0 = tmin, t1 = tmax;
+        const double dd = glm::dot(ray.dir, ray.dir);
+        if (!(dd > 0.0) || !mBounds.clipRay(ray, t0, t1)) return;
+
+        // Normalise: lengths by S, the parameter by arc length from the point nearest the centre.
+        const double scale = mR + mr, inv = 1.0 / scale, len = std::sqrt(dd);
+        const double tc = -glm::dot(ray.origin, ray.dir) / dd;
+        TorusRay q;
+        q.p0 = (ray.origin + tc * ray.dir) * inv;
+        q.u = ray.dir / len;
+        q.R = mR * inv;
+        q.rm = mr * inv;
+        q.r2 = q.rm * q.rm;
+        const double sPerT = len * inv;  // s = (t − tc)·|d|/S
+        // |p|² = s² + 2b·s + c, x² + z² = a2·s² + a1·s + a0; b ≈ 0 but kept for consistency.
+        const double b = glm::dot(q.p0, q.u), c = glm::dot(q.p0, q.p0);
+        const double a2 = q.u.x * q.u.x + q.u.z * q.u.z;
+        const double a1 = 2.0 * (q.p0.x * q.u.x + q.p0.z * q.u.z);
+        const double a0 = q.p0.x * q.p0.x + q.p0.z * q.p0.z;
+        const double k = c + q.R * q.R - q.r2, fourR2 = 4.0 * q.R * q.R;
+        // (s² + 2bs + k)² − 4R²(a2·s² + a1·s + a0)
+        q.c3 = 4.0 * b;
+        q.c2 = 4.0 * b * b + 2.0 * k - fourR2 * a2;
+        q.c1 = 4.0 * b * k - fourR2 * a1;
+        q.c0 = k * k - fourR2 * a0;
+
+        const double sA = (t0 - tc) * sPerT, sB = (t1 - tc) * sPerT;
+        // An end of the clipped range is a clip of the caller's range, or (measure zero) a
+        // point of the surface where the box touches the torus.
+        auto endBoundary = [&](double t, bool clipped) {
+            if (!clipped) return boundary(t, normalAt(ray.at(t)));
+            Boundary bd;
+            bd.t = t;
+            return bd;
+        };
+        bool inside = isInside(q.value(sA));
+        Boundary pending = inside ? endBoundary(t0, t0 == tmin) : Boundary{};
+        isolateRoots(q, sA, sB, tc * sPerT, ctx, [&](double s, bool entering) {
+            const double t = refine(ray, tc + s / sPerT, inv);
+            const Boundary bd = boundary(t, normalAt(ray.at(t)));
+            if (entering)
+                pending = bd;
+            else
+                out.push_back({pending, bd});
+            inside = entering;
+        });
+        if (inside) out.push_back({pending, endBoundary(t1, t1 == tmax)});
+        // A touch of the surface can leave a span no wider than the tolerance: drop it.
+        dropThinSpans(out, ctx.relTolerance);
+    }
+
+    double value(const Vec3& p) const override {
+        const double rho = std::sqrt(p.x * p.x + p.z * p.z);
+        return std::hypot(rho - mR, p.y) - mr;
+    }
+
+    Interval valueInterval(const IntervalVec3& box) const override {
+        const Interval rho = sqrt(sqr(box.x) + sqr(box.z));
+        return sqrt(sqr(rho - Interval(mR)) + sqr(box.y)) - Interval(mr);
+    }
+
+private:
+    /// Outward normal (not unit): ∇h/2 = ((ρ − R)·x/ρ, y, (ρ − R)·z/ρ).
+    Vec3 normalAt(const Vec3& p) const {
+        const double rho = std::sqrt(p.x * p.x + p.z * p.z);
+        if (!(rho > 0.0)) return Vec3(0.0, p.y, 0.0);
+        const double k = (rho - mR) / rho;
+        return {k * p.x, p.y, k * p.z};
+    }
+
+    /// One Newton step on h in the ray's own parameter, which removes the rounding of
+    /// t = tc + s/|d| when tc is large beside t. Taken only if it is a small correction.
+    double refine(const Ray& ray, double t, double inv) const {
+        const Vec3 p = ray.at(t) * inv, d = ray.dir * inv;
+        const double rho = std::sqrt(p.x * p.x + p.z * p.z), e = rho - mR * inv, rn = mr * inv;
+        const double h = e * e + (p.y - rn) * (p.y + rn);
+        const double dh = 2.0 * (e * (p.x * d.x + p.z * d.z) / rho + p.y * d.y);
+        const double step = h / dh;
+        return std::fabs(step) <= 1e-9 * std::fabs(t) ? t - step : t;
+    }
+
+    double mR, mr;
+};
+
+}  // namespace
+
+NodePtr makeTorus(double majorRadius, double minorRadius) {
+    return std::make_shared<Torus>(majorRadius, minorRadius);
+}
+
+}  // namespace kerf
