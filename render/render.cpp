@@ -1,0 +1,199 @@
+/// @file render/render.cpp
+/// @brief The render loop: tiles in parallel, per-pixel samples, film and auxiliary outputs.
+#include "render/render.h"
+
+#include "csg/scene_geometry.h"
+#include "render/camera.h"
+#include "render/sampler.h"
+#include "render/shading.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+namespace kerf {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr int kTileSize = 16;
+/// Progress is reported at most this often (about 20 times a second).
+constexpr auto kProgressInterval = std::chrono::milliseconds(50);
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// Everything a tile needs, shared by all threads (only `result` is written, each pixel by
+/// exactly one thread).
+struct FrameJob {
+    const Camera& camera;
+    const PixelSampler& sampler;
+    const SceneGeometry& geometry;
+    const WhittedIntegrator& integrator;
+    RenderResult& result;
+    bool wantDepth;
+    bool wantNormal;
+};
+
+void renderPixel(const FrameJob& job, int i, int j, ShadingContext& ctx) {
+    RenderResult& out = job.result;
+    const uint64_t pixel = uint64_t(j) * uint64_t(out.color.width) + uint64_t(i);
+    const bool wantAov = job.wantDepth || job.wantNormal;
+    const int count = job.sampler.sampleCount();
+
+    // With one sample the camera ray is the pixel-centre ray, and its hit serves the AOVs.
+    const Ray centreRay = job.camera.rayThrough(i + 0.5, j + 0.5);
+    std::optional<Hit> centreHit;
+    Vec3 sum(0.0);
+    for (int s = 0; s < count; ++s) {
+        if (count == 1) {
+            sum += job.integrator.traceCamera(centreRay, ctx, wantAov ? &centreHit : nullptr);
+        } else {
+            const SubPixel sp = job.sampler.position(pixel, s);
+            sum += job.integrator.traceCamera(job.camera.rayThrough(i + sp.x, j + sp.y), ctx);
+        }
+    }
+    const Vec3 c = sum / double(count);
+    for (int k = 0; k < 3; ++k) out.color.at(i, j, k) = float(c[k]);
+
+    if (!wantAov) return;
+    if (count > 1) {
+        ++ctx.rays.camera;
+        centreHit = job.geometry.nearestHit(centreRay, 0.0, kInf, ctx.trace);
+    }
+    if (job.wantDepth)
+        out.depth.at(i, j, 0) =
+            centreHit ? float(glm::length(centreRay.dir) * centreHit->t) : float(kInf);
+    if (job.wantNormal && centreHit)
+        for (int k = 0; k < 3; ++k) out.normal.at(i, j, k) = float(centreHit->normal[k]);
+}
+
+void renderTile(const FrameJob& job, int tile, ShadingContext& ctx) {
+    const int width = job.result.color.width;
+    const int height = job.result.color.height;
+    const int tilesAcross = (width + kTileSize - 1) / kTileSize;
+    const int x0 = (tile % tilesAcross) * kTileSize;
+    const int y0 = (tile / tilesAcross) * kTileSize;
+    const int x1 = std::min(x0 + kTileSize, width);
+    const int y1 = std::min(y0 + kTileSize, height);
+    for (int j = y0; j < y1; ++j)
+        for (int i = x0; i < x1; ++i) renderPixel(job, i, j, ctx);
+}
+
+/// Calls the user's progress callback from the tile loop: rarely, and from one thread at a
+/// time (a thread that finds another one reporting simply skips its turn).
+class ProgressReporter {
+public:
+    ProgressReporter(const std::function<void(double)>& callback, int total)
+        : mCallback(callback), mTotal(total), mLast(Clock::now()) {}
+
+    void tileDone() {
+        ++mDone;
+        if (!mCallback || !mMutex.try_lock()) return;
+        std::lock_guard<std::mutex> lock(mMutex, std::adopt_lock);
+        const auto now = Clock::now();
+        if (now - mLast < kProgressInterval) return;
+        mLast = now;
+        // Read under the lock, so the reported fractions never go backwards.
+        mCallback(double(mDone.load()) / mTotal);
+    }
+    void finished() {
+        if (mCallback) mCallback(1.0);
+    }
+
+private:
+    const std::function<void(double)>& mCallback;
+    const int mTotal;
+    std::atomic<int> mDone{0};
+    std::mutex mMutex;
+    Clock::time_point mLast;  ///< guarded by mMutex
+};
+
+}  // namespace
+
+/// An eighth of the angle one pixel spans: the image plane at distance 1 is 2·tan(fov/2)
+/// high, so one pixel spans 2·tan(fov/2)/height there. A hit distance within this relative
+/// tolerance moves the hit along its ray by under an eighth of the pixel footprint at that
+/// distance, so on screen it lies within 1/8 pixel of its true position.
+double defaultTolerance(int height, double fovDegrees) {
+    const double halfFov = 0.5 * fovDegrees * glm::pi<double>() / 180.0;
+    return 0.125 * (2.0 * std::tan(halfFov) / std::max(height, 1));
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& options) {
+    const auto setupStart = Clock::now();
+    const int width = options.width > 0 ? options.width : scene.settings.width;
+    const int height = options.height > 0 ? options.height : scene.settings.height;
+    const int spp = options.spp > 0 ? options.spp : scene.settings.spp;
+    if (width <= 0 || height <= 0)
+        throw std::invalid_argument("render: image size must be positive, got " +
+                                    std::to_string(width) + "x" + std::to_string(height));
+
+    RenderResult result;
+    result.stats.tolerance = options.tolerance > 0
+                                 ? options.tolerance
+                                 : defaultTolerance(height, scene.camera.fovDegrees);
+    result.color = Image(width, height, 3);
+    if (options.wantDepth) result.depth = Image(width, height, 1);
+    if (options.wantNormal) result.normal = Image(width, height, 3);
+
+    const SceneGeometry geometry(scene.objects);
+    const Camera camera(scene.camera, width, height);
+    const PixelSampler sampler(spp);
+    const WhittedIntegrator integrator(scene, geometry, scene.settings.maxDepth);
+    const FrameJob job{camera, sampler, geometry, integrator, result,
+                       options.wantDepth, options.wantNormal};
+    result.stats.secondsSetup = secondsSince(setupStart);
+
+    const auto traceStart = Clock::now();
+    const double tolerance = result.stats.tolerance;
+    tbb::enumerable_thread_specific<ShadingContext> contexts([tolerance] {
+        ShadingContext ctx;
+        ctx.trace.relTolerance = tolerance;
+        return ctx;
+    });
+    const int tileCount = ((width + kTileSize - 1) / kTileSize) *
+                          ((height + kTileSize - 1) / kTileSize);
+    ProgressReporter progress(options.progress, tileCount);
+    tbb::task_arena arena(options.threads > 0 ? options.threads
+                                              : int(tbb::task_arena::automatic));
+    arena.execute([&] {
+        // One tile per task: tiles are already coarse, and the simple partitioner keeps the
+        // split independent of timing (the image never depends on it, the load balance does).
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, tileCount, 1),
+            [&](const tbb::blocked_range<int>& range) {
+                ShadingContext& ctx = contexts.local();
+                for (int tile = range.begin(); tile != range.end(); ++tile) {
+                    renderTile(job, tile, ctx);
+                    progress.tileDone();
+                }
+            },
+            tbb::simple_partitioner());
+    });
+    progress.finished();
+
+    for (const ShadingContext& ctx : contexts) {
+        result.stats.cameraRays += ctx.rays.camera;
+        result.stats.shadowRays += ctx.rays.shadow;
+        result.stats.reflectionRays += ctx.rays.reflection;
+        result.stats.refractionRays += ctx.rays.refraction;
+        result.stats.trace += ctx.trace.stats;
+    }
+    result.stats.secondsTrace = secondsSince(traceStart);
+    return result;
+}
+
+}  // namespace kerf

@@ -1,0 +1,194 @@
+/// @file render/shading.cpp
+/// @brief The Whitted integrator (see shading.h for the material model).
+#include "render/shading.h"
+
+#include "render/ray_offset.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kerf {
+namespace {
+
+double maxComponent(const Vec3& v) { return std::max({v.x, v.y, v.z}); }
+
+/// exp(−absorb·length) per channel; a channel that does not absorb passes everything, even
+/// over an infinite length (where 0·inf would be NaN).
+Vec3 beer(const Vec3& absorb, double length) {
+    Vec3 r(1.0);
+    for (int i = 0; i < 3; ++i)
+        if (absorb[i] > 0) r[i] = std::exp(-absorb[i] * length);
+    return r;
+}
+
+/// Schlick's approximation of the Fresnel reflectance between media n1 and n2, with cosine
+/// `cosine` taken on the side of the lower index.
+double schlick(double n1, double n2, double cosine) {
+    const double r0 = (n1 - n2) / (n1 + n2);
+    const double f0 = r0 * r0;
+    const double m = 1.0 - cosine;
+    return f0 + (1.0 - f0) * (m * m) * (m * m) * m;
+}
+
+}  // namespace
+
+WhittedIntegrator::WhittedIntegrator(const Scene& scene, const SceneGeometry& geometry,
+                                     int maxDepth)
+    : mScene(scene), mGeometry(geometry), mMaxDepth(std::max(0, maxDepth)) {
+    for (const Material& m : scene.materials)
+        if (m.transmit > 0) mAnyTransmissive = true;
+}
+
+const Material& WhittedIntegrator::material(int32_t index) const {
+    if (index < 0 || size_t(index) >= mScene.materials.size()) return mScene.materials.front();
+    return mScene.materials[size_t(index)];
+}
+
+Vec3 WhittedIntegrator::missColor() const {
+    return mScene.mist.enabled ? mScene.mist.color : mScene.background;
+}
+
+Vec3 WhittedIntegrator::applyMist(const Vec3& c, double distance) const {
+    if (!mScene.mist.enabled) return c;
+    const Vec3& mist = mScene.mist.color;
+    return mist + (c - mist) * std::exp(-distance / mScene.mist.distance);
+}
+
+Vec3 WhittedIntegrator::traceCamera(const Ray& ray, ShadingContext& ctx,
+                                    std::optional<Hit>* firstHit) const {
+    ++ctx.rays.camera;
+    return trace(ray, ray.origin, 0, Vec3(1.0), ctx, firstHit);
+}
+
+Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int depth,
+                              const Vec3& weight, ShadingContext& ctx,
+                              std::optional<Hit>* firstHit) const {
+    const std::optional<Hit> hit = mGeometry.nearestHit(ray, 0.0, kInf, ctx.trace);
+    if (firstHit) *firstHit = hit;
+    if (!hit) return missColor();
+
+    const Material& m = material(hit->material);
+    const Vec3 p = ray.at(hit->t);
+    const Vec3 d = glm::normalize(ray.dir);
+    // Shade with the normal turned toward the viewer; the outward normal decides nothing else.
+    const Vec3 n = glm::dot(hit->normal, d) < 0 ? hit->normal : -hit->normal;
+    const double err = hitErrorBound(ray, hit->t, p, ctx.trace.relTolerance);
+
+    Vec3 c = m.emit + (1.0 - m.transmit) * m.ambient * m.color;
+    c += directLight(m, p, n, d, err, ctx);
+
+    if (depth < mMaxDepth) {
+        const double cosIn = -glm::dot(d, n);  // ≥ 0 with the face-forward normal
+        Vec3 reflectWeight(m.reflect);
+        Vec3 refractWeight(0.0);
+        Vec3 refractDir(0.0);
+        if (m.transmit > 0) {
+            const double n1 = hit->entering ? 1.0 : m.ior;
+            const double n2 = hit->entering ? m.ior : 1.0;
+            const double eta = n1 / n2;
+            const double k = 1.0 - eta * eta * (1.0 - cosIn * cosIn);
+            if (k < 0) {
+                reflectWeight += Vec3(m.transmit);  // total internal reflection
+            } else {
+                const double cosOut = std::sqrt(k);
+                const double f = schlick(n1, n2, n1 <= n2 ? cosIn : cosOut);
+                reflectWeight += Vec3(m.transmit * f);
+                refractWeight = m.transmit * (1.0 - f) * m.color;
+                refractDir = glm::normalize(eta * d + (eta * cosIn - cosOut) * n);
+            }
+        }
+        const Vec3 wReflect = weight * reflectWeight;
+        if (maxComponent(wReflect) >= kMinRayWeight) {
+            ++ctx.rays.reflection;
+            const Ray r{offsetRayOrigin(p, n, err), d + 2.0 * cosIn * n};
+            c += reflectWeight * trace(r, p, depth + 1, wReflect, ctx, nullptr);
+        }
+        const Vec3 wRefract = weight * refractWeight;
+        if (maxComponent(wRefract) >= kMinRayWeight) {
+            ++ctx.rays.refraction;
+            const Ray r{offsetRayOrigin(p, -n, err), refractDir};
+            c += refractWeight * trace(r, p, depth + 1, wRefract, ctx, nullptr);
+        }
+    }
+
+    const double length = glm::length(p - segmentStart);
+    // Everything seen through a leaving hit travelled the whole segment inside the solid.
+    if (!hit->entering) c *= beer(m.absorb, length);
+    return applyMist(c, length);
+}
+
+Vec3 WhittedIntegrator::directLight(const Material& m, const Vec3& p, const Vec3& n,
+                                    const Vec3& d, double errorBound,
+                                    ShadingContext& ctx) const {
+    Vec3 sum(0.0);
+    const Vec3 origin = offsetRayOrigin(p, n, errorBound);
+    for (const Light& light : mScene.lights) {
+        Vec3 l;
+        Vec3 radiance;
+        double tmax;
+        if (light.kind == Light::Kind::Point) {
+            const Vec3 toLight = light.position - p;
+            const double dist2 = glm::dot(toLight, toLight);
+            l = toLight / std::sqrt(dist2);
+            radiance = light.color * (light.power / (4.0 * glm::pi<double>() * dist2));
+            tmax = glm::length(light.position - origin);
+        } else {
+            l = -glm::normalize(light.direction);
+            radiance = light.color;
+            tmax = kInf;
+        }
+        const double cosL = glm::dot(n, l);
+        if (cosL <= 0) continue;  // the light is behind the surface as seen
+
+        ++ctx.rays.shadow;
+        const Vec3 pass = transmittance(Ray{origin, l}, tmax, ctx);
+        if (maxComponent(pass) <= 0) continue;
+
+        Vec3 term = (1.0 - m.transmit) * m.diffuse * cosL * m.color;
+        if (m.specular > 0) {
+            const Vec3 r = 2.0 * cosL * n - l;  // l mirrored about n
+            const double cosR = std::max(0.0, -glm::dot(r, d));
+            term += Vec3(m.specular * std::pow(cosR, m.shininess));
+        }
+        sum += pass * radiance * term;
+    }
+    return sum;
+}
+
+Vec3 WhittedIntegrator::transmittance(const Ray& ray, double tmax, ShadingContext& ctx) const {
+    if (!mAnyTransmissive)
+        return mGeometry.nearestHit(ray, 0.0, tmax, ctx.trace) ? Vec3(0.0) : Vec3(1.0);
+
+    Vec3 pass(1.0);
+    bool blocked = false;
+    const double dirLength = glm::length(ray.dir);
+    // A surface crossed within the segment: opaque ones block, transmissive ones tint.
+    auto cross = [&](const Boundary& b) {
+        if (!b.isSurface() || !(b.t > 0.0 && b.t < tmax)) return;
+        const Material& mb = material(b.material);
+        if (mb.transmit <= 0) blocked = true;
+        else pass *= mb.transmit * mb.color;
+    };
+    mGeometry.forEachObjectSpans(ray, 0.0, tmax, ctx.trace, [&](int, const SpanList& spans) {
+        for (const Span& s : spans) {
+            if (blocked) return;
+            const double a = std::max(s.in.t, 0.0);
+            const double b = std::min(s.out.t, tmax);
+            if (!(a < b)) continue;  // the span misses the segment
+            // The span's material is that of its entry, or of its exit if the entry is a clip.
+            const Material& ms = material(s.in.isSurface() ? s.in.material : s.out.material);
+            if (ms.transmit <= 0) {
+                blocked = true;
+                return;
+            }
+            pass *= beer(ms.absorb, (b - a) * dirLength);
+            cross(s.in);
+            cross(s.out);
+        }
+    });
+    return blocked ? Vec3(0.0) : pass;
+}
+
+}  // namespace kerf

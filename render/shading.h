@@ -1,0 +1,83 @@
+/// @file render/shading.h
+/// @brief The Whitted integrator: Phong terms with shadow rays, mirror reflection, refraction
+/// with Fresnel and Beer absorption, emission and homogeneous mist.
+///
+/// Material model (kerf's choices, documented in docs/ too):
+///  - colour = emit + (1 − transmit)·(ambient·color + Σ diffuse·color·max(0, n·l)·L·T)
+///            + Σ specular·max(0, r·v)^shininess·L·T + reflection + refraction,
+///    n the normal turned toward the viewer, L a light's radiance, T the shadow transmittance.
+///    The (1 − transmit) factor keeps a dielectric from also looking like painted plastic.
+///  - reflection: weight `reflect`, untinted (as a dielectric's coat; a coloured metal is
+///    not expressible yet), plus transmit·F for dielectrics (Schlick's F; all of transmit
+///    under total internal reflection). Both go into one mirror ray.
+///  - refraction (transmit > 0): Snell with n1 = 1, n2 = ior when entering, the reverse when
+///    leaving; weight transmit·(1 − F)·color.
+///  - Beer: light that reaches the viewer through a hit where the ray leaves a solid was inside
+///    it for the whole segment: scaled by exp(−absorb·length), absorb of that hit's material.
+///  - shadows: opaque surfaces block; a transmissive surface crossed multiplies by
+///    color·transmit, and the length inside it by exp(−absorb·length). No refraction of shadow
+///    rays (Whitted), and mist does not dim lights.
+///  - mist: every segment of length d blends c → mist + (c − mist)·exp(−d/distance); a miss
+///    takes the mist colour.
+///  - recursion stops at maxDepth bounces or when a ray's weight is below kMinRayWeight in
+///    every channel.
+#pragma once
+
+#include "csg/scene.h"
+#include "csg/scene_geometry.h"
+#include "csg/trace_context.h"
+
+#include <cstdint>
+#include <optional>
+
+namespace kerf {
+
+/// Rays traced, by kind (per thread; summed for --stats).
+struct RayCounters {
+    uint64_t camera = 0;
+    uint64_t shadow = 0;
+    uint64_t reflection = 0;
+    uint64_t refraction = 0;
+};
+
+/// What one thread needs to shade: its trace context and its counters. Never shared.
+struct ShadingContext {
+    TraceContext trace;
+    RayCounters rays;
+};
+
+/// Secondary rays whose weight is below this in every channel are not traced.
+constexpr double kMinRayWeight = 1e-3;
+
+class WhittedIntegrator {
+public:
+    /// The scene and geometry must outlive the integrator. maxDepth bounds the number of
+    /// reflection/refraction bounces (0: none).
+    WhittedIntegrator(const Scene& scene, const SceneGeometry& geometry, int maxDepth);
+
+    /// The radiance seen along a camera ray. When firstHit is given, it receives the ray's
+    /// first hit (or nullopt on a miss), for the depth and normal outputs.
+    Vec3 traceCamera(const Ray& ray, ShadingContext& ctx,
+                     std::optional<Hit>* firstHit = nullptr) const;
+
+private:
+    /// Radiance arriving along `ray`, whose segment starts at `segmentStart` (the un-offset
+    /// point the ray left, for lengths), after `depth` bounces, with path weight `weight`.
+    Vec3 trace(const Ray& ray, const Vec3& segmentStart, int depth, const Vec3& weight,
+               ShadingContext& ctx, std::optional<Hit>* firstHit) const;
+    /// Direct light at p (normal n toward the viewer, unit view direction d).
+    Vec3 directLight(const Material& m, const Vec3& p, const Vec3& n, const Vec3& d,
+                     double errorBound, ShadingContext& ctx) const;
+    /// The fraction of light that passes from ray.origin along ray.dir (unit) up to tmax.
+    Vec3 transmittance(const Ray& ray, double tmax, ShadingContext& ctx) const;
+    Vec3 missColor() const;
+    Vec3 applyMist(const Vec3& c, double distance) const;
+    const Material& material(int32_t index) const;
+
+    const Scene& mScene;
+    const SceneGeometry& mGeometry;
+    int mMaxDepth;
+    bool mAnyTransmissive = false;  ///< else shadow rays only ask for any hit
+};
+
+}  // namespace kerf

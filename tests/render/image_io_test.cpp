@@ -1,0 +1,191 @@
+/// @file tests/render/image_io_test.cpp
+/// @brief writeImage/readImage: round trips within the quantisation, format by extension,
+/// and failures that leave no file behind and never clobber an existing one.
+#include "render/image.h"
+#include "render/srgb.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include <sys/stat.h>
+
+using namespace kerf;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// A fresh empty directory, removed with its contents at the end of the test.
+struct TempDir {
+    fs::path path;
+    TempDir() {
+        std::string pattern = (fs::temp_directory_path() / "kerf-image-io-XXXXXX").string();
+        REQUIRE(mkdtemp(pattern.data()) != nullptr);
+        path = pattern;
+    }
+    ~TempDir() { fs::remove_all(path); }
+    std::string file(const std::string& name) const { return (path / name).string(); }
+    int entries() const {
+        int n = 0;
+        for ([[maybe_unused]] const auto& e : fs::directory_iterator(path)) ++n;
+        return n;
+    }
+};
+
+std::string slurp(const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// A test pattern: a ramp over [−0.25, 1.25] so clamping shows, with a NaN.
+Image pattern(int w, int h, int c) {
+    Image image(w, h, c);
+    for (size_t k = 0; k < image.pixels.size(); ++k)
+        image.pixels[k] = float(-0.25 + 1.5 * double(k) / double(image.pixels.size() - 1));
+    image.pixels[3] = std::numeric_limits<float>::quiet_NaN();
+    return image;
+}
+
+}  // namespace
+
+TEST_CASE("srgbEncode / srgbDecode") {
+    CHECK(srgbEncode(0.0) == 0.0);
+    CHECK(srgbEncode(1.0) == Approx(1.0).epsilon(1e-15));
+    CHECK(srgbEncode(0.0031308) == Approx(0.0031308 * 12.92));
+    CHECK(srgbEncode(0.5) == Approx(0.735356983).epsilon(1e-8));  // IEC 61966-2-1
+    for (double v : {0.001, 0.01, 0.2, 0.5, 0.9}) CHECK(srgbDecode(srgbEncode(v)) == Approx(v));
+    CHECK(srgbByte(-1.0f) == 0);
+    CHECK(srgbByte(std::numeric_limits<float>::quiet_NaN()) == 0);
+    CHECK(srgbByte(2.0f) == 255);
+    CHECK(srgbByte(0.5f) == 188);  // round(0.7354·255) = round(187.5) → 188
+}
+
+TEST_CASE("writeImage / readImage round trips") {
+    TempDir dir;
+
+    SECTION("PNG: 8-bit sRGB codes, clamped and rounded") {
+        const Image image = pattern(5, 3, 3);
+        const std::string file = dir.file("ramp.png");
+        writeImage(image, file);
+        const Image back = readImage(file);
+        REQUIRE(back.width == 5);
+        REQUIRE(back.height == 3);
+        REQUIRE(back.channels == 3);
+        for (size_t k = 0; k < image.pixels.size(); ++k) {
+            INFO("value " << k << " = " << image.pixels[k]);
+            // Exactly the code srgbByte gives, decoded back to linear.
+            const double code = srgbByte(image.pixels[k]);
+            CHECK(back.pixels[k] == Approx(srgbDecode(code / 255.0)).margin(1e-6));
+        }
+        CHECK(dir.entries() == 1);  // no temporary left behind
+    }
+
+    SECTION("EXR and TIFF: float linear, exact, infinities kept") {
+        Image depth = pattern(4, 3, 1);
+        depth.pixels[2] = std::numeric_limits<float>::infinity();
+        depth.pixels[3] = 1e30f;
+        for (const char* name : {"depth.exr", "depth.tif", "DEPTH.TIFF"}) {
+            INFO(name);
+            writeImage(depth, dir.file(name));
+            const Image back = readImage(dir.file(name));
+            REQUIRE(back.channels == 1);
+            REQUIRE(back.pixels.size() == depth.pixels.size());
+            for (size_t k = 0; k < depth.pixels.size(); ++k) CHECK(back.pixels[k] == depth.pixels[k]);
+        }
+    }
+
+    SECTION("JPEG: lossy, but a flat grey stays within two codes") {
+        Image grey(16, 16, 3);
+        for (float& v : grey.pixels) v = 0.2f;
+        writeImage(grey, dir.file("grey.jpg"));
+        const Image back = readImage(dir.file("grey.jpg"));
+        REQUIRE(back.channels == 3);
+        for (float v : back.pixels) CHECK(std::abs(srgbEncode(v) - srgbEncode(0.2)) * 255 <= 2.0);
+    }
+
+    SECTION("an existing file is replaced") {
+        const std::string file = dir.file("out.exr");
+        writeImage(pattern(2, 2, 3), file);
+        Image second(3, 1, 3);
+        second.pixels.assign(9, 0.75f);
+        writeImage(second, file);
+        const Image back = readImage(file);
+        CHECK(back.width == 3);
+        CHECK(back.pixels[4] == 0.75f);
+        CHECK(dir.entries() == 1);
+    }
+}
+
+TEST_CASE("writeImage permissions") {
+    // The temporary file is created private; the result must look like any new file.
+    TempDir dir;
+    const mode_t mask = umask(022);
+    umask(mask);
+    const std::string file = dir.file("fresh.png");
+    writeImage(pattern(2, 2, 3), file);
+    CHECK((fs::status(file).permissions() & fs::perms::all) == fs::perms(0666 & ~mask));
+    SECTION("a replaced file keeps its permissions") {
+        fs::permissions(file, fs::perms(0640));
+        writeImage(pattern(3, 3, 3), file);
+        CHECK((fs::status(file).permissions() & fs::perms::all) == fs::perms(0640));
+    }
+}
+
+TEST_CASE("writeImage failures") {
+    TempDir dir;
+    const Image image = pattern(4, 4, 3);
+
+    SECTION("an unknown extension throws, naming the file, and writes nothing") {
+        for (const char* name : {"picture.bmpx", "noextension", "dir.png/file"}) {
+            const std::string file = dir.file(name);
+            INFO(name);
+            try {
+                writeImage(image, file);
+                FAIL("no exception");
+            } catch (const ImageWriteError& e) {
+                CHECK(std::string(e.what()).find(file) != std::string::npos);
+            }
+        }
+        CHECK(dir.entries() == 0);
+    }
+
+    SECTION("a failed write leaves an existing file untouched") {
+        const std::string file = dir.file("keep.png");
+        writeImage(image, file);
+        const std::string before = slurp(file);
+        Image broken(4, 4, 3);
+        broken.pixels.resize(5);  // does not match its size
+        CHECK_THROWS_AS(writeImage(broken, file), ImageWriteError);
+        CHECK(slurp(file) == before);
+        CHECK(dir.entries() == 1);
+    }
+
+    SECTION("a rename that fails removes the temporary and keeps what was there") {
+        // The target is a non-empty directory: the image is written, the rename refused.
+        const std::string target = dir.file("taken.png");
+        fs::create_directory(target);
+        std::ofstream(target + "/inside.txt") << "precious";
+        CHECK_THROWS_AS(writeImage(image, target), ImageWriteError);
+        CHECK(fs::is_directory(target));
+        CHECK(slurp(target + "/inside.txt") == "precious");
+        CHECK(dir.entries() == 1);
+    }
+
+    SECTION("a missing directory throws, naming the file") {
+        const std::string file = dir.file("missing/sub/out.exr");
+        try {
+            writeImage(image, file);
+            FAIL("no exception");
+        } catch (const ImageWriteError& e) {
+            CHECK(std::string(e.what()).find(file) != std::string::npos);
+        }
+        CHECK(dir.entries() == 0);
+    }
+}
