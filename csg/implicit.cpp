@@ -46,7 +46,7 @@ public:
         bool inside = isInside(problem.value(t0));
         Boundary pending = inside ? endBoundary(ray, t0, boxIn >= tmin, true) : Boundary{};
         isolateRoots(problem, t0, t1, 0.0, ctx, [&](double t, bool entering) {
-            const Boundary b = boundary(t, normalAt(ray.at(t)));
+            const Boundary b = rootBoundary(t, normalAt(ray.at(t)), ctx);
             if (entering)
                 pending = b;
             else

@@ -26,6 +26,12 @@ protected:
         b.primitive = mId;
         return b;
     }
+    /// A boundary found by root isolation to the context's tolerance.
+    Boundary rootBoundary(double t, const Vec3& n, const TraceContext& ctx) const {
+        Boundary b = boundary(t, n);
+        b.relError = static_cast<float>(ctx.relTolerance);
+        return b;
+    }
 
 private:
     uint32_t mId;

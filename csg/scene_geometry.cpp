@@ -52,6 +52,7 @@ std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double
         h.entering = entering;
         h.material = b->material == Boundary::kNoMaterial ? 0 : b->material;
         h.primitive = b->primitive;
+        h.relError = b->relError;
         h.object = index;
         best = h;
         return h.t;  // farther objects need only be searched up to here

@@ -18,6 +18,7 @@ struct Hit {
     int32_t material = 0;  ///< never kNoMaterial: objects without one get 0, the default
     uint32_t primitive = 0;
     int object = -1;
+    double relError = 0.0;  ///< Boundary::relError of the surface hit
 };
 
 class SceneGeometry {

@@ -23,6 +23,9 @@ struct Boundary {
     /// Which primitive made this boundary (1-based, unique in the scene); 0 for a clip of the
     /// ray's parameter range, which is not a surface.
     uint32_t primitive = 0;
+    /// A bound on |t − t*| / |t*| beyond rounding: 0 for closed forms, the tolerance the root
+    /// was isolated to for root-found surfaces. Secondary rays start past this error.
+    float relError = 0.f;
 
     static constexpr int32_t kNoMaterial = -1;
     bool isSurface() const { return primitive != 0; }

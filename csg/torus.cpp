@@ -107,7 +107,7 @@ public:
         Boundary pending = inside ? endBoundary(t0, t0 == tmin) : Boundary{};
         isolateRoots(q, sA, sB, tc * sPerT, ctx, [&](double s, bool entering) {
             const double t = refine(ray, tc + s / sPerT, inv);
-            const Boundary bd = boundary(t, normalAt(ray.at(t)));
+            const Boundary bd = rootBoundary(t, normalAt(ray.at(t)), ctx);
             if (entering)
                 pending = bd;
             else

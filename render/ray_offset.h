@@ -9,8 +9,8 @@
 ///     an ulp relative. The point is therefore within c·M·2^-52 of the true surface, with
 ///     c = 16 as a generous count of those operations (it assumes transforms of moderate
 ///     condition number, as modelling transforms are).
-///  2. The root finder. Hit distances only satisfy |t − t*| ≤ relTolerance·t* (see
-///     csg/trace_context.h): up to relTolerance·t·|d| along the ray.
+///  2. The root finder. A surface found by root isolation is only within its Boundary::relError
+///     (the tolerance it was isolated to; 0 for closed forms): up to relError·t·|d| along the ray.
 /// Moving p along the normal by more than the sum puts it strictly on the chosen side of the
 /// true surface, so the new ray can start there with tmin = 0 and never meet the surface it
 /// leaves. Both terms scale with the scene: a scene scaled by 1e-6 or 1e6 gets offsets scaled
@@ -29,7 +29,7 @@ namespace kerf {
 constexpr double kHitRoundingOps = 16.0;
 
 /// An upper bound on the distance between the computed hit point `p` = ray.at(t) and the true
-/// surface, for hits found with relative tolerance `relTolerance`.
+/// surface, for a hit whose distance is within relative error `relTolerance` (Hit::relError).
 inline double hitErrorBound(const Ray& ray, double t, const Vec3& p, double relTolerance) {
     const Vec3 ap = glm::abs(p);
     const Vec3 ao = glm::abs(ray.origin);

@@ -74,7 +74,7 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
     const Vec3 d = glm::normalize(ray.dir);
     // Shade with the normal turned toward the viewer; the outward normal decides nothing else.
     const Vec3 n = glm::dot(hit->normal, d) < 0 ? hit->normal : -hit->normal;
-    const double err = hitErrorBound(ray, hit->t, p, ctx.trace.relTolerance);
+    const double err = hitErrorBound(ray, hit->t, p, hit->relError);
 
     Vec3 c = m.emit + (1.0 - m.transmit) * m.ambient * m.color;
     c += directLight(m, p, n, d, err, ctx);
