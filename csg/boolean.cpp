@@ -61,6 +61,20 @@ public:
         return v;
     }
 
+    long double valueExtended(const LVec3& p) const override {
+        long double v = mChildren[0]->valueExtended(p);
+        for (size_t i = 1; i < mChildren.size(); ++i) {
+            const long double c = mChildren[i]->valueExtended(p);
+            switch (mOp) {
+                case BoolOp::Union: v = std::min(v, c); break;
+                case BoolOp::Intersection: v = std::max(v, c); break;
+                case BoolOp::Difference: v = std::max(v, -c); break;
+                case BoolOp::Xor: v = std::max(std::min(v, c), -std::max(v, c)); break;
+            }
+        }
+        return v;
+    }
+
     Interval valueInterval(const IntervalVec3& box) const override {
         Interval v = mChildren[0]->valueInterval(box);
         for (size_t i = 1; i < mChildren.size(); ++i) {

@@ -57,6 +57,13 @@ public:
         return std::max(std::max(x, y), z);
     }
 
+    long double valueExtended(const LVec3& p) const override {
+        long double v = -INFINITY;
+        for (int a = 0; a < 3; ++a)
+            v = std::max({v, (long double)mBounds.lo[a] - p[a], p[a] - (long double)mBounds.hi[a]});
+        return v;
+    }
+
     Interval valueInterval(const IntervalVec3& b) const override {
         const Vec3& lo = mBounds.lo;
         const Vec3& hi = mBounds.hi;

@@ -19,7 +19,7 @@ struct Piece {
 
 class Cone final : public Primitive {
 public:
-    Cone(const Vec3& a, const Vec3& b, double r1, double r2) : mBase(a), mR1(r1), mR2(r2) {
+    Cone(const Vec3& a, const Vec3& b, double r1, double r2) : mBase(a), mTop(b), mR1(r1), mR2(r2) {
         const Vec3 axis = b - a;
         mLength = glm::length(axis);
         mAxis = axis / mLength;
@@ -122,6 +122,17 @@ public:
         return std::max(side, std::max(-z, z - mLength));
     }
 
+    long double valueExtended(const LVec3& p) const override {
+        // From the given end points and radii, not the rounded frame.
+        const LVec3 axis = LVec3(mTop) - LVec3(mBase), q = p - LVec3(mBase);
+        const long double len = std::sqrt(glm::dot(axis, axis));
+        const long double z = glm::dot(q, axis) / len;
+        const long double radial = std::sqrt(std::max(0.0L, glm::dot(q, q) - z * z));
+        const long double slope = ((long double)mR2 - mR1) / len;
+        const long double side = (radial - (mR1 + slope * z)) / std::sqrt(1.0L + slope * slope);
+        return std::max(side, std::max(-z, z - len));
+    }
+
     Interval valueInterval(const IntervalVec3& b) const override {
         const Interval px = b.x - mBase.x, py = b.y - mBase.y, pz = b.z - mBase.z;
         const Interval x = px * mE1.x + py * mE1.y + pz * mE1.z;
@@ -156,6 +167,7 @@ private:
     }
 
     Vec3 mBase;
+    Vec3 mTop;  ///< the given end point, for valueExtended
     Vec3 mAxis;  // unit, from the base (radius r1) towards the top (radius r2)
     Vec3 mE1, mE2;
     double mLength;

@@ -16,7 +16,7 @@ constexpr double kParallel2 = 0x1p-104;
 class Cylinder final : public Primitive {
 public:
     Cylinder(const Vec3& a, const Vec3& b, double radius)
-        : mBase(a), mRadius(radius), mRadius2(radius * radius) {
+        : mBase(a), mTop(b), mRadius(radius), mRadius2(radius * radius) {
         const Vec3 axis = b - a;
         mLength = glm::length(axis);
         mAxis = axis / mLength;
@@ -94,6 +94,15 @@ public:
         return std::max(side, std::max(-z, z - mLength));
     }
 
+    long double valueExtended(const LVec3& p) const override {
+        // From the given end points, not the rounded frame: the reference must be exact.
+        const LVec3 axis = LVec3(mTop) - LVec3(mBase), q = p - LVec3(mBase);
+        const long double len = std::sqrt(glm::dot(axis, axis));
+        const long double z = glm::dot(q, axis) / len;
+        const long double radial = std::sqrt(std::max(0.0L, glm::dot(q, q) - z * z));
+        return std::max(radial - (long double)mRadius, std::max(-z, z - len));
+    }
+
     Interval valueInterval(const IntervalVec3& b) const override {
         const Interval px = b.x - mBase.x, py = b.y - mBase.y, pz = b.z - mBase.z;
         const Interval x = px * mE1.x + py * mE1.y + pz * mE1.z;
@@ -119,6 +128,7 @@ private:
     }
 
     Vec3 mBase;
+    Vec3 mTop;  ///< the given end point, for valueExtended
     Vec3 mAxis;  // unit, from the base towards the top
     Vec3 mE1, mE2;
     double mLength;

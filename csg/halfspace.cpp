@@ -91,6 +91,11 @@ public:
         return (mNormal.x * p.x + mNormal.y * p.y + mNormal.z * p.z - mOffset) * mInvLength;
     }
 
+    long double valueExtended(const LVec3& p) const override {
+        const LVec3 n(mNormal);
+        return (glm::dot(n, p) - mOffset) / std::sqrt(glm::dot(n, n));
+    }
+
     Interval valueInterval(const IntervalVec3& b) const override {
         return (mNormal.x * b.x + mNormal.y * b.y + mNormal.z * b.z - mOffset) * mInvLength;
     }

@@ -63,6 +63,14 @@ public:
         return std::max(mTape->eval(p), std::max(outside.x, std::max(outside.y, outside.z)));
     }
 
+    long double valueExtended(const LVec3& p) const override {
+        long double outside = -INFINITY;
+        for (int a = 0; a < 3; ++a)
+            outside = std::max({outside, (long double)mBounds.lo[a] - p[a],
+                                p[a] - (long double)mBounds.hi[a]});
+        return std::max(mTape->evalExtended(p), outside);
+    }
+
     Interval valueInterval(const IntervalVec3& box) const override {
         const Interval f = mTape->evalInterval(box.x, box.y, box.z);
         const Interval* axes[3] = {&box.x, &box.y, &box.z};

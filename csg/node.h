@@ -13,6 +13,9 @@
 
 namespace kerf {
 
+/// Points in extended precision, for reference computations (csg/reference.h).
+using LVec3 = glm::tvec3<long double>;
+
 /// A box of points as three intervals, for interval evaluation of implicit forms.
 struct IntervalVec3 {
     Interval x, y, z;
@@ -36,6 +39,9 @@ public:
     virtual double value(const Vec3& p) const = 0;
     /// An interval holding value(p) for every p in the box.
     virtual Interval valueInterval(const IntervalVec3& box) const = 0;
+    /// value(p) evaluated in long double throughout (same zero set), for the reference that
+    /// accuracy is measured against.
+    virtual long double valueExtended(const LVec3& p) const = 0;
 
     /// For `kerf check`: how many primitive leaves (shared subtrees counted per use) and how
     /// deep the tree is (a leaf has depth 1).

@@ -10,9 +10,10 @@
 
 namespace kerf {
 
-/// op(a, b) on doubles; `value` is the PowInt exponent. Const and the variables are not
+/// op(a, b) on doubles (or long doubles, for references); `value` is the PowInt exponent. Const and the variables are not
 /// handled here (they have no operands).
-inline double applyScalarOp(Op op, double a, double b, double value) {
+template <class T>
+inline T applyScalarOp(Op op, T a, T b, double value) {
     switch (op) {
         case Op::Neg:
             return -a;
@@ -55,9 +56,9 @@ inline double applyScalarOp(Op op, double a, double b, double value) {
         case Op::Atan2:
             return std::atan2(a, b);
         case Op::Min:
-            return std::min(a, b);
+            return a < b ? a : b;  // std::min without naming T twice
         case Op::Max:
-            return std::max(a, b);
+            return a > b ? a : b;
         case Op::PowInt:
             return std::pow(a, static_cast<int>(value));
         default:

@@ -44,6 +44,11 @@ public:
         return std::sqrt(x * x + y * y + z * z) - mRadius;
     }
 
+    long double valueExtended(const LVec3& p) const override {
+        const LVec3 q = p - LVec3(mCenter);
+        return std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z) - (long double)mRadius;
+    }
+
     Interval valueInterval(const IntervalVec3& b) const override {
         const Interval x = b.x - mCenter.x, y = b.y - mCenter.y, z = b.z - mCenter.z;
         return sqrt(sqr(x) + sqr(y) + sqr(z)) - mRadius;

@@ -30,6 +30,8 @@ public:
 
     /// f at a point.
     double eval(const Vec3& p) const;
+    /// f at a point in long double throughout, for reference computations.
+    long double evalExtended(const glm::tvec3<long double>& p) const;
     /// An interval holding f over the box.
     Interval evalInterval(const Interval& x, const Interval& y, const Interval& z) const;
     /// f and its gradient at a point (forward-mode differentiation).

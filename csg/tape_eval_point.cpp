@@ -32,3 +32,24 @@ double Tape::eval(const Vec3& p) const {
 }
 
 }  // namespace kerf
+
+namespace kerf {
+
+long double Tape::evalExtended(const glm::tvec3<long double>& p) const {
+    std::vector<long double> s(mInstrs.size());  // reference path: clarity over speed
+    for (size_t i = 0; i < mInstrs.size(); ++i) {
+        const TapeInstr& in = mInstrs[i];
+        switch (in.op) {
+            case Op::Const: s[i] = in.value; break;
+            case Op::VarX: s[i] = p.x; break;
+            case Op::VarY: s[i] = p.y; break;
+            case Op::VarZ: s[i] = p.z; break;
+            default:
+                s[i] = applyScalarOp<long double>(in.op, s[in.a], in.b >= 0 ? s[in.b] : 0.0L,
+                                                  in.value);
+        }
+    }
+    return s.back();
+}
+
+}  // namespace kerf

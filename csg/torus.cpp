@@ -124,6 +124,11 @@ public:
         return std::hypot(rho - mR, p.y) - mr;
     }
 
+    long double valueExtended(const LVec3& p) const override {
+        const long double rho = std::sqrt(p.x * p.x + p.z * p.z) - mR;
+        return std::sqrt(rho * rho + p.y * p.y) - mr;
+    }
+
     Interval valueInterval(const IntervalVec3& box) const override {
         const Interval rho = sqrt(sqr(box.x) + sqr(box.z));
         return sqrt(sqr(rho - Interval(mR)) + sqr(box.y)) - Interval(mr);

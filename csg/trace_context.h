@@ -22,11 +22,24 @@ struct TraceStats {
     }
 };
 
+/// How primitives find where a ray crosses their surface.
+enum class TraceMethod {
+    /// Closed forms where a primitive has one (sphere, box, cylinder, cone, half-space),
+    /// interval root isolation otherwise (torus, implicit). The default.
+    Closed,
+    /// Interval root isolation of every primitive's implicit form, closed forms unused.
+    Interval,
+    /// Sphere tracing of every primitive's implicit form with a Lipschitz bound. For the
+    /// accuracy comparison only: it can step over thin features and grazing hits.
+    SphereTrace,
+};
+
 /// What a trace needs besides the ray. One per thread; never shared.
 struct TraceContext {
     /// Hit distances must satisfy |t − t*| ≤ relTolerance·|t*|; spans thinner than
     /// relTolerance·|t| vanish. Closed-form primitives are exact to double precision anyway.
     double relTolerance = 1e-9;
+    TraceMethod method = TraceMethod::Closed;
     TraceStats stats;
 };
 

@@ -13,7 +13,10 @@ public:
     TransformNode(NodePtr child, const Affine& worldFromLocal)
         : mChild(std::move(child)),
           mLocalFromWorld(worldFromLocal.inverse()),
-          mNormalToWorld(glm::transpose(mLocalFromWorld.linear)) {
+          mNormalToWorld(glm::transpose(mLocalFromWorld.linear)),
+          mWorldFromLocalExtended(glm::tmat3x3<long double>(worldFromLocal.linear)),
+          mLocalFromWorldExtended(glm::inverse(mWorldFromLocalExtended)),
+          mOffsetExtended(worldFromLocal.offset) {
         mBounds = worldFromLocal.map(mChild->bounds());
     }
 
@@ -28,6 +31,10 @@ public:
     }
 
     double value(const Vec3& p) const override { return mChild->value(mLocalFromWorld.point(p)); }
+
+    long double valueExtended(const LVec3& p) const override {
+        return mChild->valueExtended(mLocalFromWorldExtended * (p - mOffsetExtended));
+    }
 
     Interval valueInterval(const IntervalVec3& box) const override {
         const Interval in[3] = {box.x, box.y, box.z};
@@ -50,6 +57,10 @@ private:
     NodePtr mChild;
     Affine mLocalFromWorld;
     Mat3 mNormalToWorld;
+    // The map inverted in long double, so references do not inherit the double inverse's error.
+    glm::tmat3x3<long double> mWorldFromLocalExtended;
+    glm::tmat3x3<long double> mLocalFromWorldExtended;
+    LVec3 mOffsetExtended;
 };
 
 /// Gives the child's boundaries that have no material yet this one: the innermost wins.
@@ -66,6 +77,7 @@ public:
     }
 
     double value(const Vec3& p) const override { return mChild->value(p); }
+    long double valueExtended(const LVec3& p) const override { return mChild->valueExtended(p); }
     Interval valueInterval(const IntervalVec3& box) const override {
         return mChild->valueInterval(box);
     }
