@@ -39,12 +39,13 @@ std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double
                                              TraceContext& ctx) const {
     std::optional<Hit> best;
     SpanList spans;
+    double nearest = tmax;  // shrinks as hits are found: farther objects cannot win
     mBvh.traverse(ray, tmin, tmax, ctx.stats, [&](int index, double tEnter) {
-        if (tEnter > tmax) return tmax;
-        mObjects[index]->spans(ray, tmin, tmax, ctx, spans);
+        if (tEnter > nearest) return nearest;
+        mObjects[index]->spans(ray, tmin, nearest, ctx, spans);
         bool entering = true;
-        const Boundary* b = firstSurface(spans, tmin, tmax, entering);
-        if (b == nullptr) return tmax;
+        const Boundary* b = firstSurface(spans, tmin, nearest, entering);
+        if (b == nullptr || (best && b->t >= best->t)) return nearest;
         Hit h;
         h.t = b->t;
         const double len = glm::length(b->normal);
@@ -55,7 +56,8 @@ std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double
         h.relError = b->relError;
         h.object = index;
         best = h;
-        return h.t;  // farther objects need only be searched up to here
+        nearest = h.t;
+        return nearest;
     });
     return best;
 }
