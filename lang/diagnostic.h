@@ -36,6 +36,10 @@ public:
     int errorCount() const { return mErrorCount; }
     const std::vector<Diagnostic>& diagnostics() const { return mDiagnostics; }
 
+    /// Orders the diagnostics from index `from` on by file (in the order the files were
+    /// remembered), line and column, keeping the report order among equals.
+    void sortByLocation(size_t from = 0);
+
     /// `FILE:LINE:COL: error: message`, then the source line and a caret under the column,
     /// then `hint: …` where there is one; one block per diagnostic.
     std::string format() const;

@@ -1,0 +1,113 @@
+// The front door: read, check, tokenize and parse each file, splice included files in place
+// (each file once; cycles and missing files are errors at the include), then lower.
+#include "lang/compile.h"
+
+#include "lang/lexer.h"
+#include "lang/lower.h"
+#include "lang/parser.h"
+#include "lang/source.h"
+
+#include <filesystem>
+#include <set>
+
+namespace kerf {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A path that identifies a file however it was spelt (for "read once" and cycles).
+std::string identity(const std::string& path) {
+    std::error_code ec;
+    fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
+    if (ec) p = fs::path(path).lexically_normal();
+    return p.string();
+}
+
+class Loader {
+public:
+    explicit Loader(DiagnosticSink& sink) : mSink(sink) {}
+
+    /// Parses one file's text and everything it includes into `out`.
+    void addText(const SourceText& source, Program& out) {
+        const std::string id = identity(*source.name);
+        mRead.insert(id);
+        mSink.rememberSource(source.name, source.text);
+        if (!checkSourceText(source, mSink)) return;
+        Program program = parse(tokenize(source, mSink), mSink);
+        mStack.push_back({id, *source.name});
+        for (Statement& s : program.statements) {
+            if (s.kind == Statement::Kind::Include)
+                include(s, *source.name, out);
+            else
+                out.statements.push_back(std::move(s));
+        }
+        mStack.pop_back();
+    }
+
+private:
+    void include(const Statement& s, const std::string& includer, Program& out) {
+        if (s.name.empty()) {
+            mSink.error(s.loc, "include needs a file name");
+            return;
+        }
+        const std::string name = (fs::path(includer).parent_path() / s.name).lexically_normal().string();
+        const std::string id = identity(name);
+        for (size_t i = 0; i < mStack.size(); ++i) {
+            if (mStack[i].first != id) continue;
+            std::string chain;
+            for (size_t k = i; k < mStack.size(); ++k) chain += mStack[k].second + " → ";
+            mSink.error(s.loc, "include cycle: " + chain + name);
+            return;
+        }
+        if (mRead.count(id)) return;  // each file is read once
+        std::string why;
+        auto bytes = readFileBytes(name, why);
+        if (!bytes) {
+            mSink.error(s.loc, "cannot read included file '" + s.name + "': " + why,
+                        "includes are relative to the including file's folder; looked for " + name);
+            return;
+        }
+        addText(SourceText{std::make_shared<const std::string>(name),
+                           std::make_shared<const std::string>(std::move(*bytes))},
+                out);
+    }
+
+    DiagnosticSink& mSink;
+    std::set<std::string> mRead;
+    std::vector<std::pair<std::string, std::string>> mStack;  // identity, name as shown
+};
+
+std::optional<Scene> compileSource(const SourceText& source, DiagnosticSink& sink) {
+    const int errorsBefore = sink.errorCount();
+    const size_t diagnosticsBefore = sink.diagnostics().size();
+    Program program;
+    Loader(sink).addText(source, program);
+    // Lowering runs even after syntax errors: broken definitions keep their names, so the
+    // semantic errors found are real ones, not echoes of the syntax error.
+    std::optional<Scene> scene = Lowering(sink).lower(program);
+    sink.sortByLocation(diagnosticsBefore);
+    if (sink.errorCount() > errorsBefore) return std::nullopt;
+    return scene;
+}
+
+}  // namespace
+
+std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink) {
+    std::string why;
+    auto bytes = readFileBytes(path, why);
+    if (!bytes) {
+        sink.error(SourceLoc{std::make_shared<const std::string>(path), 0, 0}, "cannot read '" + path + "': " + why);
+        return std::nullopt;
+    }
+    return compileSource(SourceText{std::make_shared<const std::string>(path),
+                                    std::make_shared<const std::string>(std::move(*bytes))},
+                         sink);
+}
+
+std::optional<Scene> compileString(const std::string& text, const std::string& name, DiagnosticSink& sink) {
+    return compileSource(
+        SourceText{std::make_shared<const std::string>(name), std::make_shared<const std::string>(text)}, sink);
+}
+
+}  // namespace kerf

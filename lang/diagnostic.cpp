@@ -1,0 +1,105 @@
+// Collecting diagnostics and printing them as FILE:LINE:COL, the source line and a caret.
+#include "lang/diagnostic.h"
+
+#include <algorithm>
+
+namespace kerf {
+
+void DiagnosticSink::report(Diagnostic d) {
+    if (d.severity == Severity::Error) ++mErrorCount;
+    mDiagnostics.push_back(std::move(d));
+}
+
+void DiagnosticSink::error(const SourceLoc& loc, std::string message, std::string hint) {
+    report(Diagnostic{loc, Severity::Error, std::move(message), std::move(hint)});
+}
+
+void DiagnosticSink::rememberSource(std::shared_ptr<const std::string> file,
+                                    std::shared_ptr<const std::string> text) {
+    mSources.emplace_back(std::move(file), std::move(text));
+}
+
+void DiagnosticSink::sortByLocation(size_t from) {
+    if (from >= mDiagnostics.size()) return;
+    const auto fileRank = [&](const SourceLoc& loc) {
+        if (!loc.file) return -1;
+        for (size_t i = 0; i < mSources.size(); ++i)
+            if (mSources[i].first && *mSources[i].first == *loc.file) return static_cast<int>(i);
+        return static_cast<int>(mSources.size());
+    };
+    std::stable_sort(mDiagnostics.begin() + static_cast<std::ptrdiff_t>(from), mDiagnostics.end(),
+                     [&](const Diagnostic& a, const Diagnostic& b) {
+                         const int fa = fileRank(a.loc), fb = fileRank(b.loc);
+                         if (fa != fb) return fa < fb;
+                         if (a.loc.line != b.loc.line) return a.loc.line < b.loc.line;
+                         return a.loc.col < b.loc.col;
+                     });
+}
+
+namespace {
+
+const char* severityName(Severity s) {
+    switch (s) {
+        case Severity::Error: return "error";
+        case Severity::Warning: return "warning";
+        case Severity::Note: return "note";
+    }
+    return "error";
+}
+
+/// The text of line `line` (1-based) without its line break; false if there is no such line.
+bool sourceLine(const std::string& text, int line, std::string& out) {
+    size_t start = 0;
+    for (int l = 1; l < line; ++l) {
+        start = text.find('\n', start);
+        if (start == std::string::npos) return false;
+        ++start;
+    }
+    if (start > text.size()) return false;
+    size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    out = text.substr(start, end - start);
+    if (!out.empty() && out.back() == '\r') out.pop_back();
+    return true;
+}
+
+/// Spaces up to the column, keeping tabs so the caret lines up under the terminal's tab stops;
+/// a multi-byte UTF-8 character takes one cell.
+std::string caretLine(const std::string& lineText, int col) {
+    std::string caret;
+    for (int i = 0; i + 1 < col; ++i) {
+        if (i < static_cast<int>(lineText.size())) {
+            const unsigned char c = static_cast<unsigned char>(lineText[i]);
+            if ((c & 0xC0) == 0x80) continue;  // UTF-8 continuation byte
+            caret += c == '\t' ? '\t' : ' ';
+        } else {
+            caret += ' ';
+        }
+    }
+    return caret + '^';
+}
+
+}  // namespace
+
+std::string DiagnosticSink::format() const {
+    std::string out;
+    for (const Diagnostic& d : mDiagnostics) {
+        const std::string fileName = d.loc.file ? *d.loc.file : std::string("<input>");
+        out += fileName;
+        if (d.loc.line > 0) out += ':' + std::to_string(d.loc.line) + ':' + std::to_string(d.loc.col);
+        out += std::string(": ") + severityName(d.severity) + ": " + d.message + '\n';
+        if (d.loc.line > 0 && d.loc.file) {
+            for (const auto& [file, text] : mSources) {
+                if (!file || !text || *file != *d.loc.file) continue;
+                std::string lineText;
+                if (sourceLine(*text, d.loc.line, lineText))
+                    out += lineText + '\n' + caretLine(lineText, d.loc.col) + '\n';
+                break;
+            }
+        }
+        if (!d.hint.empty()) out += "  hint: " + d.hint + '\n';
+    }
+    return out;
+}
+
+}  // namespace kerf

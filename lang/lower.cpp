@@ -1,0 +1,141 @@
+// Lowering, part 1: the definitions (lets, solids, materials) and the statement loop.
+#include "lang/lower.h"
+
+#include <cstdio>
+
+namespace kerf {
+
+std::string formatNumber(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+std::string formatVector(const Vec3& v) {
+    return "<" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + ">";
+}
+
+/// Counts one level of lowering recursion (the caller leaves with --mDepth); too deep is an error.
+bool Lowering::enter(const SourceLoc& at) {
+    if (++mDepth <= kMaxLoweringDepth) return true;
+    --mDepth;
+    if (mTooDeepReported) return false;  // one report; the rest of the chain fails quietly
+    mTooDeepReported = true;
+    error(at, "nested too deeply through named solids or lets (more than " +
+                  std::to_string(kMaxLoweringDepth) + " levels)");
+    return false;
+}
+
+void Lowering::error(const SourceLoc& loc, std::string message, std::string hint) {
+    mSink.error(loc, std::move(message), std::move(hint));
+}
+
+namespace {
+
+std::string where(const SourceLoc& loc) {
+    return (loc.file ? *loc.file : std::string("<input>")) + ":" + std::to_string(loc.line) + ":" +
+           std::to_string(loc.col);
+}
+
+}  // namespace
+
+std::optional<Scene> Lowering::lower(const Program& program) {
+    const int errorsBefore = mSink.errorCount();
+    Scene scene;
+    collectDefinitions(program, scene);
+    for (const Statement& s : program.statements) lowerStatement(s, scene);
+    if (mSink.errorCount() > errorsBefore) return std::nullopt;
+    return scene;
+}
+
+NodePtr Lowering::solidNamed(const std::string& name) const {
+    const auto it = mSolids.find(name);
+    return it == mSolids.end() ? nullptr : it->second.node;
+}
+
+void Lowering::collectDefinitions(const Program& program, Scene& scene) {
+    const auto define = [&](auto& table, const Statement& s, const char* what) {
+        auto [it, inserted] = table.try_emplace(s.name);
+        if (!inserted) {
+            error(s.nameLoc, std::string(what) + " '" + s.name + "' is already defined",
+                  "first defined at " + where(it->second.def->nameLoc));
+            return false;
+        }
+        it->second.def = &s;
+        return true;
+    };
+    for (const Statement& s : program.statements) {
+        switch (s.kind) {
+            case Statement::Kind::Let: define(mLets, s, "let"); break;
+            case Statement::Kind::SolidDef: define(mSolids, s, "solid"); break;
+            case Statement::Kind::Material:
+                if (define(mMaterials, s, "material")) {
+                    mMaterials[s.name].index = static_cast<int>(scene.materials.size());
+                    Material m;
+                    m.name = s.name;
+                    scene.materials.push_back(m);
+                }
+                break;
+            default: break;
+        }
+    }
+}
+
+bool Lowering::onlyOnce(const Statement& s, const Statement*& first, const char* what) {
+    if (first) {
+        error(s.loc, std::string(what) + " given twice", "first given at " + where(first->loc));
+        return false;
+    }
+    first = &s;
+    return true;
+}
+
+void Lowering::lowerStatement(const Statement& s, Scene& scene) {
+    switch (s.kind) {
+        case Statement::Kind::Let:
+            if (s.broken) break;
+            if (mLets[s.name].def == &s) letValue(s.name, s.nameLoc);
+            break;
+        case Statement::Kind::SolidDef:
+            if (s.broken) break;
+            if (mSolids[s.name].def == &s) solidByName(s.name, s.nameLoc);
+            break;
+        case Statement::Kind::Object:
+            if (NodePtr node = lowerSolid(*s.solid)) scene.objects.push_back(node);
+            break;
+        case Statement::Kind::Material: {
+            const MaterialEntry& m = mMaterials[s.name];
+            if (m.def == &s && !s.broken) lowerMaterial(s, scene.materials[m.index]);
+            break;
+        }
+        case Statement::Kind::Camera:
+            if (onlyOnce(s, mCamera, "camera")) lowerCamera(s, scene.camera);
+            break;
+        case Statement::Kind::Light:
+            if (auto light = lowerLight(s)) scene.lights.push_back(*light);
+            break;
+        case Statement::Kind::Mist:
+            if (onlyOnce(s, mMist, "mist")) lowerMist(s, scene.mist);
+            break;
+        case Statement::Kind::Background:
+            if (onlyOnce(s, mBackground, "background")) lowerBackground(s, scene.background);
+            break;
+        case Statement::Kind::Render:
+            if (onlyOnce(s, mRender, "render")) lowerRender(s, scene.settings);
+            break;
+        case Statement::Kind::Include: break;  // resolved by compile.cpp before lowering
+    }
+}
+
+std::string Lowering::cycleMessage(const char* what, const std::vector<std::string>& busy,
+                                   const std::string& name) const {
+    size_t i = 0;
+    while (i < busy.size() && busy[i] != name) ++i;
+    std::string path;
+    for (size_t k = i + 1; k < busy.size(); ++k) path += "'" + busy[k] + "' → ";
+    std::string message = std::string(what) + " '" + name + "' refers to itself";
+    if (!path.empty()) message += " through " + path + "'" + name + "'";
+    return message;
+}
+
+}  // namespace kerf

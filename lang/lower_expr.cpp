@@ -1,0 +1,334 @@
+// Lowering, part 2: expressions. Outside implicit functions they fold to numbers and vectors
+// at compile time; inside `implicit { f … }` (field != null) x, y, z are free and the result
+// is a node of an ExprGraph, with constant subexpressions still folded.
+#include "lang/lower.h"
+
+#include "lang/names.h"
+
+#include <array>
+#include <cmath>
+
+namespace kerf {
+
+namespace {
+
+struct Function {
+    const char* name;
+    int arity;
+    Op op;  // for the functions that map to one graph operation
+};
+
+const std::array<Function, 19> kFunctions = {{
+    {"sin", 1, Op::Sin}, {"cos", 1, Op::Cos}, {"tan", 1, Op::Tan}, {"asin", 1, Op::Asin},
+    {"acos", 1, Op::Acos}, {"atan", 1, Op::Atan}, {"sqrt", 1, Op::Sqrt}, {"abs", 1, Op::Abs},
+    {"exp", 1, Op::Exp}, {"log", 1, Op::Log}, {"floor", 1, Op::Floor}, {"ceil", 1, Op::Ceil},
+    {"atan2", 2, Op::Atan2}, {"pow", 2, Op::Pow}, {"min", 2, Op::Min}, {"max", 2, Op::Max},
+    {"clamp", 3, Op::Min}, {"mix", 3, Op::Add}, {"pi", 0, Op::Const},  // pi is not callable
+}};
+
+double applyConstant(Op op, double a, double b) {
+    switch (op) {
+        case Op::Neg: return -a;
+        case Op::Sin: return std::sin(a);
+        case Op::Cos: return std::cos(a);
+        case Op::Tan: return std::tan(a);
+        case Op::Asin: return std::asin(a);
+        case Op::Acos: return std::acos(a);
+        case Op::Atan: return std::atan(a);
+        case Op::Sqrt: return std::sqrt(a);
+        case Op::Abs: return std::fabs(a);
+        case Op::Exp: return std::exp(a);
+        case Op::Log: return std::log(a);
+        case Op::Floor: return std::floor(a);
+        case Op::Ceil: return std::ceil(a);
+        case Op::Add: return a + b;
+        case Op::Sub: return a - b;
+        case Op::Mul: return a * b;
+        case Op::Div: return a / b;
+        case Op::Pow: return std::pow(a, b);
+        case Op::Atan2: return std::atan2(a, b);
+        case Op::Min: return std::min(a, b);
+        case Op::Max: return std::max(a, b);
+        default: return a;
+    }
+}
+
+Op operatorOp(char op) {
+    switch (op) {
+        case '+': return Op::Add;
+        case '-': return Op::Sub;
+        case '*': return Op::Mul;
+        case '/': return Op::Div;
+        default: return Op::Pow;
+    }
+}
+
+/// The graph node of a number or field operand.
+ExprId asField(const Value& v, ExprGraph& graph) {
+    return v.type == Value::Type::Field ? v.field : graph.constant(v.number);
+}
+
+/// a^b in the graph: an integer constant exponent becomes PowInt (exact for negative bases).
+ExprId powerField(ExprGraph& graph, const Value& a, const Value& b) {
+    const ExprId base = asField(a, graph);
+    if (b.type == Value::Type::Number && b.number == std::floor(b.number) && std::fabs(b.number) <= 64) {
+        const int n = static_cast<int>(b.number);
+        if (n == 0) return graph.constant(1.0);
+        if (n == 1) return base;
+        if (n > 0) return graph.powInt(base, n);
+        return graph.binary(Op::Div, graph.constant(1.0), graph.powInt(base, -n));
+    }
+    return graph.binary(Op::Pow, base, asField(b, graph));
+}
+
+}  // namespace
+
+std::optional<Value> Lowering::finite(Value v, const SourceLoc& at, const std::string& what) {
+    const bool ok = v.type == Value::Type::Number   ? std::isfinite(v.number)
+                    : v.type == Value::Type::Vector ? std::isfinite(v.vector.x) && std::isfinite(v.vector.y) &&
+                                                          std::isfinite(v.vector.z)
+                                                    : true;
+    if (ok) return v;
+    error(at, "value is not finite: " + what);
+    return std::nullopt;
+}
+
+std::optional<Value> Lowering::evaluate(const Expr& e, ExprGraph* field) {
+    if (!enter(e.loc)) return std::nullopt;
+    struct Leave {
+        int& depth;
+        ~Leave() { --depth; }
+    } leave{mDepth};
+
+    switch (e.kind) {
+        case Expr::Kind::Number:
+            return finite(Value::ofNumber(e.number), e.loc, e.name + " is too large for a double");
+        case Expr::Kind::Name: return evaluateName(e, field);
+        case Expr::Kind::Call: return evaluateCall(e, field);
+        case Expr::Kind::Vector: {
+            Vec3 v{0.0};
+            bool ok = true;
+            for (int i = 0; i < 3; ++i) {
+                const auto c = evaluate(*e.args[i], field);
+                if (!c) {
+                    ok = false;
+                } else if (c->type != Value::Type::Number) {
+                    error(e.args[i]->start, "a vector component must be a number, got " + typeName(c->type));
+                    ok = false;
+                } else {
+                    v[i] = c->number;
+                }
+            }
+            if (!ok) return std::nullopt;
+            return Value::ofVector(v);
+        }
+        case Expr::Kind::Negate: {
+            const auto a = evaluate(*e.args[0], field);
+            if (!a) return std::nullopt;
+            if (a->type == Value::Type::Number) return Value::ofNumber(-a->number);
+            if (a->type == Value::Type::Vector) return Value::ofVector(-a->vector);
+            return Value::ofField(field->unary(Op::Neg, a->field));
+        }
+        case Expr::Kind::Binary: {
+            const auto a = evaluate(*e.args[0], field);
+            const auto b = evaluate(*e.args[1], field);
+            if (!a || !b) return std::nullopt;
+            return arithmetic(e.op, *a, *b, e.loc, field);
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<Value> Lowering::arithmetic(char op, const Value& a, const Value& b, const SourceLoc& at,
+                                          ExprGraph* field) {
+    using T = Value::Type;
+    const auto mistyped = [&]() -> std::optional<Value> {
+        std::string hint;
+        if (a.type == T::Vector && b.type == T::Vector && (op == '*' || op == '/'))
+            hint = "vectors multiply only by numbers";
+        error(at, "cannot apply '" + std::string(1, op) + "' to " + typeName(a.type) + " and " + typeName(b.type),
+              hint);
+        return std::nullopt;
+    };
+    if (a.type == T::Number && b.type == T::Number) {
+        const double r = applyConstant(operatorOp(op), a.number, b.number);
+        return finite(Value::ofNumber(r), at,
+                      formatNumber(a.number) + " " + op + " " + formatNumber(b.number) + " = " + formatNumber(r));
+    }
+    if (a.type == T::Field || b.type == T::Field) {
+        if (a.type == T::Vector || b.type == T::Vector) return mistyped();
+        if (op == '^') return Value::ofField(powerField(*field, a, b));
+        return Value::ofField(field->binary(operatorOp(op), asField(a, *field), asField(b, *field)));
+    }
+    Vec3 r;
+    if (a.type == T::Vector && b.type == T::Vector && (op == '+' || op == '-'))
+        r = op == '+' ? a.vector + b.vector : a.vector - b.vector;
+    else if (a.type == T::Number && b.type == T::Vector && op == '*')
+        r = a.number * b.vector;
+    else if (a.type == T::Vector && b.type == T::Number && (op == '*' || op == '/'))
+        r = op == '*' ? a.vector * b.number : a.vector / b.number;
+    else
+        return mistyped();
+    return finite(Value::ofVector(r), at, "the result is " + formatVector(r));
+}
+
+std::optional<Value> Lowering::evaluateName(const Expr& e, ExprGraph* field) {
+    if (field && (e.name == "x" || e.name == "y" || e.name == "z"))
+        return Value::ofField(e.name == "x" ? field->x() : e.name == "y" ? field->y() : field->z());
+    if (e.name == "pi") return Value::ofNumber(M_PI);
+    if (mLets.count(e.name)) return letValue(e.name, e.loc);
+    if (mSolids.count(e.name)) {
+        error(e.loc, "'" + e.name + "' is a solid, not a number or vector");
+        return std::nullopt;
+    }
+    if (mMaterials.count(e.name)) {
+        error(e.loc, "'" + e.name + "' is a material, not a number or vector");
+        return std::nullopt;
+    }
+    std::vector<std::string> candidates{"pi"};
+    for (const auto& [name, entry] : mLets) candidates.push_back(name);
+    std::string hint = didYouMean(e.name, candidates);
+    if (!field && (e.name == "x" || e.name == "y" || e.name == "z"))
+        hint = "x, y and z exist only inside the f of an implicit solid";
+    error(e.loc, "undefined name '" + e.name + "'", hint);
+    return std::nullopt;
+}
+
+std::optional<Value> Lowering::letValue(const std::string& name, const SourceLoc& use) {
+    LetEntry& entry = mLets[name];
+    switch (entry.state) {
+        case State::Done: return entry.value;
+        case State::Failed: return std::nullopt;
+        case State::Busy:
+            error(use, cycleMessage("let", mBusyLets, name));
+            return std::nullopt;
+        case State::Pending: break;
+    }
+    if (entry.def->broken) {
+        entry.state = State::Failed;
+        return std::nullopt;
+    }
+    entry.state = State::Busy;
+    mBusyLets.push_back(name);
+    const auto v = evaluate(*entry.def->expr, nullptr);  // lets are constants, even inside f
+    mBusyLets.pop_back();
+    LetEntry& done = mLets[name];
+    done.state = v ? State::Done : State::Failed;
+    if (v) done.value = *v;
+    return v;
+}
+
+std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
+    const Function* fn = nullptr;
+    for (const Function& f : kFunctions)
+        if (e.name == f.name && f.arity > 0) fn = &f;
+    if (!fn) {
+        std::vector<std::string> names;
+        for (const Function& f : kFunctions)
+            if (f.arity > 0) names.emplace_back(f.name);
+        std::string hint = didYouMean(e.name, names);
+        error(e.loc, "unknown function '" + e.name + "'",
+              hint.empty() ? "the functions are " + joinNames(names) : hint);
+        return std::nullopt;
+    }
+    if (static_cast<int>(e.args.size()) != fn->arity) {
+        error(e.loc, "'" + e.name + "' takes " + std::to_string(fn->arity) + " argument" +
+                         (fn->arity == 1 ? "" : "s") + ", got " + std::to_string(e.args.size()));
+        return std::nullopt;
+    }
+    std::vector<Value> args;
+    bool ok = true;
+    for (const ExprPtr& a : e.args) {
+        const auto v = evaluate(*a, field);
+        if (v) args.push_back(*v);
+        ok = ok && v.has_value();
+    }
+    if (!ok) return std::nullopt;
+
+    const std::string name = e.name;
+    if (name == "mix") {  // a + (b - a)·t, which also mixes vectors
+        const auto d = arithmetic('-', args[1], args[0], e.loc, field);
+        const auto s = d ? arithmetic('*', *d, args[2], e.loc, field) : std::nullopt;
+        return s ? arithmetic('+', args[0], *s, e.loc, field) : std::nullopt;
+    }
+    if (name == "pow") return arithmetic('^', args[0], args[1], e.loc, field);
+    for (size_t i = 0; i < args.size(); ++i) {
+        if (args[i].type == Value::Type::Vector) {
+            error(e.args[i]->start, "'" + name + "' expects a number, got a vector");
+            return std::nullopt;
+        }
+    }
+    const auto apply = [&](Op op, const Value& a, const Value& b) -> std::optional<Value> {
+        if (a.type == Value::Type::Number && b.type == Value::Type::Number) {
+            const double r = applyConstant(op, a.number, b.number);
+            std::string call = name + "(" + formatNumber(a.number);
+            if (fn->arity > 1) call += ", " + formatNumber(b.number);
+            return finite(Value::ofNumber(r), e.loc, call + ") = " + formatNumber(r));
+        }
+        if (fn->arity == 1) return Value::ofField(field->unary(op, a.field));
+        return Value::ofField(field->binary(op, asField(a, *field), asField(b, *field)));
+    };
+    if (name == "clamp") {  // min(max(a, lo), hi)
+        const auto lower = apply(Op::Max, args[0], args[1]);
+        return lower ? apply(Op::Min, *lower, args[2]) : std::nullopt;
+    }
+    return apply(fn->op, args[0], fn->arity > 1 ? args[1] : Value::ofNumber(0.0));
+}
+
+std::optional<Value> Lowering::propertyValue(const PropertyBlock& block, const std::string& name) {
+    const Property* p = block.find(name);
+    const PropertyType type = block.spec(name).type;
+    const auto expected = [&]() -> std::string {
+        switch (type) {
+            case PropertyType::Number: return "a number";
+            case PropertyType::Vector: return "a vector";
+            case PropertyType::NumberOrVector: return "a number or a vector";
+            case PropertyType::Solid: return "a solid";
+            case PropertyType::Function: return "a function of x, y, z";
+        }
+        return "a value";
+    };
+    const std::string subject = "property '" + name + "' of " + block.what();
+    if (p->solid) {
+        error(p->solid->loc, subject + " expects " + expected() + ", got a solid");
+        return std::nullopt;
+    }
+    const auto v = evaluate(*p->expr, nullptr);
+    if (!v) return std::nullopt;
+    const bool ok = (v->type == Value::Type::Number && type != PropertyType::Vector) ||
+                    (v->type == Value::Type::Vector && type != PropertyType::Number);
+    if (!ok) {
+        error(p->expr->start, subject + " expects " + expected() + ", got " + typeName(v->type));
+        return std::nullopt;
+    }
+    return v;
+}
+
+bool Lowering::readNumber(const PropertyBlock& block, const std::string& name, double& out) {
+    if (!block.find(name)) return true;
+    const auto v = propertyValue(block, name);
+    if (v) out = v->number;
+    return v.has_value();
+}
+
+bool Lowering::readVector(const PropertyBlock& block, const std::string& name, Vec3& out) {
+    if (!block.find(name)) return true;
+    const auto v = propertyValue(block, name);
+    if (v) out = v->vector;
+    return v.has_value();
+}
+
+bool Lowering::readInteger(const PropertyBlock& block, const std::string& name, int lo, int hi, int& out) {
+    double v = out;
+    if (!readNumber(block, name, v)) return false;
+    if (v != std::floor(v) || v < lo || v > hi) {
+        error(block.find(name)->valueLoc(), block.what() + " " + name + " must be an integer from " +
+                                                std::to_string(lo) + " to " + std::to_string(hi) + ", got " +
+                                                formatNumber(v));
+        return false;
+    }
+    out = static_cast<int>(v);
+    return true;
+}
+
+}  // namespace kerf

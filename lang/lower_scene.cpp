@@ -1,0 +1,173 @@
+// Lowering, part 4: everything in the scene that is not a solid: materials, the camera,
+// lights, mist, background and render settings, each validated where it is read.
+#include "lang/lower.h"
+
+#include "lang/names.h"
+
+#include <cmath>
+
+namespace kerf {
+
+namespace {
+
+bool nonNegative(const Vec3& v) { return v.x >= 0 && v.y >= 0 && v.z >= 0; }
+
+}  // namespace
+
+void Lowering::lowerMaterial(const Statement& s, Material& m) {
+    const PropertyBlock b(s.properties,
+                          {{"color", PropertyType::Vector},
+                           {"ambient", PropertyType::Number},
+                           {"diffuse", PropertyType::Number},
+                           {"specular", PropertyType::Number},
+                           {"shininess", PropertyType::Number},
+                           {"reflect", PropertyType::Number},
+                           {"transmit", PropertyType::Number},
+                           {"ior", PropertyType::Number},
+                           {"absorb", PropertyType::Vector},
+                           {"emit", PropertyType::Vector}},
+                          "material", s.loc, mSink);
+    const auto number = [&](const char* name, double& out) {
+        if (readNumber(b, name, out) && out < 0)
+            error(b.find(name)->valueLoc(), std::string("material ") + name + " must not be negative, got " +
+                                                formatNumber(out));
+    };
+    const auto colour = [&](const char* name, Vec3& out) {
+        if (readVector(b, name, out) && !nonNegative(out))
+            error(b.find(name)->valueLoc(), std::string("material ") + name + " must not have negative components, got " +
+                                                formatVector(out));
+    };
+    colour("color", m.color);
+    number("ambient", m.ambient);
+    number("diffuse", m.diffuse);
+    number("specular", m.specular);
+    number("shininess", m.shininess);
+    number("reflect", m.reflect);
+    number("transmit", m.transmit);
+    colour("absorb", m.absorb);
+    colour("emit", m.emit);
+    if (readNumber(b, "ior", m.ior) && !(m.ior > 0))
+        error(b.find("ior")->valueLoc(), "material ior must be positive, got " + formatNumber(m.ior));
+}
+
+void Lowering::lowerCamera(const Statement& s, CameraDesc& camera) {
+    const PropertyBlock b(s.properties,
+                          {{"eye", PropertyType::Vector},
+                           {"look_at", PropertyType::Vector},
+                           {"up", PropertyType::Vector},
+                           {"fov", PropertyType::Number}},
+                          "camera", s.loc, mSink);
+    bool ok = b.ok();
+    ok &= readVector(b, "eye", camera.eye);
+    ok &= readVector(b, "look_at", camera.lookAt);
+    ok &= readVector(b, "up", camera.up);
+    ok &= readNumber(b, "fov", camera.fovDegrees);
+    if (!ok) return;
+    const auto at = [&](const char* name) { return b.find(name) ? b.find(name)->valueLoc() : s.loc; };
+    if (!(camera.fovDegrees > 0 && camera.fovDegrees < 180))
+        error(at("fov"), "camera fov must be between 0 and 180 degrees (exclusive), got " +
+                             formatNumber(camera.fovDegrees),
+              "fov is the vertical field of view in degrees, e.g. 40");
+    const Vec3 view = camera.lookAt - camera.eye;
+    if (view == Vec3(0.0)) {
+        error(at("look_at"), "camera eye and look_at are the same point " + formatVector(camera.eye),
+              "look_at is the point the camera looks toward");
+        return;
+    }
+    if (camera.up == Vec3(0.0)) {
+        error(at("up"), "camera up must not be zero", "up is usually <0, 1, 0>");
+        return;
+    }
+    const double sine = glm::length(glm::cross(glm::normalize(view), glm::normalize(camera.up)));
+    if (!(sine > 1e-9))
+        error(at("up"), "camera up " + formatVector(camera.up) + " is parallel to the view direction " +
+                            formatVector(view),
+              "choose an up vector that is not parallel to look_at - eye, e.g. <0, 0, 1>");
+}
+
+std::optional<Light> Lowering::lowerLight(const Statement& s) {
+    Light light;
+    std::vector<PropertySpec> specs{{"color", PropertyType::Vector}};
+    if (s.name == "point") {
+        light.kind = Light::Kind::Point;
+        specs.push_back({"at", PropertyType::Vector, true});
+        specs.push_back({"power", PropertyType::Number});
+    } else if (s.name == "directional") {
+        light.kind = Light::Kind::Directional;
+        specs.push_back({"direction", PropertyType::Vector, true});
+    } else {
+        std::string hint = didYouMean(s.name, {"point", "directional"});
+        error(s.nameLoc, "unknown light kind '" + s.name + "'", hint.empty() ? "lights are point or directional" : hint);
+        return std::nullopt;
+    }
+    const PropertyBlock b(s.properties, specs, s.name + " light", s.loc, mSink);
+    bool ok = b.ok();
+    ok &= readVector(b, "color", light.color);
+    if (light.kind == Light::Kind::Point) {
+        ok &= readVector(b, "at", light.position);
+        ok &= readNumber(b, "power", light.power);
+    } else {
+        ok &= readVector(b, "direction", light.direction);
+    }
+    if (!ok) return std::nullopt;
+    if (!nonNegative(light.color)) {
+        error(b.find("color")->valueLoc(), "light color must not have negative components, got " +
+                                               formatVector(light.color));
+        ok = false;
+    }
+    if (light.power < 0) {
+        error(b.find("power")->valueLoc(), "light power must not be negative, got " + formatNumber(light.power));
+        ok = false;
+    }
+    if (light.kind == Light::Kind::Directional && light.direction == Vec3(0.0)) {
+        error(b.find("direction")->valueLoc(), "light direction must not be zero");
+        ok = false;
+    }
+    return ok ? std::optional<Light>(light) : std::nullopt;
+}
+
+void Lowering::lowerMist(const Statement& s, Mist& mist) {
+    const PropertyBlock b(s.properties,
+                          {{"color", PropertyType::Vector}, {"distance", PropertyType::Number, true}}, "mist", s.loc,
+                          mSink);
+    bool ok = b.ok();
+    ok &= readVector(b, "color", mist.color);
+    ok &= readNumber(b, "distance", mist.distance);
+    if (!ok) return;
+    if (!nonNegative(mist.color))
+        error(b.find("color")->valueLoc(), "mist color must not have negative components, got " +
+                                               formatVector(mist.color));
+    if (!(mist.distance > 0))
+        error(b.find("distance")->valueLoc(), "mist distance must be positive, got " + formatNumber(mist.distance));
+    mist.enabled = true;
+}
+
+void Lowering::lowerRender(const Statement& s, RenderSettings& settings) {
+    const PropertyBlock b(s.properties,
+                          {{"width", PropertyType::Number},
+                           {"height", PropertyType::Number},
+                           {"spp", PropertyType::Number},
+                           {"max_depth", PropertyType::Number}},
+                          "render", s.loc, mSink);
+    readInteger(b, "width", 1, 32768, settings.width);
+    readInteger(b, "height", 1, 32768, settings.height);
+    readInteger(b, "spp", 1, 65536, settings.spp);
+    readInteger(b, "max_depth", 0, 1000, settings.maxDepth);
+}
+
+void Lowering::lowerBackground(const Statement& s, Vec3& background) {
+    const auto v = evaluate(*s.expr, nullptr);
+    if (!v) return;
+    if (v->type != Value::Type::Vector) {
+        error(s.expr->start, "background expects a colour vector, got " + typeName(v->type),
+              "write background <r, g, b>;");
+        return;
+    }
+    if (!nonNegative(v->vector)) {
+        error(s.expr->start, "background color must not have negative components, got " + formatVector(v->vector));
+        return;
+    }
+    background = v->vector;
+}
+
+}  // namespace kerf

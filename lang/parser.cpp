@@ -1,0 +1,431 @@
+// The recursive-descent parser. Each parse function consumes one construct; on a syntax error
+// it reports and throws SyntaxError, which the statement loop catches before resynchronising.
+#include "lang/parser.h"
+
+#include <algorithm>
+#include <array>
+
+namespace kerf {
+
+namespace {
+
+const std::array<const char*, 10> kStatementWords = {
+    "let", "solid", "object", "material", "camera", "light", "mist", "background", "render", "include"};
+const std::array<const char*, 4> kBooleanWords = {"union", "intersection", "difference", "xor"};
+const std::array<const char*, 5> kModifierWords = {"translate", "rotate", "scale", "matrix", "material"};
+
+template <size_t N>
+bool contains(const std::array<const char*, N>& words, const std::string& w) {
+    return std::any_of(words.begin(), words.end(), [&](const char* s) { return w == s; });
+}
+
+struct SyntaxError {};
+
+class Parser {
+public:
+    Parser(const std::vector<Token>& tokens, DiagnosticSink& sink) : mTokens(tokens), mSink(sink) {}
+
+    Program run() {
+        Program program;
+        while (peek().kind != TokenKind::End) {
+            if (accept(TokenKind::Semicolon)) continue;  // an empty statement
+            const size_t before = mPos;
+            try {
+                parseStatement(program);
+            } catch (const SyntaxError&) {
+                mNesting = 0;
+                synchronize();
+                if (mPos == before) next();  // always make progress
+            }
+        }
+        return program;
+    }
+
+private:
+    // ---- token access ----
+    const Token& peek(size_t ahead = 0) const {
+        return mTokens[std::min(mPos + ahead, mTokens.size() - 1)];
+    }
+    bool check(TokenKind k) const { return peek().kind == k; }
+    bool checkWord(const char* w) const { return check(TokenKind::Identifier) && peek().text == w; }
+    const Token& next() {
+        const Token& t = mTokens[mPos];
+        if (t.kind == TokenKind::LBrace) ++mBraceDepth;
+        if (t.kind == TokenKind::RBrace) --mBraceDepth;
+        if (mPos + 1 < mTokens.size()) ++mPos;
+        return t;
+    }
+    bool accept(TokenKind k) {
+        if (!check(k)) return false;
+        next();
+        return true;
+    }
+
+    /// Reports (unless the lexer already reported the token here) and abandons the statement.
+    [[noreturn]] void fail(const SourceLoc& at, std::string message, std::string hint = {}) {
+        if (!check(TokenKind::Error)) mSink.error(at, std::move(message), std::move(hint));
+        throw SyntaxError{};
+    }
+    /// Just after the previous token: where a missing ';' belongs.
+    SourceLoc afterPrevious() const {
+        if (mPos == 0) return peek().loc;
+        SourceLoc at = mTokens[mPos - 1].loc;
+        at.col += mTokens[mPos - 1].length;
+        return at;
+    }
+    const Token& expect(TokenKind k, const std::string& context) {
+        if (check(k)) return next();
+        const SourceLoc at = k == TokenKind::Semicolon ? afterPrevious() : peek().loc;
+        fail(at, "expected " + describe(k) + " " + context + ", found " + describe(peek()));
+    }
+    const Token& expectName(const std::string& context) {
+        if (check(TokenKind::Identifier)) return next();
+        fail(peek().loc, "expected " + context + ", found " + describe(peek()));
+    }
+
+    /// Counts one level of recursion; deeper than kMaxNesting is an error.
+    struct NestingGuard {
+        Parser& p;
+        explicit NestingGuard(Parser& parser) : p(parser) {
+            if (++p.mNesting > kMaxNesting)
+                p.fail(p.peek().loc, "nesting too deep (more than " + std::to_string(kMaxNesting) + " levels)",
+                       "split the model into named solids or lets");
+        }
+        ~NestingGuard() { --p.mNesting; }
+    };
+
+    bool startsStatement() const {
+        if (!check(TokenKind::Identifier) || !contains(kStatementWords, peek().text)) return false;
+        if (peek().text == "material")  // `material m {` defines; `material m` alone is a modifier
+            return peek(1).kind == TokenKind::Identifier && peek(2).kind == TokenKind::LBrace;
+        return true;
+    }
+
+    /// Skips to the end of the broken statement: past a ';' at statement level, or to the next
+    /// statement keyword at statement level or at the start of a line inside braces.
+    void synchronize() {
+        while (!check(TokenKind::End)) {
+            if (mBraceDepth <= 0) {
+                if (check(TokenKind::Semicolon) || check(TokenKind::RBrace)) {
+                    next();
+                    break;
+                }
+                if (startsStatement()) break;
+            } else if (peek().firstOnLine && startsStatement()) {
+                break;
+            }
+            next();
+        }
+        mBraceDepth = 0;
+    }
+
+    // ---- statements ----
+    void parseStatement(Program& program) {
+        const Token& t = peek();
+        if (t.kind != TokenKind::Identifier || !contains(kStatementWords, t.text)) {
+            std::string hint = "a statement starts with let, solid, object, material, camera, light, "
+                               "mist, background, render or include";
+            if (t.kind == TokenKind::Identifier && peek(1).kind == TokenKind::LBrace)
+                hint = "to put a solid into the scene write 'object " + t.text + " { … };'";
+            fail(t.loc, "expected a statement, found " + describe(t), hint);
+        }
+        Statement s;
+        s.loc = t.loc;
+        try {
+            parseStatementBody(s);
+        } catch (const SyntaxError&) {
+            // Keep a broken definition's name, so its uses are not reported as undefined too.
+            const bool defines = s.kind == Statement::Kind::Let || s.kind == Statement::Kind::SolidDef ||
+                                 s.kind == Statement::Kind::Material;
+            if (defines && !s.name.empty()) {
+                s.broken = true;
+                program.statements.push_back(std::move(s));
+            }
+            throw;
+        }
+        program.statements.push_back(std::move(s));
+    }
+
+    void parseStatementBody(Statement& s) {
+        const std::string word = next().text;
+        if (word == "let") {
+            s.kind = Statement::Kind::Let;
+            parseDefinedName(s, "let");
+            expect(TokenKind::Equals, "after the name of the let");
+            s.expr = parseExpr();
+            expect(TokenKind::Semicolon, "after the let statement");
+        } else if (word == "solid") {
+            s.kind = Statement::Kind::SolidDef;
+            parseDefinedName(s, "solid");
+            expect(TokenKind::Equals, "after the name of the solid");
+            s.solid = parseSolid(true);
+            expect(TokenKind::Semicolon, "after the solid statement");
+        } else if (word == "object") {
+            s.kind = Statement::Kind::Object;
+            s.solid = parseSolid(true);
+            expect(TokenKind::Semicolon, "after the object statement");
+        } else if (word == "material") {
+            s.kind = Statement::Kind::Material;
+            parseDefinedName(s, "material");
+            parseBlock(s.properties);
+        } else if (word == "light") {
+            s.kind = Statement::Kind::Light;
+            s.nameLoc = peek().loc;
+            const Token& kind = expectName("a light kind (point or directional)");
+            s.name = kind.text;
+            parseBlock(s.properties);
+        } else if (word == "camera" || word == "mist" || word == "render") {
+            s.kind = word == "camera" ? Statement::Kind::Camera
+                     : word == "mist" ? Statement::Kind::Mist : Statement::Kind::Render;
+            parseBlock(s.properties);
+        } else if (word == "background") {
+            s.kind = Statement::Kind::Background;
+            s.expr = parseExpr();
+            expect(TokenKind::Semicolon, "after the background statement");
+        } else {  // include
+            s.kind = Statement::Kind::Include;
+            s.nameLoc = peek().loc;
+            s.name = expect(TokenKind::String, "after include (the file name in quotes)").text;
+            expect(TokenKind::Semicolon, "after the include statement");
+        }
+    }
+
+    void parseDefinedName(Statement& s, const std::string& what) {
+        const Token& name = expectName("the name of the " + what);
+        s.name = name.text;
+        s.nameLoc = name.loc;
+        if (isReservedWord(name.text) || (what == "let" && (name.text == "x" || name.text == "y" || name.text == "z")))
+            mSink.error(name.loc, "'" + name.text + "' is a reserved word and cannot name a " + what);
+    }
+
+    /// `{ name value … }`; an optional ';' may follow the block.
+    void parseBlock(std::vector<Property>& properties) {
+        const SourceLoc open = peek().loc;
+        expect(TokenKind::LBrace, "to open the block");
+        parseProperties(properties, open);
+        accept(TokenKind::Semicolon);
+    }
+
+    void parseProperties(std::vector<Property>& properties, const SourceLoc& open) {
+        while (!accept(TokenKind::RBrace)) {
+            if (check(TokenKind::End) || (peek().firstOnLine && startsStatement()))
+                fail(peek().loc, "expected '}' to close the block opened at line " + std::to_string(open.line) +
+                                     ", found " + describe(peek()));
+            const Token& name = expectName("a property name or '}'");
+            Property p;
+            p.name = name.text;
+            p.loc = name.loc;
+            if (check(TokenKind::Identifier) && peek(1).kind == TokenKind::LBrace)
+                p.solid = parseSolid(false);
+            else
+                p.expr = parseExpr();
+            properties.push_back(std::move(p));
+        }
+    }
+
+    // ---- solids ----
+    SolidPtr parseSolid(bool withModifiers) {
+        NestingGuard guard(*this);
+        auto solid = std::make_unique<Solid>();
+        const Token& t = peek();
+        solid->loc = t.loc;
+        if (t.kind != TokenKind::Identifier || contains(kModifierWords, t.text) ||
+            (contains(kStatementWords, t.text) && peek(1).kind != TokenKind::LBrace))
+            fail(t.loc, "expected a solid, found " + describe(t));
+        solid->name = next().text;
+        if (check(TokenKind::LBrace)) {
+            const SourceLoc open = peek().loc;
+            next();
+            if (contains(kBooleanWords, solid->name)) {
+                solid->kind = Solid::Kind::Boolean;
+                while (!accept(TokenKind::RBrace)) {
+                    if (check(TokenKind::End) || (peek().firstOnLine && startsStatement()))
+                        fail(peek().loc, "expected '}' to close the " + solid->name + " opened at line " +
+                                             std::to_string(open.line) + ", found " + describe(peek()));
+                    solid->children.push_back(parseSolid(true));
+                }
+            } else {
+                solid->kind = Solid::Kind::Primitive;
+                parseProperties(solid->properties, open);
+            }
+        } else {
+            solid->kind = Solid::Kind::Reference;
+        }
+        if (withModifiers) parseModifiers(*solid);
+        return solid;
+    }
+
+    void parseModifiers(Solid& solid) {
+        while (check(TokenKind::Identifier)) {
+            const std::string& word = peek().text;
+            Modifier m;
+            m.loc = peek().loc;
+            if (word == "translate" || word == "rotate" || word == "scale") {
+                m.kind = word == "translate" ? Modifier::Kind::Translate
+                         : word == "rotate" ? Modifier::Kind::Rotate : Modifier::Kind::Scale;
+                next();
+                m.args.push_back(parseExpr());
+            } else if (word == "matrix") {
+                m.kind = Modifier::Kind::Matrix;
+                next();
+                parseMatrix(m);
+            } else if (word == "material" && peek(1).kind != TokenKind::Identifier) {
+                fail(peek(1).loc, "expected a material name after 'material', found " + describe(peek(1)));
+            } else if (word == "material" && peek(2).kind != TokenKind::LBrace) {
+                m.kind = Modifier::Kind::Material;
+                next();
+                m.materialLoc = peek().loc;
+                m.material = next().text;
+            } else {
+                break;
+            }
+            solid.modifiers.push_back(std::move(m));
+        }
+    }
+
+    /// `[a, b, …]` with commas, or `[a b …]` separated by blanks, where each entry is a single
+    /// term (so `[1 -1 …]` is two entries).
+    void parseMatrix(Modifier& m) {
+        const SourceLoc open = peek().loc;
+        expect(TokenKind::LBracket, "after matrix");
+        const bool commas = bracketHasCommas();
+        while (!accept(TokenKind::RBracket)) {
+            if (check(TokenKind::End) || check(TokenKind::Semicolon) || check(TokenKind::RBrace))
+                fail(peek().loc, "expected ']' to close the matrix opened at line " + std::to_string(open.line) +
+                                     ", found " + describe(peek()));
+            if (commas && !m.args.empty()) expect(TokenKind::Comma, "between matrix entries");
+            m.args.push_back(commas ? parseExpr() : parseUnary());
+        }
+    }
+
+    bool bracketHasCommas() const {
+        int depth = 0;
+        for (size_t i = mPos; i < mTokens.size(); ++i) {
+            switch (mTokens[i].kind) {
+                case TokenKind::LParen: case TokenKind::LBracket: case TokenKind::Less: ++depth; break;
+                case TokenKind::RParen: case TokenKind::Greater: --depth; break;
+                case TokenKind::RBracket: if (depth-- == 0) return false; break;
+                case TokenKind::Comma: if (depth == 0) return true; break;
+                case TokenKind::Semicolon: case TokenKind::RBrace: case TokenKind::End: return false;
+                default: break;
+            }
+        }
+        return false;
+    }
+
+    // ---- expressions ----
+    ExprPtr parseExpr() {
+        ExprPtr lhs = parseTerm();
+        while (check(TokenKind::Plus) || check(TokenKind::Minus)) {
+            const Token& op = next();
+            lhs = binary(op, std::move(lhs), parseTerm());
+        }
+        return lhs;
+    }
+
+    ExprPtr parseTerm() {
+        ExprPtr lhs = parseUnary();
+        while (check(TokenKind::Star) || check(TokenKind::Slash)) {
+            const Token& op = next();
+            lhs = binary(op, std::move(lhs), parseUnary());
+        }
+        return lhs;
+    }
+
+    /// Unary minus binds looser than '^', as in mathematics: -2^2 = -4.
+    ExprPtr parseUnary() {
+        NestingGuard guard(*this);
+        if (check(TokenKind::Minus)) {
+            auto e = std::make_unique<Expr>();
+            e->kind = Expr::Kind::Negate;
+            e->loc = e->start = next().loc;
+            e->args.push_back(parseUnary());
+            e->depth = e->args[0]->depth + 1;
+            return e;
+        }
+        ExprPtr base = parsePrimary();
+        if (check(TokenKind::Caret)) {
+            const Token& op = next();
+            return binary(op, std::move(base), parseUnary());  // right associative
+        }
+        return base;
+    }
+
+    ExprPtr binary(const Token& op, ExprPtr lhs, ExprPtr rhs) {
+        auto e = std::make_unique<Expr>();
+        e->kind = Expr::Kind::Binary;
+        e->loc = op.loc;
+        e->start = lhs->start;
+        e->op = op.text[0];
+        e->depth = std::max(lhs->depth, rhs->depth) + 1;
+        if (e->depth > kMaxExpressionDepth)
+            fail(op.loc, "expression too deeply nested (more than " + std::to_string(kMaxExpressionDepth) +
+                             " levels)", "split it with lets");
+        e->args.push_back(std::move(lhs));
+        e->args.push_back(std::move(rhs));
+        return e;
+    }
+
+    ExprPtr parsePrimary() {
+        auto e = std::make_unique<Expr>();
+        const Token& t = peek();
+        e->loc = e->start = t.loc;
+        if (t.kind == TokenKind::Number) {
+            e->kind = Expr::Kind::Number;
+            e->number = t.number;
+            e->name = t.text;
+            next();
+        } else if (t.kind == TokenKind::Identifier) {
+            e->name = next().text;
+            e->kind = Expr::Kind::Name;
+            if (accept(TokenKind::LParen)) {
+                e->kind = Expr::Kind::Call;
+                if (!accept(TokenKind::RParen)) {
+                    do e->args.push_back(parseExpr());
+                    while (accept(TokenKind::Comma));
+                    expect(TokenKind::RParen, "to close the arguments of " + e->name);
+                }
+            }
+        } else if (t.kind == TokenKind::LParen) {
+            next();
+            e = parseExpr();
+            e->start = t.loc;
+            expect(TokenKind::RParen, "to close '('");
+            return e;
+        } else if (t.kind == TokenKind::Less) {
+            next();
+            e->kind = Expr::Kind::Vector;
+            e->args.push_back(parseExpr());
+            expect(TokenKind::Comma, "after the x component of the vector");
+            e->args.push_back(parseExpr());
+            expect(TokenKind::Comma, "after the y component of the vector");
+            e->args.push_back(parseExpr());
+            expect(TokenKind::Greater, "to close the vector");
+        } else {
+            fail(t.loc, "expected an expression, found " + describe(t));
+        }
+        for (const ExprPtr& a : e->args) e->depth = std::max(e->depth, a->depth + 1);
+        return e;
+    }
+
+    const std::vector<Token>& mTokens;
+    DiagnosticSink& mSink;
+    size_t mPos = 0;
+    int mNesting = 0;
+    int mBraceDepth = 0;
+};
+
+}  // namespace
+
+bool isReservedWord(const std::string& word) {
+    static const std::array<const char*, 13> kOther = {
+        "sphere", "box", "cylinder", "cone", "torus", "halfspace", "implicit", "pi",
+        "union", "intersection", "difference", "xor", "matrix"};
+    return contains(kStatementWords, word) || contains(kModifierWords, word) || contains(kOther, word);
+}
+
+Program parse(const std::vector<Token>& tokens, DiagnosticSink& sink) {
+    return Parser(tokens, sink).run();
+}
+
+}  // namespace kerf

@@ -1,0 +1,52 @@
+// Matching a block's properties to its specs, with the errors users make most.
+#include "lang/properties.h"
+
+#include "lang/names.h"
+
+#include <stdexcept>
+
+namespace kerf {
+
+PropertyBlock::PropertyBlock(const std::vector<Property>& properties, std::vector<PropertySpec> specs,
+                             std::string what, const SourceLoc& blockLoc, DiagnosticSink& sink)
+    : mSpecs(std::move(specs)), mFound(mSpecs.size(), nullptr), mWhat(std::move(what)), mBlockLoc(blockLoc) {
+    std::vector<std::string> valid;
+    for (const PropertySpec& s : mSpecs) valid.emplace_back(s.name);
+    for (const Property& p : properties) {
+        size_t i = 0;
+        while (i < mSpecs.size() && p.name != mSpecs[i].name) ++i;
+        if (i == mSpecs.size()) {
+            std::string hint = didYouMean(p.name, valid);
+            hint += (hint.empty() ? "" : " ") + mWhat + " takes: " + joinNames(valid);
+            sink.error(p.loc, "unknown property '" + p.name + "' in " + mWhat, hint);
+            mOk = false;
+        } else if (mFound[i]) {
+            sink.error(p.loc, "property '" + p.name + "' given twice in " + mWhat,
+                       "first given at line " + std::to_string(mFound[i]->loc.line) + ", column " +
+                           std::to_string(mFound[i]->loc.col));
+            mOk = false;
+        } else {
+            mFound[i] = &p;
+        }
+    }
+    for (size_t i = 0; i < mSpecs.size(); ++i) {
+        if (mSpecs[i].required && !mFound[i]) {
+            sink.error(mBlockLoc, mWhat + " needs the property '" + std::string(mSpecs[i].name) + "'");
+            mOk = false;
+        }
+    }
+}
+
+const Property* PropertyBlock::find(const std::string& name) const {
+    for (size_t i = 0; i < mSpecs.size(); ++i)
+        if (name == mSpecs[i].name) return mFound[i];
+    return nullptr;
+}
+
+const PropertySpec& PropertyBlock::spec(const std::string& name) const {
+    for (const PropertySpec& s : mSpecs)
+        if (name == s.name) return s;
+    throw std::logic_error("PropertyBlock::spec: no property " + name);
+}
+
+}  // namespace kerf

@@ -1,0 +1,46 @@
+/// @file lang/properties.h
+/// @brief Checks the `name value` pairs of a block against what the block accepts: unknown
+/// names, repeated names and missing required names are reported here; values are evaluated
+/// by the Lowering.
+#pragma once
+
+#include "lang/ast.h"
+
+#include <string>
+#include <vector>
+
+namespace kerf {
+
+enum class PropertyType { Number, Vector, NumberOrVector, Solid, Function };
+
+struct PropertySpec {
+    const char* name;
+    PropertyType type;
+    bool required = false;
+};
+
+/// The properties of one block, matched to their specs.
+class PropertyBlock {
+public:
+    /// `what` names the block in messages ("sphere", "camera"); missing properties are reported
+    /// at `blockLoc`.
+    PropertyBlock(const std::vector<Property>& properties, std::vector<PropertySpec> specs,
+                  std::string what, const SourceLoc& blockLoc, DiagnosticSink& sink);
+
+    /// False when a property was unknown, repeated or missing.
+    bool ok() const { return mOk; }
+    /// The property given for this spec name, or null.
+    const Property* find(const std::string& name) const;
+    const PropertySpec& spec(const std::string& name) const;
+    const std::string& what() const { return mWhat; }
+    const SourceLoc& blockLoc() const { return mBlockLoc; }
+
+private:
+    std::vector<PropertySpec> mSpecs;
+    std::vector<const Property*> mFound;  // parallel to mSpecs
+    std::string mWhat;
+    SourceLoc mBlockLoc;
+    bool mOk = true;
+};
+
+}  // namespace kerf

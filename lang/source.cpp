@@ -1,0 +1,116 @@
+// Reading model files and rejecting anything that is not UTF-8 text, at the first bad byte.
+#include "lang/source.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace kerf {
+
+SourceLoc locationOf(const SourceText& source, size_t offset) {
+    SourceLoc loc;
+    loc.file = source.name;
+    loc.line = 1;
+    size_t lineStart = 0;
+    const std::string& t = *source.text;
+    for (size_t i = 0; i < offset && i < t.size(); ++i) {
+        if (t[i] == '\n') {
+            ++loc.line;
+            lineStart = i + 1;
+        }
+    }
+    loc.col = static_cast<int>(offset - lineStart) + 1;
+    return loc;
+}
+
+namespace {
+
+std::string hexByte(unsigned char c) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "0x%02X", c);
+    return buf;
+}
+
+/// Length of the valid UTF-8 sequence starting at s[i], or 0 if it is not valid
+/// (overlong forms, surrogates and code points above U+10FFFF are invalid).
+size_t utf8SequenceLength(const std::string& s, size_t i) {
+    const auto byte = [&](size_t k) { return static_cast<unsigned char>(s[k]); };
+    const unsigned char c = byte(i);
+    if (c < 0x80) return 1;
+    size_t n;
+    unsigned lo = 0x80, hi = 0xBF;  // allowed range of the second byte
+    if (c >= 0xC2 && c <= 0xDF) n = 2;
+    else if (c >= 0xE0 && c <= 0xEF) {
+        n = 3;
+        if (c == 0xE0) lo = 0xA0;
+        if (c == 0xED) hi = 0x9F;
+    } else if (c >= 0xF0 && c <= 0xF4) {
+        n = 4;
+        if (c == 0xF0) lo = 0x90;
+        if (c == 0xF4) hi = 0x8F;
+    } else {
+        return 0;
+    }
+    if (i + n > s.size()) return 0;
+    if (byte(i + 1) < lo || byte(i + 1) > hi) return 0;
+    for (size_t k = 2; k < n; ++k)
+        if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
+    return n;
+}
+
+}  // namespace
+
+bool checkSourceText(const SourceText& source, DiagnosticSink& sink) {
+    const std::string& t = *source.text;
+    for (size_t i = 0; i < t.size();) {
+        const unsigned char c = static_cast<unsigned char>(t[i]);
+        if (c == 0) {
+            sink.error(locationOf(source, i), "file contains a NUL byte; is it a binary file?",
+                       "model files are UTF-8 text");
+            return false;
+        }
+        const bool allowedControl = c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+        if ((c < 0x20 && !allowedControl) || c == 0x7F) {
+            sink.error(locationOf(source, i),
+                       "file contains the control character " + hexByte(c) + "; is it a binary file?",
+                       "model files are UTF-8 text");
+            return false;
+        }
+        const size_t n = utf8SequenceLength(t, i);
+        if (n == 0) {
+            sink.error(locationOf(source, i), "invalid UTF-8 byte " + hexByte(c),
+                       "model files are UTF-8 text; re-save the file as UTF-8");
+            return false;
+        }
+        i += n;
+    }
+    return true;
+}
+
+std::optional<std::string> readFileBytes(const std::string& path, std::string& why) {
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status)) {
+        why = "no such file";
+        return std::nullopt;
+    }
+    if (std::filesystem::is_directory(status)) {
+        why = "it is a directory";
+        return std::nullopt;
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        why = "cannot be opened";
+        return std::nullopt;
+    }
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    if (in.bad()) {
+        why = "read error";
+        return std::nullopt;
+    }
+    return bytes.str();
+}
+
+}  // namespace kerf

@@ -1,0 +1,37 @@
+/// @file tests/lang/lang_test_util.h
+/// @brief Helpers for the lang tests: compile text and look at the diagnostics it produced.
+#pragma once
+
+#include "lang/compile.h"
+
+#include <catch2/catch.hpp>
+
+#include <optional>
+#include <string>
+
+namespace kerf::test {
+
+struct Compiled {
+    DiagnosticSink sink;
+    std::optional<Scene> scene;
+};
+
+inline Compiled compileText(const std::string& text, const std::string& name = "test.kerf") {
+    Compiled c;
+    c.scene = compileString(text, name, c.sink);
+    return c;
+}
+
+/// The text compiles with exactly one error, at line:col, whose message contains `message`.
+inline void requireOneError(const std::string& text, int line, int col, const std::string& message) {
+    const Compiled c = compileText(text);
+    INFO(c.sink.format());
+    REQUIRE_FALSE(c.scene.has_value());
+    REQUIRE(c.sink.errorCount() == 1);
+    const Diagnostic& d = c.sink.diagnostics().front();
+    CHECK_THAT(d.message, Catch::Matchers::Contains(message));
+    CHECK(d.loc.line == line);
+    CHECK(d.loc.col == col);
+}
+
+}  // namespace kerf::test
