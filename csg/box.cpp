@@ -1,6 +1,8 @@
 // The axis-aligned box: a slab test that knows which face each boundary lies on.
+#include "csg/polynomial_isolation.h"
 #include "csg/primitive.h"
 #include "csg/solids.h"
+#include "csg/sphere_trace.h"
 
 #include <algorithm>
 
@@ -11,9 +13,13 @@ class Box final : public Primitive {
 public:
     Box(const Vec3& lo, const Vec3& hi) { mBounds = {lo, hi}; }
 
-    void spans(const Ray& ray, double, double, TraceContext& ctx, SpanList& out) const override {
+    void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+               SpanList& out) const override {
         out.clear();
         ++ctx.stats.primitiveTests;
+        if (ctx.method == TraceMethod::Interval) return intervalSpans(ray, tmin, tmax, ctx, out);
+        if (ctx.method == TraceMethod::SphereTrace)
+            return sphereTracedSpans(ray, tmin, tmax, ctx, out);
         const Vec3& lo = mBounds.lo;
         const Vec3& hi = mBounds.hi;
         // Slabs combined with min/max rather than data-dependent branches; the faces are
@@ -71,6 +77,70 @@ public:
         const Interval y = max(lo.y - b.y, b.y - hi.y);
         const Interval z = max(lo.z - b.z, b.z - hi.z);
         return max(max(x, y), z);
+    }
+
+private:
+    /// Interval isolation of the six linear slab functions in turn, each narrowing the range.
+    /// The search window is the ray's chord through the box's circumscribed ball (a bounding
+    /// volume, not the slab test), so it is finite and its ends lie outside the box.
+    void intervalSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                       SpanList& out) const {
+        const Vec3& d = ray.dir;
+        const double dd = glm::dot(d, d);
+        if (!(dd > 0.0)) return;
+        const Vec3 c = mBounds.center(), f = ray.origin - c;
+        const double radius = 0.5 * glm::length(mBounds.extent()) * (1.0 + 0x1p-40);
+        const double tc = -glm::dot(f, d) / dd;
+        const Vec3 l = f + tc * d;
+        if (glm::dot(l, l) > radius * radius) return;
+        const double half = radius / std::sqrt(dd);
+        FacedRange r{std::max(tmin, tc - half), std::min(tmax, tc + half)};
+        if (!(r.lo <= r.hi)) return;
+        const double tLo = r.lo, tHi = r.hi;
+        // Face 1 + 2a: the lo face of axis a (lo − x ≤ 0); face 2 + 2a: the hi face.
+        for (int a = 0; a < 3; ++a) {
+            const double o = ray.origin[a], da = ray.dir[a];
+            if (!clipToLinear({0.0, -da, mBounds.lo[a] - o}, 1 + 2 * a, 0.0, ctx, r)) return;
+            if (!clipToLinear({0.0, da, o - mBounds.hi[a]}, 2 + 2 * a, 0.0, ctx, r)) return;
+        }
+        const auto at = [&](double t, int face, double clipT) {
+            if (face == 0) return clipBoundary(clipT);
+            Vec3 n(0.0);
+            n[(face - 1) / 2] = face % 2 == 1 ? -1.0 : 1.0;
+            return rootBoundary(t, n, ctx);
+        };
+        out.push_back({at(r.lo, r.loFace, tLo), at(r.hi, r.hiFace, tHi)});
+        dropThinSpans(out, ctx.relTolerance);
+    }
+
+    /// Sphere tracing of value() (Lipschitz 1) within the bounds.
+    void sphereTracedSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                           SpanList& out) const {
+        double t0 = tmin, t1 = tmax;
+        if (!mBounds.clipRay(ray, t0, t1) || !std::isfinite(t0)) return;
+        sphereTraceSpans([this](const Vec3& p) { return Box::value(p); }, ray, t0, t1, 1.0,
+                         t0 > tmin, ctx,
+                         [&](double t) { return rootBoundary(t, faceNormal(ray.at(t)), ctx); },
+                         [](double t, bool) { return clipBoundary(t); }, out);
+    }
+
+    /// The outward normal of the face whose slab distance is largest at p (value()'s gradient).
+    Vec3 faceNormal(const Vec3& p) const {
+        double best = -kInf;
+        Vec3 n(0.0);
+        for (int a = 0; a < 3; ++a) {
+            const double lo = mBounds.lo[a] - p[a], hi = p[a] - mBounds.hi[a];
+            if (lo > best) best = lo, n = Vec3(0.0), n[a] = -1.0;
+            if (hi > best) best = hi, n = Vec3(0.0), n[a] = 1.0;
+        }
+        return n;
+    }
+
+    /// An end of the searched range where the ray is inside: not a surface.
+    static Boundary clipBoundary(double t) {
+        Boundary b;
+        b.t = t;
+        return b;
     }
 };
 

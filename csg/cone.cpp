@@ -1,9 +1,11 @@
 // The capped cone (frustum) around an arbitrary axis. The lateral surface is the quadric
 // |p⊥|² = (r1 + k·z)², which has two nappes; the slab between the caps keeps only the real one,
 // since r1 + k·z ≥ 0 for 0 ≤ z ≤ L.
+#include "csg/polynomial_isolation.h"
 #include "csg/primitive.h"
 #include "csg/quadratic.h"
 #include "csg/solids.h"
+#include "csg/sphere_trace.h"
 
 #include <algorithm>
 
@@ -37,9 +39,13 @@ public:
         }
     }
 
-    void spans(const Ray& ray, double, double, TraceContext& ctx, SpanList& out) const override {
+    void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+               SpanList& out) const override {
         out.clear();
         ++ctx.stats.primitiveTests;
+        if (ctx.method == TraceMethod::Interval) return intervalSpans(ray, tmin, tmax, ctx, out);
+        if (ctx.method == TraceMethod::SphereTrace)
+            return sphereTracedSpans(ray, tmin, tmax, ctx, out);
         const Vec3& d = ray.dir;
         const Vec3 f = ray.origin - mBase;
         // Local coordinates: x, y across the axis, z along it from the base.
@@ -149,11 +155,77 @@ private:
 
     /// Outward normal of |p⊥| − (r1 + k·z) at the ray's point t: p̂⊥ − k·u, scaled by |p⊥|.
     Boundary sideBoundary(double t, double fx, double fy, double dx, double dy) const {
-        const double px = fx + t * dx, py = fy + t * dy;
+        return boundary(t, sideNormal(fx + t * dx, fy + t * dy));
+    }
+    /// p̂⊥ − k·u scaled by |p⊥|, at local (px, py) across the axis (any common scale).
+    Vec3 sideNormal(double px, double py) const {
         const double rho = std::sqrt(px * px + py * py);
-        if (rho == 0.0)  // the apex: point the normal out of the tip
-            return boundary(t, mSlope > 0.0 ? -mAxis : mAxis);
-        return boundary(t, px * mE1 + py * mE2 - (mSlope * rho) * mAxis);
+        if (rho == 0.0) return mSlope > 0.0 ? -mAxis : mAxis;  // the apex: out of the tip
+        return px * mE1 + py * mE2 - (mSlope * rho) * mAxis;
+    }
+
+    /// Interval isolation of the cap slab's two linear functions and the lateral quadric
+    /// (csg/polynomial_isolation.h), normalised by the radius of the ball around the axis'
+    /// middle that holds the frustum, s measured from the ray's point nearest that middle.
+    void intervalSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                       SpanList& out) const {
+        const Vec3& d = ray.dir;
+        const double dd = glm::dot(d, d);
+        if (!(dd > 0.0)) return;
+        const Vec3 f = ray.origin - mBase;
+        const Vec3 fl(glm::dot(f, mE1), glm::dot(f, mE2), glm::dot(f, mAxis));
+        const Vec3 dl(glm::dot(d, mE1), glm::dot(d, mE2), glm::dot(d, mAxis));
+        const double half = 0.5 * mLength, rMax = std::max(mR1, mR2);
+        const double ts = -(fl.x * dl.x + fl.y * dl.y + (fl.z - half) * dl.z) / dd;
+        const double scale = std::sqrt(half * half + rMax * rMax), inv = 1.0 / scale;
+        const double len = std::sqrt(dd), sPerT = len * inv;
+        const FrustumAlongRay fr{(fl + ts * dl) * inv, dl / len, mR1 * inv, mSlope,
+                                 mLength * inv};
+        const double sMin = (tmin - ts) * sPerT, sMax = (tmax - ts) * sPerT;
+        const auto at = [&](double sv, int face, double windowT) {
+            if (face == kFrustumWindow) {
+                Boundary b;
+                b.t = windowT;
+                return b;
+            }
+            const double t = ts + sv / sPerT;
+            if (face != kFrustumLateral)
+                return rootBoundary(t, face == kFrustumTop ? mAxis : -mAxis, ctx);
+            const Vec3 p = fr.g + sv * fr.u;
+            return rootBoundary(t, sideNormal(p.x, p.y), ctx);
+        };
+        frustumSpans(fr, sMin, sMax, ts * sPerT, ctx,
+                     [&](double sIn, int fIn, double sOut, int fOut) {
+                         out.push_back({at(sIn, fIn, sIn == sMin ? tmin : ts + sIn / sPerT),
+                                        at(sOut, fOut, sOut == sMax ? tmax : ts + sOut / sPerT)});
+                     });
+        dropThinSpans(out, ctx.relTolerance);
+    }
+
+    /// Sphere tracing of value() within the bounds: Lipschitz 1, since the lateral term's
+    /// gradient (p̂⊥, −k) has length √(1 + k²) and is divided by it.
+    void sphereTracedSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                           SpanList& out) const {
+        double t0 = tmin, t1 = tmax;
+        if (!mBounds.clipRay(ray, t0, t1) || !std::isfinite(t0)) return;
+        sphereTraceSpans([this](const Vec3& p) { return Cone::value(p); }, ray, t0, t1, 1.0,
+                         t0 > tmin, ctx,
+                         [&](double t) { return rootBoundary(t, gradient(ray.at(t)), ctx); },
+                         [](double t, bool) {
+                             Boundary b;
+                             b.t = t;
+                             return b;
+                         },
+                         out);
+    }
+
+    /// The gradient of value()'s largest term at p: the lateral normal, or a cap's normal.
+    Vec3 gradient(const Vec3& p) const {
+        const Vec3 q = p - mBase;
+        const double x = glm::dot(q, mE1), y = glm::dot(q, mE2), z = glm::dot(q, mAxis);
+        const double side = (std::sqrt(x * x + y * y) - (mR1 + mSlope * z)) * mLateralScale;
+        if (side >= -z && side >= z - mLength) return sideNormal(x, y);
+        return -z > z - mLength ? -mAxis : mAxis;
     }
 
     /// e1, e2 with (e1, e2, u) right-handed orthonormal (Duff et al., JCGT 2017); exact

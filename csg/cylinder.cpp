@@ -1,8 +1,10 @@
 // The capped cylinder around an arbitrary axis: a 2-D Haines-style quadratic across the axis
 // intersected with the slab between the caps.
+#include "csg/polynomial_isolation.h"
 #include "csg/primitive.h"
 #include "csg/quadratic.h"
 #include "csg/solids.h"
+#include "csg/sphere_trace.h"
 
 #include <algorithm>
 
@@ -32,9 +34,13 @@ public:
         }
     }
 
-    void spans(const Ray& ray, double, double, TraceContext& ctx, SpanList& out) const override {
+    void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+               SpanList& out) const override {
         out.clear();
         ++ctx.stats.primitiveTests;
+        if (ctx.method == TraceMethod::Interval) return intervalSpans(ray, tmin, tmax, ctx, out);
+        if (ctx.method == TraceMethod::SphereTrace)
+            return sphereTracedSpans(ray, tmin, tmax, ctx, out);
         const Vec3& d = ray.dir;
         const Vec3 f = ray.origin - mBase;
         // Local coordinates: x, y across the axis, z along it from the base.
@@ -115,6 +121,69 @@ public:
 private:
     Boundary capBoundary(double t, int cap) const {
         return boundary(t, cap > 0 ? mAxis : -mAxis);
+    }
+
+    /// Interval isolation of the cap slab's two linear functions and the radial quadratic
+    /// (csg/polynomial_isolation.h), normalised by the radius of the ball around the axis'
+    /// middle that holds the cylinder, s measured from the ray's point nearest that middle.
+    void intervalSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                       SpanList& out) const {
+        const Vec3& d = ray.dir;
+        const double dd = glm::dot(d, d);
+        if (!(dd > 0.0)) return;
+        const Vec3 f = ray.origin - mBase;
+        const Vec3 fl(glm::dot(f, mE1), glm::dot(f, mE2), glm::dot(f, mAxis));
+        const Vec3 dl(glm::dot(d, mE1), glm::dot(d, mE2), glm::dot(d, mAxis));
+        const double half = 0.5 * mLength;
+        const double ts = -(fl.x * dl.x + fl.y * dl.y + (fl.z - half) * dl.z) / dd;
+        const double scale = std::sqrt(half * half + mRadius2), inv = 1.0 / scale;
+        const double len = std::sqrt(dd), sPerT = len * inv;
+        const FrustumAlongRay fr{(fl + ts * dl) * inv, dl / len, mRadius * inv, 0.0,
+                                 mLength * inv};
+        const double sMin = (tmin - ts) * sPerT, sMax = (tmax - ts) * sPerT;
+        const auto at = [&](double sv, int face, double windowT) {
+            if (face == kFrustumWindow) {
+                Boundary b;
+                b.t = windowT;
+                return b;
+            }
+            const double t = ts + sv / sPerT;
+            if (face != kFrustumLateral)
+                return rootBoundary(t, face == kFrustumTop ? mAxis : -mAxis, ctx);
+            const Vec3 p = fr.g + sv * fr.u;
+            return rootBoundary(t, p.x * mE1 + p.y * mE2, ctx);
+        };
+        frustumSpans(fr, sMin, sMax, ts * sPerT, ctx,
+                     [&](double sIn, int fIn, double sOut, int fOut) {
+                         out.push_back({at(sIn, fIn, sIn == sMin ? tmin : ts + sIn / sPerT),
+                                        at(sOut, fOut, sOut == sMax ? tmax : ts + sOut / sPerT)});
+                     });
+        dropThinSpans(out, ctx.relTolerance);
+    }
+
+    /// Sphere tracing of value() (Lipschitz 1) within the bounds.
+    void sphereTracedSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                           SpanList& out) const {
+        double t0 = tmin, t1 = tmax;
+        if (!mBounds.clipRay(ray, t0, t1) || !std::isfinite(t0)) return;
+        sphereTraceSpans([this](const Vec3& p) { return Cylinder::value(p); }, ray, t0, t1, 1.0,
+                         t0 > tmin,
+                         ctx, [&](double t) { return rootBoundary(t, gradient(ray.at(t)), ctx); },
+                         [](double t, bool) {
+                             Boundary b;
+                             b.t = t;
+                             return b;
+                         },
+                         out);
+    }
+
+    /// The gradient of value()'s largest term at p: across the axis, or a cap's normal.
+    Vec3 gradient(const Vec3& p) const {
+        const Vec3 q = p - mBase;
+        const double x = glm::dot(q, mE1), y = glm::dot(q, mE2), z = glm::dot(q, mAxis);
+        const double side = std::sqrt(x * x + y * y) - mRadius;
+        if (side >= -z && side >= z - mLength) return x * mE1 + y * mE2;
+        return -z > z - mLength ? -mAxis : mAxis;
     }
 
     /// e1, e2 with (e1, e2, u) right-handed orthonormal (Duff et al., JCGT 2017); exact

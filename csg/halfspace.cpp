@@ -1,7 +1,11 @@
 // The half-space dot(n, p) ≤ offset: one plane crossing per ray, computed with compensated
 // dot products so the hit is exact to a few ulps even for nearly parallel rays.
+#include "csg/polynomial_isolation.h"
 #include "csg/primitive.h"
 #include "csg/solids.h"
+#include "csg/sphere_trace.h"
+
+#include <algorithm>
 
 namespace kerf {
 namespace {
@@ -71,9 +75,13 @@ public:
         }
     }
 
-    void spans(const Ray& ray, double, double, TraceContext& ctx, SpanList& out) const override {
+    void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+               SpanList& out) const override {
         out.clear();
         ++ctx.stats.primitiveTests;
+        if (ctx.method == TraceMethod::Interval) return intervalSpans(ray, tmin, tmax, ctx, out);
+        if (ctx.method == TraceMethod::SphereTrace)
+            return sphereTracedSpans(ray, tmin, tmax, ctx, out);
         const double nd = dot2(mNormal, ray.dir, 0.0);
         const double g0 = dot2(mNormal, ray.origin, -mOffset);  // n·o − offset: > 0 outside
         if (nd == 0.0) {  // +0 or −0: parallel to the plane, inside everywhere or nowhere
@@ -101,6 +109,53 @@ public:
     }
 
 private:
+    /// Interval isolation of the linear g(t) = n·o − offset + t·n·d on [tmin, tmax]. An
+    /// infinite end is cut at a finite one beyond which g's interval extension has one sign:
+    /// from a finite base tb, |g| ≥ |g'|·|t − tb| − |g(tb)| > 0 once |t − tb| > 2|g(tb)/g'|.
+    void intervalSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                       SpanList& out) const {
+        const double g1 = dot2(mNormal, ray.dir, 0.0);
+        const double g0 = dot2(mNormal, ray.origin, -mOffset);
+        const QuadraticAlongRay g{0.0, g1, g0};
+        const double tb = std::isfinite(tmin) ? tmin : std::isfinite(tmax) ? tmax : 0.0;
+        double reach = g1 == 0.0 ? 1.0 : 2.0 * std::fabs(g.value(tb) / g1) + std::fabs(tb);
+        if (!(reach > 0.0)) reach = 1.0;  // a root exactly at tb = 0 (any window holds it)
+        reach = std::min(reach, 0x1p1020);  // finite even for a ray almost in the plane
+        const double w0 = std::max(tmin, tb - reach), w1 = std::min(tmax, tb + reach);
+        if (!(w0 <= w1)) return;
+        Crossings c;
+        findCrossings(g, w0, w1, 0.0, ctx, c);
+        // Window ends that are not the caller's range are cut where nothing changes.
+        bool inside = c.insideAtStart;
+        Boundary pending = endless(tmin);
+        for (int i = 0; i < c.count; ++i) {
+            const Boundary b = rootBoundary(c.s[i], mNormal, ctx);
+            if (c.entering[i])
+                pending = b;
+            else
+                out.push_back({pending, b});
+            inside = c.entering[i];
+        }
+        if (inside) out.push_back({pending, endless(tmax)});
+        dropThinSpans(out, ctx.relTolerance);
+    }
+
+    /// Sphere tracing of value() (normalised: Lipschitz 1). The march needs a finite start: an
+    /// unbounded tmin starts it at 0 (the comparison's rays start there).
+    void sphereTracedSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                           SpanList& out) const {
+        double t0 = tmin, t1 = tmax;
+        if (!mBounds.clipRay(ray, t0, t1)) return;
+        const bool outsideBefore = t0 > tmin;  // the bound's face is the plane itself
+        if (!std::isfinite(t0)) t0 = std::min(0.0, t1);
+        if (!std::isfinite(t0)) return;
+        sphereTraceSpans([this](const Vec3& p) { return HalfSpace::value(p); }, ray, t0, t1, 1.0,
+                         outsideBefore,
+                         ctx, [&](double t) { return rootBoundary(t, mNormal, ctx); },
+                         [&](double t, bool atStart) { return endless(atStart ? tmin : t); },
+                         out);
+    }
+
     /// An end of an unbounded span: not a surface, like a clip of the parameter range.
     static Boundary endless(double t) {
         Boundary b;

@@ -5,6 +5,7 @@
 #include "csg/primitive.h"
 #include "csg/root_isolation.h"
 #include "csg/solids.h"
+#include "csg/sphere_trace.h"
 
 namespace kerf {
 namespace {
@@ -30,6 +31,7 @@ class Implicit final : public Primitive {
 public:
     Implicit(std::shared_ptr<const Tape> f, const Bounds3& box) : mTape(std::move(f)) {
         mBounds = box;
+        mLipschitz = estimateLipschitz();
     }
 
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
@@ -41,6 +43,18 @@ public:
         const double t0 = std::max(boxIn, tmin), t1 = std::min(boxOut, tmax);
         // An unbounded range cannot be bisected; the language always gives a finite box.
         if (!(t0 <= t1) || !std::isfinite(t0) || !std::isfinite(t1)) return;
+        // The closed method already isolates f by intervals: Interval is the same.
+        if (ctx.method == TraceMethod::SphereTrace) {
+            sphereTraceSpans([this](const Vec3& p) { return Implicit::value(p); }, ray, t0, t1,
+                             mLipschitz, false, ctx,
+                             [&](double t) { return rootBoundary(t, normalAt(ray.at(t)), ctx); },
+                             [&](double t, bool atStart) {
+                                 return endBoundary(ray, t, atStart ? boxIn >= tmin : boxOut <= tmax,
+                                                    atStart);
+                             },
+                             out);
+            return;
+        }
 
         TapeAlongRay problem{*mTape, ray};
         bool inside = isInside(problem.value(t0));
@@ -82,6 +96,26 @@ public:
     }
 
 private:
+    /// For sphere tracing only: an ESTIMATE of the Lipschitz constant of value(), as POV-Ray
+    /// users set max_gradient: the largest |∇f| on a 16³ grid over the box, times 1.5, and at
+    /// least 1 (the box term). Not a bound: f can be steeper between the samples, and that is
+    /// where sphere tracing steps over the surface.
+    double estimateLipschitz() const {
+        if (!mBounds.finite()) return 1.0;
+        constexpr int kSamples = 16;
+        double maxGradient = 0.0;
+        for (int i = 0; i < kSamples; ++i)
+            for (int j = 0; j < kSamples; ++j)
+                for (int k = 0; k < kSamples; ++k) {
+                    const Vec3 w = Vec3(i, j, k) / double(kSamples - 1);
+                    Vec3 g;
+                    mTape->evalGradient(mBounds.lo + w * mBounds.extent(), g);
+                    const double n = glm::length(g);
+                    if (n > maxGradient) maxGradient = n;  // NaN samples are skipped
+                }
+        return std::max(1.0, 1.5 * maxGradient);
+    }
+
     Vec3 normalAt(const Vec3& p) const {
         Vec3 g;
         mTape->evalGradient(p, g);
@@ -112,6 +146,7 @@ private:
     }
 
     std::shared_ptr<const Tape> mTape;
+    double mLipschitz = 1.0;  ///< estimated, for TraceMethod::SphereTrace only
 };
 
 }  // namespace

@@ -1,7 +1,9 @@
 // The sphere: closed-form spans with the cancellation-free discriminant of Haines et al.
+#include "csg/polynomial_isolation.h"
 #include "csg/primitive.h"
 #include "csg/quadratic.h"
 #include "csg/solids.h"
+#include "csg/sphere_trace.h"
 
 namespace kerf {
 namespace {
@@ -17,9 +19,13 @@ public:
         }
     }
 
-    void spans(const Ray& ray, double, double, TraceContext& ctx, SpanList& out) const override {
+    void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+               SpanList& out) const override {
         out.clear();
         ++ctx.stats.primitiveTests;
+        if (ctx.method == TraceMethod::Interval) return intervalSpans(ray, tmin, tmax, ctx, out);
+        if (ctx.method == TraceMethod::SphereTrace)
+            return sphereTracedSpans(ray, tmin, tmax, ctx, out);
         const Vec3& d = ray.dir;
         const Vec3 f = ray.origin - mCenter;
         const double a = glm::dot(d, d);
@@ -55,6 +61,53 @@ public:
     }
 
 private:
+    /// Interval isolation of |o + t·d − c|² − r² on [tmin, tmax]. Normalised: lengths by r, the
+    /// parameter s by arc length from the ray's point nearest the centre (Haines et al.'s
+    /// conditioning), so q(s) = s² + 2(p0·u)·s + |p0|² − 1 and the ball is |s| ≤ 1.
+    void intervalSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                       SpanList& out) const {
+        const Vec3& d = ray.dir;
+        const double dd = glm::dot(d, d);
+        if (!(dd > 0.0)) return;
+        const Vec3 f = ray.origin - mCenter;
+        const double tc = -glm::dot(f, d) / dd, len = std::sqrt(dd);
+        const double inv = 1.0 / mRadius, sPerT = len * inv;
+        const Vec3 p0 = (f + tc * d) * inv, u = d / len;
+        const QuadraticAlongRay q{1.0, 2.0 * glm::dot(p0, u), glm::dot(p0, p0) - 1.0};
+        constexpr double kBall = 1.0 + 0x1p-20;  // window ends strictly outside the sphere
+        const double sMin = (tmin - tc) * sPerT, sMax = (tmax - tc) * sPerT;
+        const FacedRange r{std::max(-kBall, sMin), std::min(kBall, sMax)};
+        if (!(r.lo <= r.hi)) return;
+        const auto at = [&](double s, int face, double clipT) {
+            if (face == 0) return clipBoundary(clipT);
+            return rootBoundary(tc + s / sPerT, p0 + s * u, ctx);
+        };
+        quadraticSpans(q, r, 1, tc * sPerT, ctx, [&](double sIn, int fIn, double sOut, int fOut) {
+            out.push_back({at(sIn, fIn, r.lo == sMin ? tmin : tc + sIn / sPerT),
+                           at(sOut, fOut, r.hi == sMax ? tmax : tc + sOut / sPerT)});
+        });
+        dropThinSpans(out, ctx.relTolerance);
+    }
+
+    /// Sphere tracing of value() (a true distance: Lipschitz 1) within the bounds.
+    void sphereTracedSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                           SpanList& out) const {
+        double t0 = tmin, t1 = tmax;
+        if (!mBounds.clipRay(ray, t0, t1) || !std::isfinite(t0)) return;
+        sphereTraceSpans([this](const Vec3& p) { return Sphere::value(p); }, ray, t0, t1, 1.0,
+                         t0 > tmin,
+                         ctx,
+                         [&](double t) { return rootBoundary(t, ray.at(t) - mCenter, ctx); },
+                         [](double t, bool) { return clipBoundary(t); }, out);
+    }
+
+    /// An end of the searched range where the ray is inside: not a surface.
+    static Boundary clipBoundary(double t) {
+        Boundary b;
+        b.t = t;
+        return b;
+    }
+
     Vec3 mCenter;
     double mRadius;
     double mRadius2;

@@ -13,6 +13,7 @@
 #include "csg/primitive.h"
 #include "csg/root_isolation.h"
 #include "csg/solids.h"
+#include "csg/sphere_trace.h"
 
 namespace kerf {
 namespace {
@@ -68,6 +69,9 @@ public:
                SpanList& out) const override {
         out.clear();
         ++ctx.stats.primitiveTests;
+        // The closed method already isolates the quartic by intervals: Interval is the same.
+        if (ctx.method == TraceMethod::SphereTrace)
+            return sphereTracedSpans(ray, tmin, tmax, ctx, out);
         double t0 = tmin, t1 = tmax;
         const double dd = glm::dot(ray.dir, ray.dir);
         if (!(dd > 0.0) || !mBounds.clipRay(ray, t0, t1)) return;
@@ -135,6 +139,22 @@ public:
     }
 
 private:
+    /// Sphere tracing of value() (a true distance: Lipschitz 1) within the bounds.
+    void sphereTracedSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                           SpanList& out) const {
+        double t0 = tmin, t1 = tmax;
+        if (!mBounds.clipRay(ray, t0, t1) || !std::isfinite(t0)) return;
+        sphereTraceSpans([this](const Vec3& p) { return Torus::value(p); }, ray, t0, t1, 1.0,
+                         t0 > tmin, ctx,
+                         [&](double t) { return rootBoundary(t, normalAt(ray.at(t)), ctx); },
+                         [](double t, bool) {
+                             Boundary b;
+                             b.t = t;
+                             return b;
+                         },
+                         out);
+    }
+
     /// Outward normal (not unit): ∇h/2 = ((ρ − R)·x/ρ, y, (ρ − R)·z/ρ).
     Vec3 normalAt(const Vec3& p) const {
         const double rho = std::sqrt(p.x * p.x + p.z * p.z);
