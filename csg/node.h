@@ -35,6 +35,12 @@ public:
     virtual void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                        SpanList& out) const = 0;
 
+    /// The first surface crossing with tmin < t ≤ tmax, as the first surface boundary of
+    /// spans() would give it (`entering` says which way the ray crosses). Leaves override it to
+    /// stop searching at the first crossing, which a ray needs when no CSG is above it.
+    virtual bool firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                              Boundary& hit, bool& entering) const;
+
     /// The implicit form: ≤ 0 inside, > 0 outside. Its magnitude is not a distance.
     virtual double value(const Vec3& p) const = 0;
     /// An interval holding value(p) for every p in the box.
@@ -53,5 +59,9 @@ protected:
 };
 
 using NodePtr = std::shared_ptr<const Node>;
+
+/// The first surface boundary with tmin < t ≤ tmax in sorted spans; false if there is none.
+bool firstSurfaceOf(const SpanList& spans, double tmin, double tmax, Boundary& hit,
+                    bool& entering);
 
 }  // namespace kerf

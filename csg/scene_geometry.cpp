@@ -14,22 +14,6 @@ std::vector<Bounds3> objectBounds(const std::vector<NodePtr>& objects) {
     return boxes;
 }
 
-/// The first surface boundary with tmin < t ≤ tmax in sorted spans, if any.
-const Boundary* firstSurface(const SpanList& spans, double tmin, double tmax, bool& entering) {
-    for (const Span& s : spans) {
-        if (s.in.t > tmax) return nullptr;
-        if (s.in.t > tmin && s.in.isSurface()) {
-            entering = true;
-            return &s.in;
-        }
-        if (s.out.t > tmin && s.out.t <= tmax && s.out.isSurface()) {
-            entering = false;
-            return &s.out;
-        }
-    }
-    return nullptr;
-}
-
 }  // namespace
 
 SceneGeometry::SceneGeometry(std::vector<NodePtr> objects)
@@ -38,22 +22,21 @@ SceneGeometry::SceneGeometry(std::vector<NodePtr> objects)
 std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double tmax,
                                              TraceContext& ctx) const {
     std::optional<Hit> best;
-    SpanList spans;
     double nearest = tmax;  // shrinks as hits are found: farther objects cannot win
     mBvh.traverse(ray, tmin, tmax, ctx.stats, [&](int index, double tEnter) {
         if (tEnter > nearest) return nearest;
-        mObjects[index]->spans(ray, tmin, nearest, ctx, spans);
+        Boundary bd;
         bool entering = true;
-        const Boundary* b = firstSurface(spans, tmin, nearest, entering);
-        if (b == nullptr || (best && b->t >= best->t)) return nearest;
+        if (!mObjects[index]->firstSurface(ray, tmin, nearest, ctx, bd, entering)) return nearest;
+        if (best && bd.t >= best->t) return nearest;
         Hit h;
-        h.t = b->t;
-        const double len = glm::length(b->normal);
-        h.normal = len > 0.0 ? b->normal / len : -glm::normalize(ray.dir);
+        h.t = bd.t;
+        const double len = glm::length(bd.normal);
+        h.normal = len > 0.0 ? bd.normal / len : -glm::normalize(ray.dir);
         h.entering = entering;
-        h.material = b->material == Boundary::kNoMaterial ? 0 : b->material;
-        h.primitive = b->primitive;
-        h.relError = b->relError;
+        h.material = bd.material == Boundary::kNoMaterial ? 0 : bd.material;
+        h.primitive = bd.primitive;
+        h.relError = bd.relError;
         h.object = index;
         best = h;
         nearest = h.t;

@@ -30,6 +30,14 @@ public:
         }
     }
 
+    bool firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx, Boundary& hit,
+                      bool& entering) const override {
+        const Ray local{mLocalFromWorld.point(ray.origin), mLocalFromWorld.vector(ray.dir)};
+        if (!mChild->firstSurface(local, tmin, tmax, ctx, hit, entering)) return false;
+        hit.normal = mNormalToWorld * hit.normal;
+        return true;
+    }
+
     double value(const Vec3& p) const override { return mChild->value(mLocalFromWorld.point(p)); }
 
     long double valueExtended(const LVec3& p) const override {
@@ -74,6 +82,13 @@ public:
                SpanList& out) const override {
         mChild->spans(ray, tmin, tmax, ctx, out);
         fillMaterial(out, mMaterial);
+    }
+
+    bool firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx, Boundary& hit,
+                      bool& entering) const override {
+        if (!mChild->firstSurface(ray, tmin, tmax, ctx, hit, entering)) return false;
+        if (hit.material == Boundary::kNoMaterial) hit.material = mMaterial;
+        return true;
     }
 
     double value(const Vec3& p) const override { return mChild->value(p); }
