@@ -5,6 +5,9 @@
 #include "csg/solids.h"
 #include "csg/sphere_trace.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace kerf {
 namespace {
 
@@ -26,23 +29,12 @@ public:
         if (ctx.method == TraceMethod::Interval) return intervalSpans(ray, tmin, tmax, ctx, out);
         if (ctx.method == TraceMethod::SphereTrace)
             return sphereTracedSpans(ray, tmin, tmax, ctx, out);
-        const Vec3& d = ray.dir;
         const Vec3 f = ray.origin - mCenter;
-        const double a = glm::dot(d, d);
-        const double h = glm::dot(f, d);
-        // l: the centre-relative point of the line closest to the centre. h² − a·c would
-        // subtract two numbers of size |f|²·a; a·(r² − |l|²) only loses what |l| loses.
-        const double tc = -h / a;
-        const Vec3 l = f + tc * d;
-        const double disc = a * (mRadius2 - glm::dot(l, l));
-        if (!(disc > 0.0)) return;  // miss, tangent, or NaN input
-        const double sq = std::sqrt(disc);
-        const double c = glm::dot(f, f) - mRadius2;
-        const QuadraticRoots r = solveQuadraticHalf(a, h, c, sq);
-        // Normals relative to l: the hits lie at l ∓ (√disc/a)·d from the centre, which
-        // avoids f + t·d, a difference of two long vectors when the origin is far away.
-        const Vec3 half = (sq / a) * d;
-        out.push_back({boundary(r.t0, l - half), boundary(r.t1, l + half)});
+        const double m = std::max({std::fabs(f.x), std::fabs(f.y), std::fabs(f.z), mRadius});
+        const double dm = std::max({std::fabs(ray.dir.x), std::fabs(ray.dir.y), std::fabs(ray.dir.z)});
+        if (m > kSquareSafe || m < 1.0 / kSquareSafe || dm > kSquareSafe || dm < 1.0 / kSquareSafe)
+            return rescaledSpans(f, ray.dir, out);
+        closedSpans(f, ray.dir, mRadius2, 0, out);
     }
 
     double value(const Vec3& p) const override {
@@ -61,6 +53,44 @@ public:
     }
 
 private:
+    /// Squares of numbers between 1/kSquareSafe and kSquareSafe neither overflow nor lose
+    /// precision to underflow; outside it the ray is rescaled first.
+    static constexpr double kSquareSafe = 0x1p250;
+
+    /// The closed form for the ray f + t·d against the centred sphere of radius² r2. Roots are
+    /// scaled by 2^tExp (exact), for rays that were rescaled to keep squares in range.
+    void closedSpans(const Vec3& f, const Vec3& d, double r2, int tExp, SpanList& out) const {
+        const double a = glm::dot(d, d);
+        const double h = glm::dot(f, d);
+        // l: the centre-relative point of the line closest to the centre. h² − a·c would
+        // subtract two numbers of size |f|²·a; a·(r² − |l|²) only loses what |l| loses.
+        const double tc = -h / a;
+        const Vec3 l = f + tc * d;
+        const double disc = a * (r2 - glm::dot(l, l));
+        if (!(disc > 0.0)) return;  // miss, tangent, or NaN input
+        const double sq = std::sqrt(disc);
+        const double c = glm::dot(f, f) - r2;
+        const QuadraticRoots r = solveQuadraticHalf(a, h, c, sq);
+        // Normals relative to l: the hits lie at l ∓ (√disc/a)·d from the centre, which
+        // avoids f + t·d, a difference of two long vectors when the origin is far away.
+        const Vec3 half = (sq / a) * d;
+        out.push_back({boundary(std::ldexp(r.t0, tExp), l - half),
+                       boundary(std::ldexp(r.t1, tExp), l + half)});
+    }
+
+    /// Spheres and rays at extreme scales (1e±300): positions and radius scaled by one power
+    /// of two, the direction by another, so every square stays in range; both are exact.
+    void rescaledSpans(const Vec3& f, const Vec3& d, SpanList& out) const {
+        const int kp = std::ilogb(std::max({std::fabs(f.x), std::fabs(f.y), std::fabs(f.z), mRadius}));
+        const int kd = std::ilogb(std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)}));
+        if (kp == FP_ILOGBNAN || kd == FP_ILOGBNAN || kd == FP_ILOGB0) return;
+        const Vec3 fs(std::ldexp(f.x, -kp), std::ldexp(f.y, -kp), std::ldexp(f.z, -kp));
+        const Vec3 ds(std::ldexp(d.x, -kd), std::ldexp(d.y, -kd), std::ldexp(d.z, -kd));
+        const double rs = std::ldexp(mRadius, -kp);
+        // f + t·d = 2^kp·(fs + t·2^(kd−kp)·ds): the scaled root t' gives t = 2^(kp−kd)·t'.
+        closedSpans(fs, ds, rs * rs, kp - kd, out);
+    }
+
     /// Interval isolation of |o + t·d − c|² − r² on [tmin, tmax]. Normalised: lengths by r, the
     /// parameter s by arc length from the ray's point nearest the centre (Haines et al.'s
     /// conditioning), so q(s) = s² + 2(p0·u)·s + |p0|² − 1 and the ball is |s| ≤ 1.
