@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -18,10 +19,17 @@ inline double srgbDecode(double encoded) {
     return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
 }
 
-/// A linear value as an 8-bit sRGB code: clamped to [0, 1] (NaN as 0), encoded, rounded.
+/// A linear value as an 8-bit sRGB code: clamped to [0, 1] (NaN as 0), encoded, rounded to
+/// the nearest code. Found by binary search among the linear values where the rounded code
+/// steps up (decoded half-codes), instead of a pow per channel.
 inline uint8_t srgbByte(float linear) {
-    const double v = linear > 0 ? std::min(double(linear), 1.0) : 0.0;  // NaN fails > 0
-    return uint8_t(std::lround(srgbEncode(v) * 255.0));
+    static const auto steps = [] {
+        std::array<double, 255> t{};
+        for (int k = 0; k < 255; ++k) t[k] = srgbDecode((k + 0.5) / 255.0);
+        return t;
+    }();
+    const double v = linear > 0 ? double(linear) : 0.0;  // NaN fails > 0
+    return uint8_t(std::upper_bound(steps.begin(), steps.end(), v) - steps.begin());
 }
 
 }  // namespace kerf

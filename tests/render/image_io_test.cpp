@@ -65,6 +65,14 @@ TEST_CASE("srgbEncode / srgbDecode") {
     CHECK(srgbByte(std::numeric_limits<float>::quiet_NaN()) == 0);
     CHECK(srgbByte(2.0f) == 255);
     CHECK(srgbByte(0.5f) == 188);  // round(0.7354·255) = round(187.5) → 188
+    // The table search gives the code the formula rounds to, for every float in a sweep.
+    int mismatches = 0;
+    for (int i = 0; i <= 200000; ++i) {
+        const float v = float(i) / 200000.0f;
+        const long expected = std::lround(srgbEncode(v) * 255.0);
+        if (srgbByte(v) != expected) ++mismatches;
+    }
+    CHECK(mismatches == 0);
 }
 
 TEST_CASE("writeImage / readImage round trips") {
