@@ -18,8 +18,8 @@ public:
     explicit Bvh(const std::vector<Bounds3>& items);
 
     /// Calls visit(index, tEnter) for every item whose box the ray meets within [tmin, tmax]
-    /// (near boxes first, as far as the tree can tell). visit may shrink tmax by returning a
-    /// smaller value; it returns the tmax to continue with.
+    /// (near boxes first, as far as the tree can tell). visit returns the tmax to continue
+    /// with: smaller to narrow the search, below tmin to end it.
     template <class Visit>
     void traverse(const Ray& ray, double tmin, double tmax, TraceStats& stats, Visit&& visit) const;
 
@@ -44,12 +44,12 @@ template <class Visit>
 void Bvh::traverse(const Ray& ray, double tmin, double tmax, TraceStats& stats,
                    Visit&& visit) const {
     for (int32_t i : mUnbounded) tmax = visit(i, tmin);
-    if (mNodes.empty()) return;
+    if (mNodes.empty() || !(tmin <= tmax)) return;
     int32_t stack[64];
     int top = 0;
     stack[top++] = 0;
     const bool dirNeg[3] = {ray.dir.x < 0, ray.dir.y < 0, ray.dir.z < 0};
-    while (top > 0) {
+    while (top > 0 && tmin <= tmax) {  // a visit may close the range to end the walk
         const Node& n = mNodes[stack[--top]];
         double t0 = tmin, t1 = tmax;
         ++stats.boundsTests;

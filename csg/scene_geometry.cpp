@@ -45,6 +45,18 @@ std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double
     return best;
 }
 
+bool SceneGeometry::occluded(const Ray& ray, double tmin, double tmax, TraceContext& ctx) const {
+    bool blocked = false;
+    mBvh.traverse(ray, tmin, tmax, ctx.stats, [&](int index, double) {
+        if (blocked) return -kInf;  // an empty range: the walk ends without more tests
+        Boundary bd;
+        bool entering = true;
+        blocked = mObjects[index]->firstSurface(ray, tmin, tmax, ctx, bd, entering);
+        return blocked ? -kInf : tmax;
+    });
+    return blocked;
+}
+
 Bounds3 SceneGeometry::bounds() const {
     Bounds3 b;
     for (const NodePtr& o : mObjects) b = Bounds3::hull(b, o->bounds());

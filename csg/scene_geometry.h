@@ -29,6 +29,10 @@ public:
     std::optional<Hit> nearestHit(const Ray& ray, double tmin, double tmax,
                                   TraceContext& ctx) const;
 
+    /// Whether any surface lies with tmin < t ≤ tmax: shadow rays of opaque scenes, which can
+    /// stop at the first object that blocks instead of looking for the nearest.
+    bool occluded(const Ray& ray, double tmin, double tmax, TraceContext& ctx) const;
+
     /// Calls visit(objectIndex, spans) for every object whose spans meet (tmin, tmax);
     /// spans are as Node::spans gives them (exact on [tmin, tmax], materials filled).
     template <class Visit>

@@ -25,9 +25,15 @@ bool evaluate(BoolOp op, bool a, bool b) {
 
 const Boundary& boundaryAt(const SpanList& s, int k) { return (k & 1) ? s[k >> 1].out : s[k >> 1].in; }
 
-bool thin(double t0, double t1, double rel) {
-    if (!std::isfinite(t0) || !std::isfinite(t1)) return false;
-    return t1 - t0 <= rel * std::max(std::fabs(t0), std::fabs(t1));
+/// Whether the stretch between two boundaries is no wider than their own error: rounding for
+/// closed-form surfaces, the tolerance they were isolated to for root-found ones (capped by
+/// the caller's tolerance). A thin sheet of closed-form faces therefore survives any
+/// tolerance, while a sliver between root-found surfaces that cannot be told apart vanishes.
+bool thin(const Boundary& a, const Boundary& b, double relTolerance) {
+    if (!std::isfinite(a.t) || !std::isfinite(b.t)) return false;
+    const double found = std::max<double>(a.relError, b.relError);
+    const double rel = std::max(kRoundingFloor, std::min(relTolerance, found));
+    return b.t - a.t <= rel * std::max(std::fabs(a.t), std::fabs(b.t));
 }
 
 }  // namespace
@@ -82,11 +88,10 @@ void combineSpans(BoolOp op, const SpanList& a, const SpanList& b, double relTol
 }
 
 void dropThinSpans(SpanList& s, double relTolerance) {
-    const double rel = std::max(relTolerance, kRoundingFloor);
     int w = 0;
     for (int r = 0; r < s.size(); ++r) {
-        // A gap thinner than the tolerance closes: the spans on both sides join.
-        if (w > 0 && thin(s[w - 1].out.t, s[r].in.t, rel)) {
+        // A gap thinner than its boundaries' error closes: the spans on both sides join.
+        if (w > 0 && thin(s[w - 1].out, s[r].in, relTolerance)) {
             s[w - 1].out = s[r].out;
             continue;
         }
@@ -94,7 +99,7 @@ void dropThinSpans(SpanList& s, double relTolerance) {
     }
     int k = 0;
     for (int r = 0; r < w; ++r)
-        if (!thin(s[r].in.t, s[r].out.t, rel) && s[r].out.t > s[r].in.t) s[k++] = s[r];
+        if (!thin(s[r].in, s[r].out, relTolerance) && s[r].out.t > s[r].in.t) s[k++] = s[r];
     s.truncate(k);
 }
 

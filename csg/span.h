@@ -114,15 +114,17 @@ private:
 
 enum class BoolOp { Union, Intersection, Difference, Xor };
 
-/// out = a op b. Both inputs sorted and disjoint; so is the result. Spans of the result no
-/// wider than `thin(t)` (a relative tolerance times |t|) vanish, which also removes the
-/// zero-width slivers that coincident faces leave: at equal t the combination is decided as if
-/// the boundaries coincided exactly. Xor boundaries inside the other operand are flipped.
-/// `out` must not alias a or b.
+/// out = a op b. Both inputs sorted and disjoint; so is the result. At equal t the
+/// combination is decided as if the boundaries coincided exactly, so coincident faces leave no
+/// zero-width sliver; then dropThinSpans removes what is thinner than its boundaries' error.
+/// Xor boundaries inside the other operand are flipped. `out` must not alias a or b.
 void combineSpans(BoolOp op, const SpanList& a, const SpanList& b, double relTolerance,
                   SpanList& out);
 
-/// Removes spans no wider than relTolerance·max(|in.t|, |out.t|) (never ±inf spans).
+/// Removes spans, and closes gaps, no wider than their two boundaries' own error relative to
+/// |t|: max(relError of the two, capped at relTolerance) and never below 32 ulps. Closed-form
+/// boundaries (relError 0) therefore keep sheets down to rounding; root-found ones lose what
+/// is thinner than the tolerance they were found to. Unbounded spans never vanish.
 void dropThinSpans(SpanList& s, double relTolerance);
 
 /// Sets material on every boundary that has none yet (the innermost modifier wins).

@@ -159,7 +159,7 @@ Vec3 WhittedIntegrator::directLight(const Material& m, const Vec3& p, const Vec3
 
 Vec3 WhittedIntegrator::transmittance(const Ray& ray, double tmax, ShadingContext& ctx) const {
     if (!mAnyTransmissive)
-        return mGeometry.nearestHit(ray, 0.0, tmax, ctx.trace) ? Vec3(0.0) : Vec3(1.0);
+        return mGeometry.occluded(ray, 0.0, tmax, ctx.trace) ? Vec3(0.0) : Vec3(1.0);
 
     Vec3 pass(1.0);
     bool blocked = false;

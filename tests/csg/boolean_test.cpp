@@ -231,3 +231,19 @@ TEST_CASE("Affine: rotations by multiples of 90 degrees are exact", "[types]") {
     const Vec3 p(0.3, -0.7, 2.0);
     CHECK(glm::length(a.inverse().point(a.point(p)) - p) < 1e-14);
 }
+
+TEST_CASE("SceneGeometry::occluded: any surface within the segment blocks", "[scene]") {
+    std::vector<NodePtr> objects;
+    for (int i = 0; i < 20; ++i) objects.push_back(makeSphere({0, 0, 3.0 * i}, 1.0));
+    objects.push_back(makeHalfSpace({0, 1, 0}, -5.0));
+    const SceneGeometry scene(objects);
+    TraceContext ctx;
+    const Ray along{{0, 0, -10}, {0, 0, 1}};
+    CHECK(scene.occluded(along, 0.0, kInf, ctx));
+    CHECK(scene.occluded(along, 0.0, 9.5, ctx));
+    CHECK_FALSE(scene.occluded(along, 0.0, 8.5, ctx));     // stops short of the first sphere
+    CHECK_FALSE(scene.occluded({{5, 0, -10}, {0, 0, 1}}, 0.0, kInf, ctx));  // passes beside
+    CHECK(scene.occluded({{5, 0, -10}, {0, -1, 0}}, 0.0, kInf, ctx));      // down to the floor
+    // From inside a sphere the way out is a surface too.
+    CHECK(scene.occluded({{0, 0, 3}, {1, 0, 0}}, 0.0, kInf, ctx));
+}

@@ -137,15 +137,29 @@ TEST_CASE("combineSpans: xor flips the normals of boundaries inside the other op
     CHECK(r[1].out.t == 6);
 }
 
-TEST_CASE("dropThinSpans: the tolerance is relative to |t|", "[span]") {
+TEST_CASE("dropThinSpans: a span vanishes only within its boundaries' own error", "[span]") {
+    auto rootFound = [](SpanList s, float relError) {
+        for (Span& x : s) x.in.relError = x.out.relError = relError;
+        return s;
+    };
     for (double scale : {1e-6, 1.0, 1e6}) {
-        SpanList s = spansOf({{1 * scale, 1.000001 * scale}, {2 * scale, 3 * scale}}, 1);
+        // Root-found boundaries: thinner than the tolerance they carry (capped by the
+        // caller's) vanishes, relative to |t| at every scale.
+        SpanList s = rootFound(spansOf({{1 * scale, 1.000001 * scale}, {2 * scale, 3 * scale}}, 1), 1e-5f);
         dropThinSpans(s, 1e-5);
         REQUIRE(s.size() == 1);
         CHECK(s[0].in.t == 2 * scale);
-        SpanList keep = spansOf({{1 * scale, 1.000001 * scale}}, 1);
-        dropThinSpans(keep, 1e-7);
-        CHECK(keep.size() == 1);
+        SpanList capped = rootFound(spansOf({{1 * scale, 1.000001 * scale}}, 1), 1e-5f);
+        dropThinSpans(capped, 1e-7);
+        CHECK(capped.size() == 1);
+        // Closed-form boundaries (relError 0): a sheet 1e-9 thick survives any tolerance.
+        SpanList sheet = spansOf({{1 * scale, (1 + 1e-9) * scale}}, 1);
+        dropThinSpans(sheet, 1e-2);
+        CHECK(sheet.size() == 1);
+        // ... but not rounding noise.
+        SpanList noise = spansOf({{1 * scale, (1 + 1e-15) * scale}}, 1);
+        dropThinSpans(noise, 1e-2);
+        CHECK(noise.empty());
     }
     SECTION("unbounded spans never vanish") {
         SpanList s;
