@@ -1,0 +1,79 @@
+/// @file app/cli_check.cpp
+#include "app/cli_check.h"
+
+#include "app/exit_codes.h"
+#include "app/model_loader.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+namespace kerf::app {
+
+namespace {
+
+std::string number(double v) {
+    if (std::isinf(v)) return v < 0 ? "-unbounded" : "unbounded";
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.6g", v);
+    return buffer;
+}
+
+/// One axis of a box: "[lo, hi]", "unbounded" when both ends are infinite, and "unbounded"
+/// in place of an infinite end otherwise.
+std::string axisRange(double lo, double hi) {
+    if (std::isinf(lo) && std::isinf(hi)) return "unbounded";
+    return "[" + (std::isinf(lo) ? std::string("unbounded") : number(lo)) + ", " +
+           (std::isinf(hi) ? std::string("unbounded") : number(hi)) + "]";
+}
+
+std::string describeBounds(const Bounds3& b) {
+    if (b.empty()) return "empty";
+    return "x " + axisRange(b.lo.x, b.hi.x) + "  y " + axisRange(b.lo.y, b.hi.y) + "  z " +
+           axisRange(b.lo.z, b.hi.z);
+}
+
+}  // namespace
+
+CLI::App* addCheckCommand(CLI::App& parent, CheckCommandLine& line) {
+    CLI::App* cmd = parent.add_subcommand("check", "Parse and compile a model; print a summary");
+    cmd->add_option("FILE", line.model, "The model file (.kerf)")->required();
+    return cmd;
+}
+
+void printSceneSummary(const std::string& model, const Scene& scene, std::ostream& out) {
+    long primitives = 0;
+    int depth = 0;
+    Bounds3 bounds;  // empty until the first object
+    for (const NodePtr& object : scene.objects) {
+        primitives += object->primitiveCount();
+        depth = std::max(depth, object->depth());
+        bounds = Bounds3::hull(bounds, object->bounds());
+    }
+    // materials[0] is the built-in default; the others are the model's own.
+    const size_t declaredMaterials = scene.materials.empty() ? 0 : scene.materials.size() - 1;
+    const RenderSettings& r = scene.settings;
+
+    out << model << ": ok\n";
+    out << "  objects:     " << scene.objects.size() << "\n";
+    out << "  materials:   " << declaredMaterials << " (plus the default)\n";
+    out << "  lights:      " << scene.lights.size() << "\n";
+    out << "  primitives:  " << primitives << "\n";
+    out << "  csg depth:   " << depth << "\n";
+    out << "  bounds:      " << describeBounds(bounds) << "\n";
+    out << "  mist:        " << (scene.mist.enabled ? "yes" : "no") << "\n";
+    out << "  render:      " << r.width << " x " << r.height << ", spp " << r.spp
+        << ", max depth " << r.maxDepth << "\n";
+}
+
+int runCheck(const CheckCommandLine& line) {
+    const std::optional<Scene> scene = loadModel(line.model, std::cerr);
+    if (!scene) return kExitUsage;
+    printSceneSummary(line.model, *scene, std::cout);
+    return kExitSuccess;
+}
+
+}  // namespace kerf::app

@@ -1,0 +1,30 @@
+/// @file app/cli_check.h
+/// @brief `kerf check FILE`: parse and compile a model and print a summary of the scene.
+#pragma once
+
+#include "csg/scene.h"
+
+#include <iosfwd>
+#include <string>
+
+namespace CLI {
+class App;
+}  // namespace CLI
+
+namespace kerf::app {
+
+struct CheckCommandLine {
+    std::string model;
+};
+
+/// Adds the `check` subcommand to `parent`, parsing into `line`.
+CLI::App* addCheckCommand(CLI::App& parent, CheckCommandLine& line);
+
+/// Prints the summary of a compiled scene: objects, materials, lights, primitives, the
+/// deepest CSG tree, the bounds of everything and the render settings.
+void printSceneSummary(const std::string& model, const Scene& scene, std::ostream& out);
+
+/// Runs the command; returns the exit code (0 valid, 2 with diagnostics otherwise).
+int runCheck(const CheckCommandLine& line);
+
+}  // namespace kerf::app

@@ -1,0 +1,140 @@
+/// @file app/cli_render.cpp
+#include "app/cli_render.h"
+
+#include "app/exit_codes.h"
+#include "app/model_loader.h"
+#include "app/output_paths.h"
+#include "app/progress_bar.h"
+#include "app/stats_report.h"
+#include "render/image.h"
+#include "render/render.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <thread>
+
+namespace kerf::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void requireAtLeast(const CLI::Option* option, int value, int minimum) {
+    if (option->count() > 0 && value < minimum) {
+        throw UsageError(option->get_name() + " must be at least " + std::to_string(minimum) +
+                         " (got " + std::to_string(value) + ")");
+    }
+}
+
+/// Range checks of the numeric flags; each message names its flag.
+void checkNumbers(const RenderCommandLine& line) {
+    requireAtLeast(line.widthOption, line.width, 1);
+    requireAtLeast(line.heightOption, line.height, 1);
+    requireAtLeast(line.sppOption, line.spp, 1);
+    requireAtLeast(line.threadsOption, line.threads, 0);
+    if (line.toleranceOption->count() > 0 && !(line.tolerance > 0 && line.tolerance < 1)) {
+        throw UsageError("--tolerance must be between 0 and 1, exclusive (got " +
+                         line.toleranceOption->results().front() + ")");
+    }
+}
+
+OutputPlan planOutputs(const RenderCommandLine& line) {
+    OutputPlan plan;
+    plan.color = line.outputOption->count() > 0 ? line.output : defaultOutputPath(line.model);
+    if (plan.color.empty()) throw UsageError("-o: the output file name is empty");
+    for (const std::string& spec : line.aovs) plan.aovs.push_back(parseAovSpec(spec));
+    checkOutputPlan(plan, line.model);
+    return plan;
+}
+
+RenderOptions renderOptions(const RenderCommandLine& line, const OutputPlan& plan) {
+    RenderOptions options;
+    // 0 leaves the value of the model's render { } block (and hardware threads) in force.
+    options.width = line.widthOption->count() > 0 ? line.width : 0;
+    options.height = line.heightOption->count() > 0 ? line.height : 0;
+    options.spp = line.sppOption->count() > 0 ? line.spp : 0;
+    options.threads = line.threadsOption->count() > 0 ? line.threads : 0;
+    options.tolerance = line.toleranceOption->count() > 0 ? line.tolerance : 0;
+    for (const AovRequest& aov : plan.aovs) {
+        if (aov.kind == AovRequest::Kind::Depth) options.wantDepth = true;
+        if (aov.kind == AovRequest::Kind::Normal) options.wantNormal = true;
+    }
+    return options;
+}
+
+}  // namespace
+
+CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
+    CLI::App* cmd = parent.add_subcommand("render", "Render a model file to an image");
+    cmd->add_option("FILE", line.model, "The model file (.kerf)")->required();
+    line.outputOption = cmd->add_option(
+        "-o,--output", line.output,
+        "Output image; the format follows the extension: .png .jpg (8-bit sRGB), "
+        ".exr .tif (float linear). Default: the model's base name with .png, here");
+    line.widthOption = cmd->add_option("--width", line.width, "Image width in pixels");
+    line.heightOption = cmd->add_option("--height", line.height, "Image height in pixels");
+    line.sppOption = cmd->add_option("--spp", line.spp, "Samples per pixel (an n×n jittered grid)");
+    line.threadsOption =
+        cmd->add_option("--threads", line.threads, "Worker threads; 0 uses every hardware thread");
+    line.toleranceOption = cmd->add_option(
+        "--tolerance", line.tolerance,
+        "Relative hit-distance tolerance in (0, 1); default: derived from the pixel footprint");
+    cmd->add_option("--aov", line.aovs,
+                    "Also write an output variable: depth=FILE.exr (eye-to-hit distance) or "
+                    "normal=FILE.exr (world normal); may be repeated")
+        ->type_name("KIND=FILE");
+    cmd->add_flag("--stats", line.stats, "Print statistics to stderr");
+    cmd->add_flag("-q,--quiet", line.quiet, "No progress bar");
+    return cmd;
+}
+
+int runRender(const RenderCommandLine& line) {
+    checkNumbers(line);
+    const OutputPlan plan = planOutputs(line);
+
+    const auto compileStart = Clock::now();
+    const std::optional<Scene> scene = loadModel(line.model, std::cerr);
+    if (!scene) return kExitUsage;
+    const double secondsCompile = secondsSince(compileStart);
+
+    RenderOptions options = renderOptions(line, plan);
+    std::unique_ptr<ProgressBar> bar;
+    if (!line.quiet && stderrIsTerminal()) {
+        bar = std::make_unique<ProgressBar>(stderr);
+        options.progress = [&bar](double fraction) { bar->update(fraction); };
+    }
+    const RenderResult result = render(*scene, options);
+    if (bar) bar->finish();
+
+    const auto writeStart = Clock::now();
+    writeImage(result.color, plan.color);
+    for (const AovRequest& aov : plan.aovs) {
+        writeImage(aov.kind == AovRequest::Kind::Depth ? result.depth : result.normal, aov.path);
+    }
+    const double secondsWrite = secondsSince(writeStart);
+
+    if (line.stats) {
+        RunReport report;
+        report.width = result.color.width;
+        report.height = result.color.height;
+        report.spp = options.spp > 0 ? options.spp : scene->settings.spp;
+        report.threads = options.threads > 0 ? options.threads
+                                             : int(std::max(1u, std::thread::hardware_concurrency()));
+        report.render = result.stats;
+        report.secondsCompile = secondsCompile;
+        report.secondsWrite = secondsWrite;
+        printStats(report, std::cerr);
+    }
+    return kExitSuccess;
+}
+
+}  // namespace kerf::app

@@ -1,0 +1,45 @@
+/// @file app/cli_render.h
+/// @brief `kerf render FILE [-o OUT] [--width W] [--height H] [--spp N] [--threads T]
+/// [--tolerance E] [--aov KIND=FILE]… [--stats] [--quiet]`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
+
+namespace kerf::app {
+
+/// The command line of `kerf render` as parsed; the option pointers tell which flags were
+/// given (a flag that was not given leaves the model's `render { }` value in force).
+struct RenderCommandLine {
+    std::string model;
+    std::string output;
+    int width = 0;
+    int height = 0;
+    int spp = 0;
+    int threads = 0;
+    double tolerance = 0;
+    std::vector<std::string> aovs;
+    bool stats = false;
+    bool quiet = false;
+
+    CLI::Option* outputOption = nullptr;
+    CLI::Option* widthOption = nullptr;
+    CLI::Option* heightOption = nullptr;
+    CLI::Option* sppOption = nullptr;
+    CLI::Option* threadsOption = nullptr;
+    CLI::Option* toleranceOption = nullptr;
+};
+
+/// Adds the `render` subcommand to `parent`, parsing into `line` (which must outlive parsing).
+CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line);
+
+/// Runs the command; returns the exit code. Throws UsageError for bad options and lets
+/// ImageWriteError and other failures through to main().
+int runRender(const RenderCommandLine& line);
+
+}  // namespace kerf::app

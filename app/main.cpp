@@ -1,0 +1,74 @@
+/// @file app/main.cpp
+/// @brief The `kerf` executable: parses the command line, runs one subcommand and turns its
+/// outcome into an exit code. The only place in kerf that exits; every exception stops here.
+#include "app/cli_bench.h"
+#include "app/cli_check.h"
+#include "app/cli_render.h"
+#include "app/exit_codes.h"
+#include "render/image.h"
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+#include <new>
+
+namespace {
+
+using namespace kerf::app;
+
+/// Parses and runs; usage and write errors become their exit codes here, anything else
+/// propagates to main().
+int run(int argc, char** argv) {
+    CLI::App cli("kerf: a solid-modelling ray tracer. Model files (.kerf) describe CSG trees of "
+                 "implicit solids, traced exactly and rendered Whitted-style.",
+                 "kerf");
+    cli.set_version_flag("--version", std::string("kerf ") + KERF_VERSION);
+    cli.require_subcommand(1);
+
+    RenderCommandLine renderLine;
+    CheckCommandLine checkLine;
+    BenchCommandLine benchLine;
+    CLI::App* renderCmd = addRenderCommand(cli, renderLine);
+    CLI::App* checkCmd = addCheckCommand(cli, checkLine);
+    CLI::App* benchCmd = addBenchCommand(cli, benchLine);
+
+    try {
+        cli.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return cli.exit(e);  // --help, --version: printed by CLI11, exit 0
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "kerf: error: " << e.what() << "\n"
+                  << "Run 'kerf --help' (or 'kerf render --help') for usage.\n";
+        return kExitUsage;
+    }
+
+    try {
+        if (renderCmd->parsed()) return runRender(renderLine);
+        if (checkCmd->parsed()) return runCheck(checkLine);
+        if (benchCmd->parsed()) return runBench(benchLine);
+    } catch (const UsageError& e) {
+        std::cerr << "kerf: error: " << e.what() << "\n";
+        return kExitUsage;
+    } catch (const kerf::ImageWriteError& e) {
+        std::cerr << "kerf: error: " << e.what() << "\n";
+        return kExitFailure;
+    }
+    std::cerr << "kerf: error: no command given; try 'kerf --help'\n";
+    return kExitUsage;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "kerf: error: out of memory\n";
+    } catch (const std::exception& e) {
+        std::cerr << "kerf: error: " << e.what() << "\n";
+    } catch (...) {
+        std::cerr << "kerf: error: unknown failure\n";
+    }
+    return kExitFailure;
+}

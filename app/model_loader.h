@@ -1,0 +1,19 @@
+/// @file app/model_loader.h
+/// @brief Reading a model file for a command: checks it can be read, compiles it and prints
+/// the diagnostics, so `render` and `check` report problems the same way.
+#pragma once
+
+#include "csg/scene.h"
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+namespace kerf::app {
+
+/// Compiles the model at `path`. On failure prints to `err` either `kerf: error: cannot read
+/// model file …` or the compiler's diagnostics, and returns nullopt (the caller exits with
+/// kExitUsage). Warnings are printed too when the model compiles.
+std::optional<Scene> loadModel(const std::string& path, std::ostream& err);
+
+}  // namespace kerf::app

@@ -1,0 +1,38 @@
+/// @file app/output_paths.h
+/// @brief Where `kerf render` writes: the colour image and the AOVs, resolved and checked
+/// before any work so a run never writes over its input nor over one of its own outputs.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace kerf::app {
+
+/// An arbitrary output variable requested with `--aov KIND=FILE`.
+struct AovRequest {
+    enum class Kind { Depth, Normal };
+    Kind kind = Kind::Depth;
+    std::string path;
+};
+
+struct OutputPlan {
+    std::string color;             ///< the colour image
+    std::vector<AovRequest> aovs;  ///< in the order given
+};
+
+/// The default colour output: the model's base name with `.png`, in the current directory.
+std::string defaultOutputPath(const std::string& modelPath);
+
+/// Parses one `--aov` value (`depth=F.exr`, `normal=F.exr`). Throws UsageError naming
+/// `--aov` for an unknown kind, a missing `=` or file, or a non-float format.
+AovRequest parseAovSpec(const std::string& spec);
+
+/// Throws UsageError when the colour output has an extension kerf cannot write, when a kind
+/// is requested twice, or when any output is the model file or another output (compared as
+/// canonical paths, and as the same file when both exist).
+void checkOutputPlan(const OutputPlan& plan, const std::string& modelPath);
+
+/// True when the two paths name the same file (existing or not).
+bool samePath(const std::string& a, const std::string& b);
+
+}  // namespace kerf::app

@@ -1,0 +1,61 @@
+/// @file app/stats_report.cpp
+#include "app/stats_report.h"
+
+#include <cinttypes>
+#include <cstdio>
+#include <ostream>
+#include <string>
+
+namespace kerf::app {
+
+namespace {
+
+std::string line(const char* label, const std::string& value) {
+    char buffer[128];
+    std::snprintf(buffer, sizeof buffer, "  %-22s %s\n", label, value.c_str());
+    return buffer;
+}
+
+std::string count(uint64_t n) { return std::to_string(n); }
+
+std::string seconds(double s) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3f s", s);
+    return buffer;
+}
+
+}  // namespace
+
+void printStats(const RunReport& report, std::ostream& out) {
+    const RenderStats& s = report.render;
+    const uint64_t rays = s.cameraRays + s.shadowRays + s.reflectionRays + s.refractionRays;
+    char buffer[64];
+
+    out << "kerf statistics\n";
+    out << line("image", std::to_string(report.width) + " x " + std::to_string(report.height));
+    out << line("samples per pixel", std::to_string(report.spp));
+    out << line("threads", std::to_string(report.threads));
+    std::snprintf(buffer, sizeof buffer, "%.3g (relative)", s.tolerance);
+    out << line("tolerance", buffer);
+    out << line("camera rays", count(s.cameraRays));
+    out << line("shadow rays", count(s.shadowRays));
+    out << line("reflection rays", count(s.reflectionRays));
+    out << line("refraction rays", count(s.refractionRays));
+    out << line("rays in total", count(rays));
+    out << line("primitive tests", count(s.trace.primitiveTests));
+    out << line("bounds tests", count(s.trace.boundsTests));
+    out << line("root-finder steps", count(s.trace.rootSteps));
+    out << line("interval evaluations", count(s.trace.intervalEvals));
+    out << line("parse + compile", seconds(report.secondsCompile));
+    out << line("setup", seconds(s.secondsSetup));
+    out << line("trace", seconds(s.secondsTrace));
+    out << line("write", seconds(report.secondsWrite));
+    const double total = report.secondsCompile + s.secondsSetup + s.secondsTrace + report.secondsWrite;
+    out << line("total", seconds(total));
+    if (s.secondsTrace > 0) {
+        std::snprintf(buffer, sizeof buffer, "%.4g", double(rays) / s.secondsTrace);
+        out << line("rays per second", buffer);
+    }
+}
+
+}  // namespace kerf::app

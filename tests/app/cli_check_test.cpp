@@ -1,0 +1,58 @@
+// End-to-end tests of `kerf check`: the summary's counts and bounds against values worked out
+// by hand from the model text.
+#include "kerf_runner.h"
+
+#include <catch2/catch.hpp>
+
+#include <regex>
+
+using namespace kerf::test;
+
+namespace {
+
+/// The integer after `label:` in the summary, or -1.
+long summaryNumber(const std::string& text, const std::string& label) {
+    std::smatch match;
+    if (!std::regex_search(text, match, std::regex("\\n\\s*" + label + ":\\s+(\\d+)"))) return -1;
+    return std::stol(match[1].str());
+}
+
+}  // namespace
+
+TEST_CASE("kerf check: the cup") {
+    TempDir dir;
+    const KerfRun run = runKerf(dir, {"check", (modelsDir() / "cup.kerf").string()});
+    INFO("stdout:\n" << run.out << "\nstderr:\n" << run.err);
+    REQUIRE(run.exitCode == 0);
+    CHECK(run.err.empty());
+    // Two cups, the gyroid, the lamp and the floor.
+    CHECK(summaryNumber(run.out, "objects") == 5);
+    // clay, glass, mirror, lamp (the built-in default is not counted).
+    CHECK(summaryNumber(run.out, "materials") == 4);
+    CHECK(summaryNumber(run.out, "lights") == 2);
+    // A cup is 2 cylinders (body) + 2 cylinders and a half-space (handle) = 5 leaves, and is
+    // used twice; + gyroid + lamp sphere + floor half-space = 13.
+    CHECK(summaryNumber(run.out, "primitives") == 13);
+    // union → difference → cylinder at least.
+    CHECK(summaryNumber(run.out, "csg depth") >= 3);
+    // The floor is unbounded in x and z and below; the top is the lamp: 4 + 0.3.
+    CHECK(run.out.find("bounds:      x unbounded  y [unbounded, 4.3]  z unbounded") !=
+          std::string::npos);
+    CHECK(run.out.find("render:      800 x 600, spp 4, max depth 8") != std::string::npos);
+}
+
+TEST_CASE("kerf check: bounds of a bounded scene") {
+    TempDir dir;
+    dir.write("two.kerf",
+              "object sphere { center <1, 2, 3> radius 0.5 };\n"
+              "object box { min <-2, 0, 0> max <0, 1, 1> } translate <0, 0, 10>;\n");
+    const KerfRun run = runKerf(dir, {"check", "two.kerf"});
+    INFO("stdout:\n" << run.out << "\nstderr:\n" << run.err);
+    REQUIRE(run.exitCode == 0);
+    CHECK(summaryNumber(run.out, "objects") == 2);
+    CHECK(summaryNumber(run.out, "materials") == 0);
+    CHECK(summaryNumber(run.out, "lights") == 0);
+    CHECK(summaryNumber(run.out, "primitives") == 2);
+    // Hull of [0.5,1.5]×[1.5,2.5]×[2.5,3.5] and [-2,0]×[0,1]×[10,11].
+    CHECK(run.out.find("bounds:      x [-2, 1.5]  y [0, 2.5]  z [2.5, 11]") != std::string::npos);
+}
