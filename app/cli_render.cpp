@@ -64,6 +64,11 @@ RenderOptions renderOptions(const RenderCommandLine& line, const OutputPlan& pla
     options.spp = line.sppOption->count() > 0 ? line.spp : 0;
     options.threads = line.threadsOption->count() > 0 ? line.threads : 0;
     options.tolerance = line.toleranceOption->count() > 0 ? line.tolerance : 0;
+    const std::optional<TraceMethod> method = parseTraceMethod(line.method);
+    if (!method)
+        throw UsageError("--method must be closed, interval or sphere-trace (got '" + line.method +
+                         "')");
+    options.method = *method;
     for (const AovRequest& aov : plan.aovs) {
         if (aov.kind == AovRequest::Kind::Depth) options.wantDepth = true;
         if (aov.kind == AovRequest::Kind::Normal) options.wantNormal = true;
@@ -88,6 +93,11 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
     line.toleranceOption = cmd->add_option(
         "--tolerance", line.tolerance,
         "Relative hit-distance tolerance in (0, 1); default: derived from the pixel footprint");
+    cmd->add_option("--method", line.method,
+                    "How primitives find crossings: closed (closed forms where they exist, the "
+                    "default), interval (interval root isolation everywhere) or sphere-trace "
+                    "(Lipschitz marching, for comparison: can miss thin features)")
+        ->type_name("closed|interval|sphere-trace");
     cmd->add_option("--aov", line.aovs,
                     "Also write an output variable: depth=FILE.exr (eye-to-hit distance) or "
                     "normal=FILE.exr (world normal); may be repeated")

@@ -1,6 +1,6 @@
 /// @file app/cli_render.h
 /// @brief `kerf render FILE [-o OUT] [--width W] [--height H] [--spp N] [--threads T]
-/// [--tolerance E] [--aov KIND=FILE]… [--stats] [--quiet]`.
+/// [--tolerance E] [--method M] [--aov KIND=FILE]… [--stats] [--quiet]`.
 #pragma once
 
 #include <string>
@@ -23,6 +23,7 @@ struct RenderCommandLine {
     int spp = 0;
     int threads = 0;
     double tolerance = 0;
+    std::string method = "closed";
     std::vector<std::string> aovs;
     bool stats = false;
     bool quiet = false;

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
 
 namespace kerf {
 
@@ -33,6 +35,12 @@ enum class TraceMethod {
     /// accuracy comparison only: it can step over thin features and grazing hits.
     SphereTrace,
 };
+
+/// "closed", "interval", "sphere-trace": the names the command line uses.
+const char* traceMethodName(TraceMethod method);
+
+/// The method named by traceMethodName, or nullopt.
+std::optional<TraceMethod> parseTraceMethod(const std::string& name);
 
 /// What a trace needs besides the ray. One per thread; never shared.
 struct TraceContext {

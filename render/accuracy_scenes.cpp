@@ -36,22 +36,4 @@ std::vector<double> accuracyDecadeTolerances() {
     return tolerances;
 }
 
-const char* traceMethodName(TraceMethod method) {
-    switch (method) {
-        case TraceMethod::Closed:
-            return "closed";
-        case TraceMethod::Interval:
-            return "interval";
-        case TraceMethod::SphereTrace:
-            return "sphere-trace";
-    }
-    return "?";
-}
-
-std::optional<TraceMethod> parseTraceMethod(const std::string& name) {
-    for (TraceMethod m : {TraceMethod::Closed, TraceMethod::Interval, TraceMethod::SphereTrace})
-        if (name == traceMethodName(m)) return m;
-    return std::nullopt;
-}
-
 }  // namespace kerf

@@ -34,10 +34,4 @@ const AccuracySceneSpec* findAccuracyScene(const std::string& name);
 /// The decade tolerances 1e-2, 1e-3, …, 1e-12 (the default tolerance is added per scene).
 std::vector<double> accuracyDecadeTolerances();
 
-/// "closed", "interval", "sphere-trace".
-const char* traceMethodName(TraceMethod method);
-
-/// The method named by traceMethodName, or nullopt.
-std::optional<TraceMethod> parseTraceMethod(const std::string& name);
-
 }  // namespace kerf

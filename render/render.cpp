@@ -159,9 +159,11 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
 
     const auto traceStart = Clock::now();
     const double tolerance = result.stats.tolerance;
-    tbb::enumerable_thread_specific<ShadingContext> contexts([tolerance] {
+    const TraceMethod method = options.method;
+    tbb::enumerable_thread_specific<ShadingContext> contexts([tolerance, method] {
         ShadingContext ctx;
         ctx.trace.relTolerance = tolerance;
+        ctx.trace.method = method;
         return ctx;
     });
     const int tileCount = ((width + kTileSize - 1) / kTileSize) *

@@ -16,6 +16,7 @@ struct RenderOptions {
     int spp = 0;          ///< 0: take the scene's render settings
     int threads = 0;      ///< 0: all hardware threads
     double tolerance = 0; ///< relative hit-distance tolerance; 0: derived from the pixel footprint
+    TraceMethod method = TraceMethod::Closed;  ///< how primitives find crossings
     bool wantDepth = false;   ///< fill RenderResult::depth
     bool wantNormal = false;  ///< fill RenderResult::normal
     /// Called now and then with the fraction done (0..1); may be empty.

@@ -50,6 +50,11 @@ TEST_CASE("kerf render: numeric option ranges") {
     SECTION("--width not a number") { requireUsageError({"--width", "wide"}, "--width"); }
 }
 
+TEST_CASE("kerf render: --method names") {
+    SECTION("unknown") { requireUsageError({"--method", "bogus"}, "--method"); }
+    SECTION("misspelt") { requireUsageError({"--method", "sphere_trace"}, "--method"); }
+}
+
 TEST_CASE("kerf render: --aov specifications") {
     SECTION("unknown kind") { requireUsageError({"--aov", "albedo=a.exr"}, "albedo"); }
     SECTION("no '='") { requireUsageError({"--aov", "depth.exr"}, "--aov"); }
