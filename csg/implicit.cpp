@@ -38,18 +38,15 @@ public:
                SpanList& out) const override {
         out.clear();
         ++ctx.stats.primitiveTests;
-        double boxIn = -kInf, boxOut = kInf;
-        if (!mBounds.clipRay(ray, boxIn, boxOut)) return;
-        const double t0 = std::max(boxIn, tmin), t1 = std::min(boxOut, tmax);
-        // An unbounded range cannot be bisected; the language always gives a finite box.
-        if (!(t0 <= t1) || !std::isfinite(t0) || !std::isfinite(t1)) return;
+        Range r;
+        if (!clip(ray, tmin, tmax, r)) return;
         // The closed method already isolates f by intervals: Interval is the same.
         if (ctx.method == TraceMethod::SphereTrace) {
-            sphereTraceSpans([this](const Vec3& p) { return Implicit::value(p); }, ray, t0, t1,
-                             mLipschitz, false, ctx,
+            sphereTraceSpans([this](const Vec3& p) { return Implicit::value(p); }, ray, r.t0,
+                             r.t1, mLipschitz, false, ctx,
                              [&](double t) { return rootBoundary(t, normalAt(ray.at(t)), ctx); },
                              [&](double t, bool atStart) {
-                                 return endBoundary(ray, t, atStart ? boxIn >= tmin : boxOut <= tmax,
+                                 return endBoundary(ray, t, atStart ? r.startOnBox : r.endOnBox,
                                                     atStart);
                              },
                              out);
@@ -57,9 +54,9 @@ public:
         }
 
         TapeAlongRay problem{*mTape, ray};
-        bool inside = isInside(problem.value(t0));
-        Boundary pending = inside ? endBoundary(ray, t0, boxIn >= tmin, true) : Boundary{};
-        isolateRoots(problem, t0, t1, 0.0, ctx, [&](double t, bool entering) {
+        bool inside = isInside(problem.value(r.t0));
+        Boundary pending = inside ? endBoundary(ray, r.t0, r.startOnBox, true) : Boundary{};
+        isolateRoots(problem, r.t0, r.t1, 0.0, ctx, [&](double t, bool entering) {
             const Boundary b = rootBoundary(t, normalAt(ray.at(t)), ctx);
             if (entering)
                 pending = b;
@@ -67,9 +64,32 @@ public:
                 out.push_back({pending, b});
             inside = entering;
         });
-        if (inside) out.push_back({pending, endBoundary(ray, t1, boxOut <= tmax, false)});
+        if (inside) out.push_back({pending, endBoundary(ray, r.t1, r.endOnBox, false)});
         // A touch (double root) can leave a span no wider than the tolerance: drop it.
         dropThinSpans(out, ctx.relTolerance);
+    }
+
+    /// The same crossings as spans(), but the search stops once the first surface is decided:
+    /// rays that need only the nearest hit skip every later crossing.
+    bool firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx, Boundary& hit,
+                      bool& entering) const override {
+        if (ctx.method == TraceMethod::SphereTrace)
+            return Node::firstSurface(ray, tmin, tmax, ctx, hit, entering);
+        ++ctx.stats.primitiveTests;
+        Range r;
+        if (!clip(ray, tmin, tmax, r)) return false;
+        TapeAlongRay problem{*mTape, ray};
+        FirstSurfaceTracker tracker(tmin, tmax, ctx.relTolerance);
+        const bool inside = isInside(problem.value(r.t0));
+        tracker.start(inside, inside ? endBoundary(ray, r.t0, r.startOnBox, true) : Boundary{});
+        isolateRoots(
+            problem, r.t0, r.t1, 0.0, ctx,
+            [&](double t, bool enters) {
+                tracker.crossing(rootBoundary(t, normalAt(ray.at(t)), ctx), enters);
+            },
+            [&](double tNext) { return tracker.settledBefore(tNext); });
+        tracker.finish(endBoundary(ray, r.t1, r.endOnBox, false));
+        return tracker.result(hit, entering);
     }
 
     double value(const Vec3& p) const override {
@@ -96,6 +116,19 @@ public:
     }
 
 private:
+    /// The part of the caller's range inside the box, and whether its ends are box faces.
+    struct Range {
+        double t0, t1;
+        bool startOnBox, endOnBox;
+    };
+    bool clip(const Ray& ray, double tmin, double tmax, Range& r) const {
+        double boxIn = -kInf, boxOut = kInf;
+        if (!mBounds.clipRay(ray, boxIn, boxOut)) return false;
+        r = {std::max(boxIn, tmin), std::min(boxOut, tmax), boxIn >= tmin, boxOut <= tmax};
+        // An unbounded range cannot be bisected; the language always gives a finite box.
+        return r.t0 <= r.t1 && std::isfinite(r.t0) && std::isfinite(r.t1);
+    }
+
     /// For sphere tracing only: an ESTIMATE of the Lipschitz constant of value(), as POV-Ray
     /// users set max_gradient: the largest |∇f| on a 16³ grid over the box, times 1.5, and at
     /// least 1 (the box term). Not a bound: f can be steeper between the samples, and that is

@@ -1,14 +1,15 @@
 // Interval arithmetic with outward rounding (see csg/interval.h for the contract).
 //
 // Rounding: every rounded operation steps its result one ulp outward. IEEE +, −, ×, ÷ and sqrt
-// are correctly rounded, so one ulp suffices. The libm functions (exp, log, sin, cos, tan, asin,
-// acos, atan, atan2) are not guaranteed correctly rounded: glibc documents errors of at most a
-// few ulps, so their results are widened by kLibmUlps ulps on each side.
+// are correctly rounded, so one ulp suffices. The libm functions (exp, log, sin, cos, sincos,
+// tan, asin, acos, atan, atan2) are not guaranteed correctly rounded: glibc documents errors of
+// at most a few ulps, so their results are widened by kLibmUlps ulps on each side.
 //
 // Infinite ends: an end at ±inf is a bound, not a value; 0·inf therefore counts as 0 in
 // products, and an undefined combination of bounds (inf − inf, inf/inf) widens the result
 // to the side it could lie on.
 #include "csg/interval.h"
+#include "csg/interval_ops.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -23,39 +24,24 @@ constexpr int kLibmUlps = 4;
 constexpr double kPiLo = 3.141592653589793;   // below π
 constexpr double kPiHi = 3.1415926535897936;  // above π
 constexpr double kTwoPi = 6.283185307179586;
+constexpr double k2OverPi = 0.6366197723675814;  // 2/π to double precision
 
-uint64_t bitsOf(double v) {
-    uint64_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
-}
-double fromBits(uint64_t b) {
-    double v;
-    std::memcpy(&v, &b, sizeof v);
-    return v;
-}
+using interval_kernel::bitsOf;
+using interval_kernel::down;
+using interval_kernel::endProduct;
+using interval_kernel::fromBits;
+using interval_kernel::up;
 
-/// n ulps towards −inf; −inf and NaN stay put, +inf becomes the largest double (a correct
-/// lower bound for a result that overflowed).
-double down(double v, int n = 1) {
-    if (!(v > -kInfinity)) return v;  // −inf or NaN
-    if (v == 0.0) v = -std::numeric_limits<double>::denorm_min(), --n;
-    for (; n > 0 && v != -kInfinity; --n)
-        v = v > 0.0 ? fromBits(bitsOf(v) - 1) : fromBits(bitsOf(v) + 1);
+/// n ulps towards −inf (for libm results), n ≥ 1: the bit-pattern steps of down(v), n at once.
+double down(double v, int n) {
+    const uint64_t b = bitsOf(v), steps = static_cast<uint64_t>(n);
+    if (v > 0.0 && b > steps) return fromBits(b - steps);
+    if (v < 0.0) return fromBits(std::min(b + steps, bitsOf(-kInfinity)));
+    for (; n > 0 && v != -kInfinity; --n) v = down(v);  // 0, the smallest subnormals, NaN
     return v;
 }
 /// n ulps towards +inf (the mirror of down).
-double up(double v, int n = 1) { return -down(-v, n); }
-
-/// A lower end from a value that may be NaN (from inf − inf and the like): NaN means unbounded.
-double lowerEnd(double v) { return std::isnan(v) ? -kInfinity : down(v); }
-double upperEnd(double v) { return std::isnan(v) ? kInfinity : up(v); }
-
-/// A product of two interval ends, where 0·inf is 0 (the ends are bounds of finite reals).
-double endProduct(double a, double b) {
-    const double p = a * b;
-    return std::isnan(p) ? 0.0 : p;
-}
+double up(double v, int n) { return -down(-v, n); }
 
 bool anyNan(const Interval& a) { return a.maybeNan; }
 bool anyNan(const Interval& a, const Interval& b) { return a.maybeNan || b.maybeNan; }
@@ -74,20 +60,6 @@ bool mayHoldPhase(double lo, double hi, double x0, double period) {
     return std::floor(qHi + margin) >= std::ceil(qLo - margin);
 }
 
-/// sin or cos over a: the end values, widened, plus ±1 where a maximum or minimum may lie
-/// inside. maxPhase / minPhase are where the function peaks and dips (mod 2π).
-template <typename F>
-Interval periodic(const Interval& a, F f, double maxPhase, double minPhase) {
-    // Beyond 2^50 the spacing of doubles exceeds what the phase test can resolve.
-    if (!(a.hi - a.lo < kTwoPi) || std::fabs(a.lo) > 0x1p50 || std::fabs(a.hi) > 0x1p50)
-        return {-1.0, 1.0, a.maybeNan};
-    const double fl = f(a.lo), fh = f(a.hi);
-    double lo = down(std::min(fl, fh), kLibmUlps), hi = up(std::max(fl, fh), kLibmUlps);
-    if (mayHoldPhase(a.lo, a.hi, maxPhase, kTwoPi)) hi = 1.0;
-    if (mayHoldPhase(a.lo, a.hi, minPhase, kTwoPi)) lo = -1.0;
-    return {std::max(lo, -1.0), std::min(hi, 1.0), a.maybeNan};
-}
-
 /// xⁿ for x ≥ 0 by repeated squaring, each product rounded the same way (all factors are
 /// non-negative, so rounding every step down gives a lower bound, and up an upper bound).
 double powNonNegative(double x, unsigned n, bool roundUpward) {
@@ -102,23 +74,13 @@ double powNonNegative(double x, unsigned n, bool roundUpward) {
 
 }  // namespace
 
-Interval operator+(const Interval& a, const Interval& b) {
-    return {lowerEnd(a.lo + b.lo), upperEnd(a.hi + b.hi), anyNan(a, b)};
-}
+Interval operator+(const Interval& a, const Interval& b) { return interval_kernel::add(a, b); }
 
-Interval operator-(const Interval& a, const Interval& b) {
-    return {lowerEnd(a.lo - b.hi), upperEnd(a.hi - b.lo), anyNan(a, b)};
-}
+Interval operator-(const Interval& a, const Interval& b) { return interval_kernel::sub(a, b); }
 
 Interval operator-(const Interval& a) { return {-a.hi, -a.lo, a.maybeNan}; }  // exact
 
-Interval operator*(const Interval& a, const Interval& b) {
-    const double p0 = endProduct(a.lo, b.lo), p1 = endProduct(a.lo, b.hi);
-    const double p2 = endProduct(a.hi, b.lo), p3 = endProduct(a.hi, b.hi);
-    const double lo = std::min(std::min(p0, p1), std::min(p2, p3));
-    const double hi = std::max(std::max(p0, p1), std::max(p2, p3));
-    return {down(lo), up(hi), anyNan(a, b)};
-}
+Interval operator*(const Interval& a, const Interval& b) { return interval_kernel::mul(a, b); }
 
 Interval operator/(const Interval& a, const Interval& b) {
     const bool nan = anyNan(a, b);
@@ -220,14 +182,47 @@ Interval log(const Interval& a) {
     return {lo, up(std::log(a.hi), kLibmUlps), nan};
 }
 
+void sinCos(const Interval& a, Interval& s, Interval& c) {
+    // Beyond 2^50 the spacing of doubles exceeds what the quadrant test can resolve.
+    if (!(a.hi - a.lo < kTwoPi) || std::fabs(a.lo) > 0x1p50 || std::fabs(a.hi) > 0x1p50) {
+        s = c = {-1.0, 1.0, a.maybeNan};
+        return;
+    }
+    // The extremes inside are at the multiples k·π/2 that may lie in [lo, hi]: by k mod 4,
+    // cos = 1, sin = 1, cos = −1, sin = −1. One range reduction serves both functions; the
+    // quotients are rounded, so the test is widened by a relative margin far above their error.
+    const double qLo = a.lo * k2OverPi, qHi = a.hi * k2OverPi;
+    const double margin = 1e-12 * (1.0 + std::max(std::fabs(qLo), std::fabs(qHi)));
+    const double kLo = std::ceil(qLo - margin), kHi = std::floor(qHi + margin);
+    unsigned extremes = 0;  // bit r: a multiple with k ≡ r (mod 4) may lie inside
+    for (double k = kLo; k <= kHi && extremes != 15u; ++k)
+        extremes |= 1u << (static_cast<int64_t>(k) & 3);  // two's complement: k mod 4
+    const bool cosFull = (extremes & 5u) == 5u, sinFull = (extremes & 10u) == 10u;
+    if (cosFull && sinFull) {  // wide pieces: no libm call at all
+        s = c = {-1.0, 1.0, a.maybeNan};
+        return;
+    }
+    double sl, cl, sh, ch;
+    ::sincos(a.lo, &sl, &cl);
+    ::sincos(a.hi, &sh, &ch);
+    const double sLo = extremes & 8u ? -1.0 : down(std::min(sl, sh), kLibmUlps);
+    const double sHi = extremes & 2u ? 1.0 : up(std::max(sl, sh), kLibmUlps);
+    const double cLo = extremes & 4u ? -1.0 : down(std::min(cl, ch), kLibmUlps);
+    const double cHi = extremes & 1u ? 1.0 : up(std::max(cl, ch), kLibmUlps);
+    s = {std::max(sLo, -1.0), std::min(sHi, 1.0), a.maybeNan};
+    c = {std::max(cLo, -1.0), std::min(cHi, 1.0), a.maybeNan};
+}
+
 Interval sin(const Interval& a) {
-    return periodic(
-        a, [](double x) { return std::sin(x); }, 0.5 * kPiLo, -0.5 * kPiLo);
+    Interval s, c;
+    sinCos(a, s, c);
+    return s;
 }
 
 Interval cos(const Interval& a) {
-    return periodic(
-        a, [](double x) { return std::cos(x); }, 0.0, kPiLo);
+    Interval s, c;
+    sinCos(a, s, c);
+    return c;
 }
 
 Interval tan(const Interval& a) {

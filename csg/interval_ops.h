@@ -6,7 +6,87 @@
 #include "csg/expr.h"
 #include "csg/interval.h"
 
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+
 namespace kerf {
+
+/// The rounding steps and the arithmetic that evaluators run millions of times per image,
+/// inline so the interval-along-a-ray evaluator pays no call per operation. The operators of
+/// csg/interval.h are these same functions (one definition of the arithmetic).
+namespace interval_kernel {
+
+inline uint64_t bitsOf(double v) {
+    uint64_t b;
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+}
+inline double fromBits(uint64_t b) {
+    double v;
+    std::memcpy(&v, &b, sizeof v);
+    return v;
+}
+
+/// One ulp towards −inf; −inf and NaN stay put, +inf becomes the largest double (a correct
+/// lower bound for a result that overflowed). On the bit patterns: a positive double steps
+/// down by decrementing them, a negative one by incrementing them.
+inline double down(double v) {
+    if (!(v > -std::numeric_limits<double>::infinity())) return v;  // −inf or NaN
+    if (v == 0.0) return -std::numeric_limits<double>::denorm_min();
+    const uint64_t b = bitsOf(v);
+    return fromBits(v > 0.0 ? b - 1 : b + 1);
+}
+/// One ulp towards +inf (the mirror of down).
+inline double up(double v) { return -down(-v); }
+
+/// A lower end from a value that may be NaN (from inf − inf and the like): NaN means unbounded.
+inline double lowerEnd(double v) {
+    return std::isnan(v) ? -std::numeric_limits<double>::infinity() : down(v);
+}
+inline double upperEnd(double v) {
+    return std::isnan(v) ? std::numeric_limits<double>::infinity() : up(v);
+}
+
+/// A product of two interval ends, where 0·inf is 0 (the ends are bounds of finite reals).
+inline double endProduct(double a, double b) {
+    const double p = a * b;
+    return std::isnan(p) ? 0.0 : p;
+}
+
+inline Interval add(const Interval& a, const Interval& b) {
+    return {lowerEnd(a.lo + b.lo), upperEnd(a.hi + b.hi), a.maybeNan || b.maybeNan};
+}
+
+inline Interval sub(const Interval& a, const Interval& b) {
+    return {lowerEnd(a.lo - b.hi), upperEnd(a.hi - b.lo), a.maybeNan || b.maybeNan};
+}
+
+/// a·k for a finite k: two end products instead of four (root isolation multiplies by ray
+/// directions and constants all the time). The same bounds as the general product.
+inline Interval scale(const Interval& a, double k, bool nan) {
+    double lo = endProduct(a.lo, k), hi = endProduct(a.hi, k);
+    if (k < 0.0) std::swap(lo, hi);
+    return {down(lo), up(hi), nan};
+}
+
+inline Interval mul(const Interval& a, const Interval& b) {
+    const bool nan = a.maybeNan || b.maybeNan;
+    if (b.lo == b.hi && std::isfinite(b.lo)) return scale(a, b.lo, nan);
+    if (a.lo == a.hi && std::isfinite(a.lo)) return scale(b, a.lo, nan);
+    const double p0 = endProduct(a.lo, b.lo), p1 = endProduct(a.lo, b.hi);
+    const double p2 = endProduct(a.hi, b.lo), p3 = endProduct(a.hi, b.hi);
+    const double lo = std::min(std::min(p0, p1), std::min(p2, p3));
+    const double hi = std::max(std::max(p0, p1), std::max(p2, p3));
+    return {down(lo), up(hi), nan};
+}
+
+}  // namespace interval_kernel
+
+/// sin(a) and cos(a) together, with one libm sincos per end and one range reduction: what
+/// forward-mode differentiation of either needs (the slope of sin is cos and vice versa).
+/// Each equals what sin(a) and cos(a) return.
+void sinCos(const Interval& a, Interval& s, Interval& c);
 
 /// op(a, b) on intervals; `value` is the PowInt exponent. Const and the variables are not
 /// handled here (they have no operands).

@@ -1,7 +1,8 @@
 /// @file csg/root_isolation.h
 /// @brief Finds every sign change of f(t) on a finite [tmin, tmax]: recursive bisection driven
 /// by interval enclosures of f and df/dt, then a guarded Newton / Illinois polish of each
-/// isolated root. Used by the torus and the implicit primitive.
+/// isolated root. Used by the torus and the implicit primitive, whose first-surface search
+/// stops early through FirstSurfaceTracker.
 ///
 /// The problem type P supplies (all inline, no virtual calls):
 ///   void range(double a, double b, Interval& f, Interval& dfdt) — enclosures over [a, b];
@@ -16,6 +17,8 @@
 #include <limits>
 
 #include "csg/interval.h"
+#include "csg/node.h"
+#include "csg/span.h"
 #include "csg/trace_context.h"
 
 namespace kerf {
@@ -87,8 +90,15 @@ double polishRoot(P& p, double a, double b, double fa, double fb, double tOffset
 /// whether tmin itself is inside. A touch (f reaches 0 without changing sign: tangency,
 /// double root) makes no crossing, or a pair of crossings closer than the tolerance.
 /// tOffset: (parameter + tOffset) is proportional to the ray's t, to which tolerances refer.
-template <typename P, typename Sink>
-bool isolateRoots(P& p, double tmin, double tmax, double tOffset, TraceContext& ctx, Sink&& sink) {
+///
+/// stopBefore(a) is asked before each sub-interval [a, b] is examined; sub-intervals come in
+/// increasing a, and every crossing not yet reported lies at or after a. Returning true ends
+/// the search there (a caller that wants only the first crossings). The crossings reported
+/// before the stop are bit-identical to those of a full search: each sub-interval is handled
+/// alone, in the same order.
+template <typename P, typename Sink, typename StopBefore>
+bool isolateRoots(P& p, double tmin, double tmax, double tOffset, TraceContext& ctx, Sink&& sink,
+                  StopBefore&& stopBefore) {
     struct Piece {
         double a, b, fa, fb;
         int depth;
@@ -99,6 +109,7 @@ bool isolateRoots(P& p, double tmin, double tmax, double tOffset, TraceContext& 
     stack[top++] = {tmin, tmax, f0, tmax == tmin ? f0 : p.value(tmax), 0};
     while (top > 0) {
         const Piece q = stack[--top];
+        if (stopBefore(q.a)) break;
         const bool inA = isInside(q.fa), inB = isInside(q.fb);
         Interval f, slope;
         p.range(q.a, q.b, f, slope);
@@ -131,5 +142,97 @@ bool isolateRoots(P& p, double tmin, double tmax, double tOffset, TraceContext& 
     }
     return isInside(f0);
 }
+
+/// Every crossing (no early stop).
+template <typename P, typename Sink>
+bool isolateRoots(P& p, double tmin, double tmax, double tOffset, TraceContext& ctx, Sink&& sink) {
+    return isolateRoots(p, tmin, tmax, tOffset, ctx, sink, [](double) { return false; });
+}
+
+/// Node::firstSurface for a primitive whose spans are built from isolateRoots' crossings: it
+/// takes the crossings as spans() turns them into spans and decides the first surface boundary
+/// as soon as no later crossing can change it, so the search can stop there. The answer equals
+/// firstSurfaceOf(spans after dropThinSpans) by construction: the same two functions run on the
+/// leading spans once later crossings can no longer merge with them or make them thin.
+class FirstSurfaceTracker {
+public:
+    FirstSurfaceTracker(double tmin, double tmax, double relTolerance)
+        : mTmin(tmin),
+          mTmax(tmax),
+          mRelTolerance(relTolerance),
+          mHorizonRel(2.0 * std::fmax(relTolerance, 1e-12)) {}
+
+    /// The state where the searched range starts: inside, with `entry` the boundary there.
+    void start(bool inside, const Boundary& entry) {
+        mInside = inside;
+        if (inside) mPending = entry, mHorizon = horizonAfter(entry.t);
+    }
+
+    /// The next crossing (they come in increasing t).
+    void crossing(const Boundary& b, bool entering) {
+        if (entering)
+            mPending = b;
+        else
+            mTail.push_back({mPending, b});
+        mInside = entering;
+        mHorizon = horizonAfter(b.t);
+    }
+
+    /// For isolateRoots' stopBefore: every crossing still to come lies at t ≥ tNext. True once
+    /// the answer is decided (the search can stop).
+    bool settledBefore(double tNext) {
+        if (!(tNext > mHorizon)) return false;
+        mHorizon = kInf;
+        if (mInside) {
+            // The open span ends beyond the horizon, so it is not thin, whatever its real end;
+            // a placeholder end (not a surface) stands in for it.
+            Boundary openEnd;
+            openEnd.t = tNext;
+            mTail.push_back({mPending, openEnd});
+        }
+        dropThinSpans(mTail, mRelTolerance);
+        mDone = firstSurfaceOf(mTail, mTmin, mTmax, mHit, mEntering);
+        // Undecided: only the open span's entry (merged with thin gaps before it) still matters.
+        if (!mDone && mInside) mPending = mTail.back().in;
+        mTail.clear();
+        return mDone;
+    }
+
+    /// After a search that ran to the end of the range: the range ends at `end`, which closes
+    /// the open span if the ray is inside there.
+    void finish(const Boundary& end) {
+        if (mDone) return;
+        if (mInside) mTail.push_back({mPending, end});
+        dropThinSpans(mTail, mRelTolerance);
+        mDone = firstSurfaceOf(mTail, mTmin, mTmax, mHit, mEntering);
+    }
+
+    /// The first surface boundary, if there is one.
+    bool result(Boundary& hit, bool& entering) const {
+        if (!mDone) return false;
+        hit = mHit;
+        entering = mEntering;
+        return true;
+    }
+
+private:
+    /// A t beyond which no crossing can make a thin gap or span (dropThinSpans) with a
+    /// boundary at t: the thin test with twice the tolerance, so rounding cannot matter.
+    double horizonAfter(double t) const {
+        if (!(mHorizonRel < 0.5)) return kInf;  // absurd tolerances: never stop early
+        return t >= 0.0 ? t / (1.0 - mHorizonRel) : t - mHorizonRel * t;
+    }
+
+    double mTmin, mTmax;
+    double mRelTolerance;  ///< as spans() passes it to dropThinSpans
+    double mHorizonRel;
+    SpanList mTail;  ///< closed spans that later crossings may still change
+    Boundary mPending;
+    bool mInside = false;
+    double mHorizon = kInf;  ///< settle once the search has passed this t
+    bool mDone = false;
+    Boundary mHit;
+    bool mEntering = false;
+};
 
 }  // namespace kerf

@@ -22,6 +22,8 @@ namespace {
 /// far above the rounding of the coefficients and of the Taylor terms, far below any value
 /// that matters except within ~1e-13 of a tangency.
 constexpr double kEnclosureSlack = 1e-13;
+/// The largest relative move of t that the final Newton step in t may make.
+constexpr double kRefineLimit = 1e-9;
 
 /// The quartic s⁴ + c3·s³ + c2·s² + c1·s + c0 along the normalised ray, and h along it.
 struct TorusRay {
@@ -72,55 +74,47 @@ public:
         // The closed method already isolates the quartic by intervals: Interval is the same.
         if (ctx.method == TraceMethod::SphereTrace)
             return sphereTracedSpans(ray, tmin, tmax, ctx, out);
-        double t0 = tmin, t1 = tmax;
-        const double dd = glm::dot(ray.dir, ray.dir);
-        if (!(dd > 0.0) || !mBounds.clipRay(ray, t0, t1)) return;
-
-        // Normalise: lengths by S, the parameter by arc length from the point nearest the centre.
-        const double scale = mR + mr, inv = 1.0 / scale, len = std::sqrt(dd);
-        const double tc = -glm::dot(ray.origin, ray.dir) / dd;
-        TorusRay q;
-        q.p0 = (ray.origin + tc * ray.dir) * inv;
-        q.u = ray.dir / len;
-        q.R = mR * inv;
-        q.rm = mr * inv;
-        q.r2 = q.rm * q.rm;
-        const double sPerT = len * inv;  // s = (t − tc)·|d|/S
-        // |p|² = s² + 2b·s + c, x² + z² = a2·s² + a1·s + a0; b ≈ 0 but kept for consistency.
-        const double b = glm::dot(q.p0, q.u), c = glm::dot(q.p0, q.p0);
-        const double a2 = q.u.x * q.u.x + q.u.z * q.u.z;
-        const double a1 = 2.0 * (q.p0.x * q.u.x + q.p0.z * q.u.z);
-        const double a0 = q.p0.x * q.p0.x + q.p0.z * q.p0.z;
-        const double k = c + q.R * q.R - q.r2, fourR2 = 4.0 * q.R * q.R;
-        // (s² + 2bs + k)² − 4R²(a2·s² + a1·s + a0)
-        q.c3 = 4.0 * b;
-        q.c2 = 4.0 * b * b + 2.0 * k - fourR2 * a2;
-        q.c1 = 4.0 * b * k - fourR2 * a1;
-        q.c0 = k * k - fourR2 * a0;
-
-        const double sA = (t0 - tc) * sPerT, sB = (t1 - tc) * sPerT;
-        // An end of the clipped range is a clip of the caller's range, or (measure zero) a
-        // point of the surface where the box touches the torus.
-        auto endBoundary = [&](double t, bool clipped) {
-            if (!clipped) return boundary(t, normalAt(ray.at(t)));
-            Boundary bd;
-            bd.t = t;
-            return bd;
-        };
-        bool inside = isInside(q.value(sA));
-        Boundary pending = inside ? endBoundary(t0, t0 == tmin) : Boundary{};
-        isolateRoots(q, sA, sB, tc * sPerT, ctx, [&](double s, bool entering) {
-            const double t = refine(ray, tc + s / sPerT, inv);
-            const Boundary bd = rootBoundary(t, normalAt(ray.at(t)), ctx);
+        Setup st;
+        if (!setUp(ray, tmin, tmax, st)) return;
+        bool inside = isInside(st.q.value(st.sA));
+        Boundary pending = inside ? endBoundary(ray, st.t0, st.t0 == tmin) : Boundary{};
+        isolateRoots(st.q, st.sA, st.sB, st.tc * st.sPerT, ctx, [&](double s, bool entering) {
+            const Boundary bd = crossingBoundary(ray, st, s, ctx);
             if (entering)
                 pending = bd;
             else
                 out.push_back({pending, bd});
             inside = entering;
         });
-        if (inside) out.push_back({pending, endBoundary(t1, t1 == tmax)});
+        if (inside) out.push_back({pending, endBoundary(ray, st.t1, st.t1 == tmax)});
         // A touch of the surface can leave a span no wider than the tolerance: drop it.
         dropThinSpans(out, ctx.relTolerance);
+    }
+
+    /// The same crossings as spans(), but the search stops once the first surface is decided.
+    bool firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx, Boundary& hit,
+                      bool& entering) const override {
+        if (ctx.method == TraceMethod::SphereTrace)
+            return Node::firstSurface(ray, tmin, tmax, ctx, hit, entering);
+        ++ctx.stats.primitiveTests;
+        Setup st;
+        if (!setUp(ray, tmin, tmax, st)) return false;
+        FirstSurfaceTracker tracker(tmin, tmax, ctx.relTolerance);
+        const bool inside = isInside(st.q.value(st.sA));
+        tracker.start(inside, inside ? endBoundary(ray, st.t0, st.t0 == tmin) : Boundary{});
+        isolateRoots(
+            st.q, st.sA, st.sB, st.tc * st.sPerT, ctx,
+            [&](double s, bool enters) {
+                tracker.crossing(crossingBoundary(ray, st, s, ctx), enters);
+            },
+            [&](double sNext) {
+                // Crossings at s ≥ sNext map to t ≥ tc + sNext/sPerT (rounding is monotone),
+                // less what refine() may move them.
+                const double t = st.tc + sNext / st.sPerT;
+                return tracker.settledBefore(t - 2.0 * kRefineLimit * std::fabs(t));
+            });
+        tracker.finish(endBoundary(ray, st.t1, st.t1 == tmax));
+        return tracker.result(hit, entering);
     }
 
     double value(const Vec3& p) const override {
@@ -139,6 +133,67 @@ public:
     }
 
 private:
+    /// The normalised quartic along one ray and the range it is searched on.
+    struct Setup {
+        TorusRay q;
+        double t0, t1;  ///< the caller's range clipped to the bounds
+        double sA, sB;  ///< the same in the normalised parameter s
+        double tc;      ///< t of the point nearest the centre, where s = 0
+        double sPerT;   ///< s = (t − tc)·sPerT
+        double inv;     ///< 1/S
+    };
+
+    /// False when the ray misses the bounds within the range (or has no direction).
+    bool setUp(const Ray& ray, double tmin, double tmax, Setup& st) const {
+        st.t0 = tmin, st.t1 = tmax;
+        const double dd = glm::dot(ray.dir, ray.dir);
+        if (!(dd > 0.0) || !mBounds.clipRay(ray, st.t0, st.t1)) return false;
+
+        // Normalise: lengths by S, the parameter by arc length from the point nearest the centre.
+        const double scale = mR + mr, inv = 1.0 / scale, len = std::sqrt(dd);
+        const double tc = -glm::dot(ray.origin, ray.dir) / dd;
+        TorusRay& q = st.q;
+        q.p0 = (ray.origin + tc * ray.dir) * inv;
+        q.u = ray.dir / len;
+        q.R = mR * inv;
+        q.rm = mr * inv;
+        q.r2 = q.rm * q.rm;
+        // |p|² = s² + 2b·s + c, x² + z² = a2·s² + a1·s + a0; b ≈ 0 but kept for consistency.
+        const double b = glm::dot(q.p0, q.u), c = glm::dot(q.p0, q.p0);
+        const double a2 = q.u.x * q.u.x + q.u.z * q.u.z;
+        const double a1 = 2.0 * (q.p0.x * q.u.x + q.p0.z * q.u.z);
+        const double a0 = q.p0.x * q.p0.x + q.p0.z * q.p0.z;
+        const double k = c + q.R * q.R - q.r2, fourR2 = 4.0 * q.R * q.R;
+        // (s² + 2bs + k)² − 4R²(a2·s² + a1·s + a0)
+        q.c3 = 4.0 * b;
+        q.c2 = 4.0 * b * b + 2.0 * k - fourR2 * a2;
+        q.c1 = 4.0 * b * k - fourR2 * a1;
+        q.c0 = k * k - fourR2 * a0;
+
+        st.tc = tc;
+        st.sPerT = len * inv;
+        st.inv = inv;
+        st.sA = (st.t0 - tc) * st.sPerT;
+        st.sB = (st.t1 - tc) * st.sPerT;
+        return true;
+    }
+
+    /// The surface boundary of a crossing found at s.
+    Boundary crossingBoundary(const Ray& ray, const Setup& st, double s,
+                              const TraceContext& ctx) const {
+        const double t = refine(ray, st.tc + s / st.sPerT, st.inv);
+        return rootBoundary(t, normalAt(ray.at(t)), ctx);
+    }
+
+    /// An end of the clipped range: a clip of the caller's range, or (measure zero) a point of
+    /// the surface where the box touches the torus.
+    Boundary endBoundary(const Ray& ray, double t, bool clipped) const {
+        if (!clipped) return boundary(t, normalAt(ray.at(t)));
+        Boundary bd;
+        bd.t = t;
+        return bd;
+    }
+
     /// Sphere tracing of value() (a true distance: Lipschitz 1) within the bounds.
     void sphereTracedSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                            SpanList& out) const {
@@ -171,7 +226,7 @@ private:
         const double h = e * e + (p.y - rn) * (p.y + rn);
         const double dh = 2.0 * (e * (p.x * d.x + p.z * d.z) / rho + p.y * d.y);
         const double step = h / dh;
-        return std::fabs(step) <= 1e-9 * std::fabs(t) ? t - step : t;
+        return std::fabs(step) <= kRefineLimit * std::fabs(t) ? t - step : t;
     }
 
     double mR, mr;

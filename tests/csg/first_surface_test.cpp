@@ -1,0 +1,220 @@
+// Node::firstSurface of the root-isolated primitives (implicit, torus), which stops the search
+// at the first decided crossing, against the default it overrides: all spans, then
+// firstSurfaceOf. The crossings found before the stop are those of the full search, so the
+// two must agree bit for bit: same t, normal, entering flag, material and primitive.
+// Also: the along-ray enclosures that isolation relies on, where sin and cos of one operand
+// share a single sinCos, hold the exact f and df/dt of the gyroid.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+#include <sstream>
+
+#include "csg/expr.h"
+#include "csg/solids.h"
+#include "csg/tape.h"
+
+using namespace kerf;
+
+namespace {
+
+/// sin(4x)·cos(4y) + sin(4y)·cos(4z) + sin(4z)·cos(4x), as in models/cup.kerf.
+std::shared_ptr<const Tape> gyroidTape() {
+    ExprGraph g;
+    const ExprId four = g.constant(4.0);
+    const ExprId x = g.binary(Op::Mul, four, g.x()), y = g.binary(Op::Mul, four, g.y()),
+                 z = g.binary(Op::Mul, four, g.z());
+    auto term = [&](ExprId a, ExprId b) {
+        return g.binary(Op::Mul, g.unary(Op::Sin, a), g.unary(Op::Cos, b));
+    };
+    const ExprId f = g.binary(Op::Add, g.binary(Op::Add, term(x, y), term(y, z)), term(z, x));
+    return Tape::compile(g, f);
+}
+
+NodePtr gyroid() { return makeImplicit(gyroidTape(), {Vec3(-1.0), Vec3(1.0)}); }
+
+Vec3 unitRandom(std::mt19937_64& rng) {
+    std::normal_distribution<double> n;
+    const Vec3 v(n(rng), n(rng), n(rng));
+    return v / glm::length(v);
+}
+
+struct Comparison {
+    int rays = 0;
+    int hits = 0;
+    int mismatches = 0;
+    std::string firstMismatch;
+    TraceStats early, full;  ///< the override's and the default's work
+};
+
+/// Compares the override with the default on one ray; records the first disagreement.
+void compareOne(const Node& node, const Ray& ray, double tmin, double tmax, double tolerance,
+                Comparison& c) {
+    TraceContext early, full;
+    early.relTolerance = full.relTolerance = tolerance;
+    Boundary a, b;
+    bool enteringA = false, enteringB = false;
+    const bool foundA = node.firstSurface(ray, tmin, tmax, early, a, enteringA);
+    const bool foundB = node.Node::firstSurface(ray, tmin, tmax, full, b, enteringB);
+    c.early += early.stats;
+    c.full += full.stats;
+    ++c.rays;
+    if (foundB) ++c.hits;
+    const bool same = foundA == foundB &&
+                      (!foundA || (a.t == b.t && a.normal == b.normal && enteringA == enteringB &&
+                                   a.material == b.material && a.primitive == b.primitive &&
+                                   a.relError == b.relError));
+    if (same) return;
+    if (c.mismatches++ > 0) return;
+    std::ostringstream s;
+    s.precision(17);
+    s << "ray o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=("
+      << ray.dir.x << ", " << ray.dir.y << ", " << ray.dir.z << ") t in [" << tmin << ", " << tmax
+      << "] tol " << tolerance << ": early " << foundA << " t=" << a.t << " entering "
+      << enteringA << " material " << a.material << "; default " << foundB << " t=" << b.t
+      << " entering " << enteringB << " material " << b.material;
+    c.firstMismatch = s.str();
+}
+
+/// Random rays around a box `half` wide about `centre` (in the node's space): origins outside
+/// and inside, directions of any length, and ranges that start late or end early.
+Comparison compareRandom(const Node& node, const Vec3& centre, double half, int count,
+                         uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    Comparison c;
+    for (int i = 0; i < count; ++i) {
+        const double tolerance = i % 3 == 0 ? 1e-9 : (i % 3 == 1 ? 5e-4 : 2e-2);
+        const Vec3 origin = centre + half *
+                                         Vec3(2.0 * unit(rng) - 1.0, 2.0 * unit(rng) - 1.0,
+                                              2.0 * unit(rng) - 1.0) *
+                                         (i % 4 == 0 ? 0.6 : 2.5);
+        const Vec3 target = centre + 0.7 * half * unitRandom(rng) * unit(rng);
+        const Vec3 dir = glm::normalize(target - origin) * (0.05 + 4.0 * unit(rng));
+        const Ray ray{origin, dir};
+        const double reach = 6.0 * half / glm::length(dir);  // t across the whole region
+        const double tmin = i % 5 == 1 ? reach * unit(rng) * 0.5 : 0.0;
+        const double tmax = i % 7 == 2 ? tmin + reach * unit(rng) : kInf;
+        compareOne(node, ray, tmin, tmax, tolerance, c);
+    }
+    return c;
+}
+
+void requireAgreement(const Comparison& c) {
+    INFO(c.firstMismatch);
+    INFO(c.rays << " rays, " << c.hits << " hits; interval evaluations " << c.early.intervalEvals
+                << " (early stop) vs " << c.full.intervalEvals << " (all spans)");
+    REQUIRE(c.mismatches == 0);
+    REQUIRE(c.hits > c.rays / 5);  // the rays do meet the surface
+    // Stopping early never costs more, and on these shapes saves at least a fifth.
+    REQUIRE(c.early.intervalEvals <= c.full.intervalEvals * 4 / 5);
+}
+
+}  // namespace
+
+TEST_CASE("Implicit::firstSurface") {
+    const NodePtr g = gyroid();
+    SECTION("equals the first surface of the spans on random rays") {
+        requireAgreement(compareRandom(*g, Vec3(0.0), 1.0, 3000, 11));
+    }
+    SECTION("inside a material and a transform, at ordinary and extreme scales") {
+        for (double scale : {0.8, 1e-6, 1e6}) {
+            const Affine map = Affine::translate(Vec3(3.0, 1.0, 0.0) * scale)
+                                   .after(Affine::rotateDegrees(Vec3(10.0, 30.0, -20.0)))
+                                   .after(Affine::scale(Vec3(scale)));
+            const NodePtr wrapped = makeTransform(makeMaterial(g, 3), map);
+            INFO("scale " << scale);
+            requireAgreement(
+                compareRandom(*wrapped, Vec3(3.0, 1.0, 0.0) * scale, scale, 1500, 17));
+        }
+    }
+}
+
+TEST_CASE("Torus::firstSurface") {
+    const NodePtr torus = makeTorus(1.0, 0.3);
+    SECTION("equals the first surface of the spans on random rays") {
+        requireAgreement(compareRandom(*torus, Vec3(0.0), 1.3, 3000, 23));
+    }
+    SECTION("inside a transform and a material") {
+        const Affine map = Affine::translate(Vec3(-2.0, 0.5, 4.0))
+                               .after(Affine::rotateDegrees(Vec3(70.0, 0.0, 15.0)));
+        const NodePtr wrapped = makeMaterial(makeTransform(torus, map), 5);
+        requireAgreement(compareRandom(*wrapped, Vec3(-2.0, 0.5, 4.0), 1.3, 2000, 29));
+    }
+    SECTION("hard cases: tangent rays, a start on the surface, ranges cut between crossings") {
+        Comparison c;
+        const Vec3 x(1.0, 0.0, 0.0), y(0.0, 1.0, 0.0), z(0.0, 0.0, 1.0);
+        for (double tolerance : {1e-9, 1e-3}) {
+            // Tangent to the top of the tube and to the inner equator: double roots.
+            compareOne(*torus, {Vec3(1.0, 0.3, -3.0), z}, 0.0, kInf, tolerance, c);
+            compareOne(*torus, {Vec3(0.7, -2.0, 0.0), y}, 0.0, kInf, tolerance, c);
+            // Starting on the outer equator, going in; starting inside the tube (a −0 component).
+            compareOne(*torus, {Vec3(1.3, 0.0, 0.0), -x}, 0.0, kInf, tolerance, c);
+            compareOne(*torus, {Vec3(1.0, 0.0, 0.0), Vec3(-1.0, 0.0, -0.0)}, 0.0, kInf, tolerance,
+                       c);
+            // Through the centre in the equatorial plane: crossings at t = 1.7, 2.3, 3.7, 4.3.
+            for (double tmin : {0.0, 2.0, 3.0, 4.0, 4.5})
+                compareOne(*torus, {Vec3(-3.0, 0.0, 0.0), x}, tmin, kInf, tolerance, c);
+            compareOne(*torus, {Vec3(-3.0, 0.0, 0.0), x}, 0.0, 1.5, tolerance, c);
+        }
+        INFO(c.firstMismatch);
+        REQUIRE(c.mismatches == 0);
+
+        // The equatorial ray against its closed form: from t = 2 the first surface is the exit
+        // of the tube at x = −0.7, i.e. t = 2.3; from t = 0 the entry at t = 1.7.
+        TraceContext ctx;
+        Boundary hit;
+        bool entering = true;
+        const Ray ray{Vec3(-3.0, 0.0, 0.0), x};
+        REQUIRE(torus->firstSurface(ray, 2.0, kInf, ctx, hit, entering));
+        CHECK(hit.t == Approx(2.3).epsilon(1e-8));
+        CHECK_FALSE(entering);
+        CHECK(hit.normal.x > 0.0);  // the outward normal of the tube at x = −0.7 points to +x
+        REQUIRE(torus->firstSurface(ray, 0.0, kInf, ctx, hit, entering));
+        CHECK(hit.t == Approx(1.7).epsilon(1e-8));
+        CHECK(entering);
+        CHECK_FALSE(torus->firstSurface(ray, 0.0, 1.5, ctx, hit, entering));
+    }
+}
+
+TEST_CASE("Tape::evalIntervalAlongRay with sin and cos of shared operands") {
+    const auto tape = gyroidTape();
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int misses = 0;
+    std::string firstMiss;
+    for (int i = 0; i < 3000; ++i) {
+        Ray ray{2.0 * unitRandom(rng) * unit(rng), unitRandom(rng) * (0.1 + 3.0 * unit(rng))};
+        if (i % 10 == 0) ray.dir.y = 0.0;  // an axis the ray does not move along
+        const double t0 = 2.0 * unit(rng) - 1.0, t1 = t0 + std::pow(10.0, -6.0 * unit(rng));
+        Interval f, dfdt;
+        tape->evalIntervalAlongRay(ray, Interval(t0, t1), f, dfdt);
+        for (int k = 0; k < 8; ++k) {
+            const long double t = t0 + (k == 0 ? 0.0 : k == 1 ? 1.0 : unit(rng)) * (t1 - t0);
+            long double p[3], d[3];
+            for (int a = 0; a < 3; ++a) p[a] = 4.0L * (ray.origin[a] + t * ray.dir[a]);
+            for (int a = 0; a < 3; ++a) d[a] = 4.0L * ray.dir[a];
+            long double value = 0.0L, slope = 0.0L;
+            for (int a = 0; a < 3; ++a) {  // sin(p_a)·cos(p_{a+1})
+                const int b = (a + 1) % 3;
+                value += std::sin(p[a]) * std::cos(p[b]);
+                slope += std::cos(p[a]) * d[a] * std::cos(p[b]) -
+                         std::sin(p[a]) * std::sin(p[b]) * d[b];
+            }
+            // The long-double reference is itself rounded: allow a few of its ulps.
+            const long double slack = 1e-15L;
+            if (f.lo <= value + slack && value - slack <= f.hi && dfdt.lo <= slope + slack &&
+                slope - slack <= dfdt.hi)
+                continue;
+            if (misses++ == 0) {
+                std::ostringstream s;
+                s.precision(17);
+                s << "t in [" << t0 << ", " << t1 << "]: f " << double(value) << " in [" << f.lo
+                  << ", " << f.hi << "], df/dt " << double(slope) << " in [" << dfdt.lo << ", "
+                  << dfdt.hi << "]";
+                firstMiss = s.str();
+            }
+        }
+    }
+    INFO(firstMiss);
+    REQUIRE(misses == 0);
+}
