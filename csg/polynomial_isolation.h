@@ -1,7 +1,10 @@
 /// @file csg/polynomial_isolation.h
 /// @brief TraceMethod::Interval for the quadric and planar primitives: their implicit forms
-/// along a ray are polynomials of degree ≤ 2 in a normalised parameter s, isolated by
-/// csg/root_isolation.h with centred-form enclosures (no closed-form root formula is used).
+/// along a ray are polynomials of degree ≤ 2 in a normalised parameter s, whose crossings are
+/// isolated by interval enclosures and polished by a guarded Newton iteration (no closed-form
+/// root formula is used). The generic bisection of csg/root_isolation.h is not needed: the
+/// derivative of a quadratic is linear, so one cut at its zero (the vertex) leaves pieces on
+/// which the derivative's enclosure has one sign, and each piece is decided at once.
 ///
 /// Parameters are normalised by the primitive (lengths divided by its size, s measured from
 /// the ray's point nearest its centre) so the coefficients are O(1) at every scene scale and
@@ -15,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace kerf {
 
@@ -22,43 +26,32 @@ namespace kerf {
 struct QuadraticAlongRay {
     double c2 = 0.0, c1 = 0.0, c0 = 0.0;
 
-    /// Centred form at the midpoint m: q(m + x) = q(m) + q'(m)·x + c2·x² exactly, |x| ≤ h.
-    /// The slack covers the rounding of these few operations (a handful of ulps of the
-    /// magnitudes involved); the coefficients themselves are taken as exact.
-    void range(double a, double b, Interval& f, Interval& dfds) const {
-        constexpr double kRound = 8.0 * std::numeric_limits<double>::epsilon();
-        const double m = 0.5 * (a + b);
-        const double h = std::max(b - m, m - a) * (1.0 + kRound);
-        const double p0 = (c2 * m + c1) * m + c0;
-        const double p1 = 2.0 * c2 * m + c1;
-        const double spread = std::fabs(p1) * h, curve = c2 * h * h;
-        const double slack =
-            kRound * (std::fabs(c2 * m * m) + std::fabs(c1 * m) + std::fabs(c0) + spread +
-                      std::fabs(curve));
-        f = {p0 - spread + std::min(0.0, curve) - slack, p0 + spread + std::max(0.0, curve) + slack};
-        const double dSpread = 2.0 * std::fabs(c2) * h;
-        const double dSlack = kRound * (std::fabs(p1) + dSpread);
-        dfds = {p1 - dSpread - dSlack, p1 + dSpread + dSlack};
-    }
     double value(double s) const { return (c2 * s + c1) * s + c0; }
-    double valueAndSlope(double s, double& dqds) const {
-        dqds = 2.0 * c2 * s + c1;
-        return (c2 * s + c1) * s + c0;
+    double slope(double s) const { return 2.0 * c2 * s + c1; }
+    /// A bound on the rounding error of value(s) (Horner: a few ulps of the terms' sizes);
+    /// the coefficients themselves are taken as exact.
+    double rounding(double s) const {
+        constexpr double kRound = 8.0 * std::numeric_limits<double>::epsilon();
+        return kRound * (std::fabs(c2 * s * s) + std::fabs(c1 * s) + std::fabs(c0));
     }
 };
 
 /// The sign changes of a polynomial on a range, in increasing s.
 struct Crossings {
-    /// A quadratic has two; rounding near a double root can add a few more. Past this
-    /// many, the last pair is dropped (a sliver below the tolerance) so states alternate.
-    static constexpr int kMax = 8;
+    /// A quadratic has at most two: one on each side of its vertex.
+    static constexpr int kMax = 2;
     double s[kMax];
     bool entering[kMax];
     int count = 0;
     bool insideAtStart = false;
 };
 
-/// Every crossing of q on the finite range [lo, hi] (lo ≤ hi), by isolateRoots.
+/// Every crossing of q on the finite range [lo, hi] (lo ≤ hi). The range is cut at q's vertex
+/// when it lies inside; each piece is then monotone (the derivative's enclosure, the hull of
+/// its end values, has one sign), so q's enclosure on it is the hull of its end values: it
+/// excludes 0 (no crossing), or the end states differ (exactly one crossing, polished by
+/// Newton inside the bracket to ctx.relTolerance of s + sOffset), or an end touches 0 without
+/// a change of state (a touch: no crossing, as in csg/root_isolation.h).
 void findCrossings(const QuadraticAlongRay& q, double lo, double hi, double sOffset,
                    TraceContext& ctx, Crossings& out);
 

@@ -101,8 +101,9 @@ private:
         if (!(dd > 0.0)) return;
         const Vec3 f = ray.origin - mCenter;
         const double tc = -glm::dot(f, d) / dd, len = std::sqrt(dd);
-        const double inv = 1.0 / mRadius, sPerT = len * inv;
-        const Vec3 p0 = (f + tc * d) * inv, u = d / len;
+        const double inv = 1.0 / mRadius, invLen = 1.0 / len;
+        const double sPerT = len * inv, tPerS = mRadius * invLen;
+        const Vec3 p0 = (f + tc * d) * inv, u = d * invLen;
         const QuadraticAlongRay q{1.0, 2.0 * glm::dot(p0, u), glm::dot(p0, p0) - 1.0};
         constexpr double kBall = 1.0 + 0x1p-20;  // window ends strictly outside the sphere
         const double sMin = (tmin - tc) * sPerT, sMax = (tmax - tc) * sPerT;
@@ -110,11 +111,11 @@ private:
         if (!(r.lo <= r.hi)) return;
         const auto at = [&](double s, int face, double clipT) {
             if (face == 0) return clipBoundary(clipT);
-            return rootBoundary(tc + s / sPerT, p0 + s * u, ctx);
+            return rootBoundary(tc + s * tPerS, p0 + s * u, ctx);
         };
         quadraticSpans(q, r, 1, tc * sPerT, ctx, [&](double sIn, int fIn, double sOut, int fOut) {
-            out.push_back({at(sIn, fIn, r.lo == sMin ? tmin : tc + sIn / sPerT),
-                           at(sOut, fOut, r.hi == sMax ? tmax : tc + sOut / sPerT)});
+            out.push_back({at(sIn, fIn, r.lo == sMin ? tmin : tc + sIn * tPerS),
+                           at(sOut, fOut, r.hi == sMax ? tmax : tc + sOut * tPerS)});
         });
         dropThinSpans(out, ctx.relTolerance);
     }
