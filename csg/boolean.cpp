@@ -13,6 +13,21 @@ namespace {
 // Below this many candidates a linear scan of bounds beats walking a tree.
 constexpr size_t kBvhThreshold = 4;
 
+/// The implicit form (≤ 0 inside) of `op` applied to two operands' forms v and c, for
+/// double, long double and Interval alike.
+template <class T>
+T combineValues(BoolOp op, const T& v, const T& c) {
+    using std::max;
+    using std::min;
+    switch (op) {
+        case BoolOp::Union: return min(v, c);
+        case BoolOp::Intersection: return max(v, c);
+        case BoolOp::Difference: return max(v, -c);
+        case BoolOp::Xor: return max(min(v, c), -max(v, c));
+    }
+    return v;
+}
+
 class BooleanNode final : public Node {
 public:
     BooleanNode(BoolOp op, std::vector<NodePtr> children)
@@ -48,45 +63,15 @@ public:
     }
 
     double value(const Vec3& p) const override {
-        double v = mChildren[0]->value(p);
-        for (size_t i = 1; i < mChildren.size(); ++i) {
-            const double c = mChildren[i]->value(p);
-            switch (mOp) {
-                case BoolOp::Union: v = std::min(v, c); break;
-                case BoolOp::Intersection: v = std::max(v, c); break;
-                case BoolOp::Difference: v = std::max(v, -c); break;
-                case BoolOp::Xor: v = std::max(std::min(v, c), -std::max(v, c)); break;
-            }
-        }
-        return v;
+        return combinedValue<double>([&](const Node& c) { return c.value(p); });
     }
 
     long double valueExtended(const LVec3& p) const override {
-        long double v = mChildren[0]->valueExtended(p);
-        for (size_t i = 1; i < mChildren.size(); ++i) {
-            const long double c = mChildren[i]->valueExtended(p);
-            switch (mOp) {
-                case BoolOp::Union: v = std::min(v, c); break;
-                case BoolOp::Intersection: v = std::max(v, c); break;
-                case BoolOp::Difference: v = std::max(v, -c); break;
-                case BoolOp::Xor: v = std::max(std::min(v, c), -std::max(v, c)); break;
-            }
-        }
-        return v;
+        return combinedValue<long double>([&](const Node& c) { return c.valueExtended(p); });
     }
 
     Interval valueInterval(const IntervalVec3& box) const override {
-        Interval v = mChildren[0]->valueInterval(box);
-        for (size_t i = 1; i < mChildren.size(); ++i) {
-            const Interval c = mChildren[i]->valueInterval(box);
-            switch (mOp) {
-                case BoolOp::Union: v = min(v, c); break;
-                case BoolOp::Intersection: v = max(v, c); break;
-                case BoolOp::Difference: v = max(v, -c); break;
-                case BoolOp::Xor: v = max(min(v, c), -max(v, c)); break;
-            }
-        }
-        return v;
+        return combinedValue<Interval>([&](const Node& c) { return c.valueInterval(box); });
     }
 
     int primitiveCount() const override {
@@ -102,6 +87,15 @@ public:
     }
 
 private:
+    /// The children's implicit forms (valueOf(child)) combined left to right by the operator.
+    template <class T, class ValueOf>
+    T combinedValue(const ValueOf& valueOf) const {
+        T v = valueOf(*mChildren[0]);
+        for (size_t i = 1; i < mChildren.size(); ++i)
+            v = combineValues<T>(mOp, v, valueOf(*mChildren[i]));
+        return v;
+    }
+
     /// Spans of child i if its bounds meet the ray within [tmin, tmax]; else leaves `s` empty.
     bool childSpans(size_t i, const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                     SpanList& s) const {

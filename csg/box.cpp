@@ -1,25 +1,48 @@
 // The axis-aligned box: a slab test that knows which face each boundary lies on.
 #include "csg/polynomial_isolation.h"
-#include "csg/primitive.h"
+#include "csg/closed_primitive.h"
 #include "csg/solids.h"
-#include "csg/sphere_trace.h"
 
 #include <algorithm>
 
 namespace kerf {
 namespace {
 
-class Box final : public Primitive {
+class Box final : public ClosedFormPrimitive<Box> {
 public:
     Box(const Vec3& lo, const Vec3& hi) { mBounds = {lo, hi}; }
 
-    void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-               SpanList& out) const override {
-        out.clear();
-        ++ctx.stats.primitiveTests;
-        if (ctx.method == TraceMethod::Interval) return intervalSpans(ray, tmin, tmax, ctx, out);
-        if (ctx.method == TraceMethod::SphereTrace)
-            return sphereTracedSpans(ray, tmin, tmax, ctx, out);
+    /// Max of the six slab distances: Lipschitz-1, exact distance inside and on the faces.
+    double value(const Vec3& p) const override {
+        const Vec3& lo = mBounds.lo;
+        const Vec3& hi = mBounds.hi;
+        const double x = std::max(lo.x - p.x, p.x - hi.x);
+        const double y = std::max(lo.y - p.y, p.y - hi.y);
+        const double z = std::max(lo.z - p.z, p.z - hi.z);
+        return std::max(std::max(x, y), z);
+    }
+
+    long double valueExtended(const LVec3& p) const override {
+        long double v = -INFINITY;
+        for (int a = 0; a < 3; ++a)
+            v = std::max({v, (long double)mBounds.lo[a] - p[a], p[a] - (long double)mBounds.hi[a]});
+        return v;
+    }
+
+    Interval valueInterval(const IntervalVec3& b) const override {
+        const Vec3& lo = mBounds.lo;
+        const Vec3& hi = mBounds.hi;
+        const Interval x = max(lo.x - b.x, b.x - hi.x);
+        const Interval y = max(lo.y - b.y, b.y - hi.y);
+        const Interval z = max(lo.z - b.z, b.z - hi.z);
+        return max(max(x, y), z);
+    }
+
+private:
+    friend class ClosedFormPrimitive<Box>;
+
+    /// TraceMethod::Closed.
+    void closedSpans(const Ray& ray, SpanList& out) const {
         const Vec3& lo = mBounds.lo;
         const Vec3& hi = mBounds.hi;
         // Slabs combined with min/max rather than data-dependent branches; the faces are
@@ -53,33 +76,6 @@ public:
         out.push_back({boundary(tin, nIn), boundary(tout, nOut)});
     }
 
-    /// Max of the six slab distances: Lipschitz-1, exact distance inside and on the faces.
-    double value(const Vec3& p) const override {
-        const Vec3& lo = mBounds.lo;
-        const Vec3& hi = mBounds.hi;
-        const double x = std::max(lo.x - p.x, p.x - hi.x);
-        const double y = std::max(lo.y - p.y, p.y - hi.y);
-        const double z = std::max(lo.z - p.z, p.z - hi.z);
-        return std::max(std::max(x, y), z);
-    }
-
-    long double valueExtended(const LVec3& p) const override {
-        long double v = -INFINITY;
-        for (int a = 0; a < 3; ++a)
-            v = std::max({v, (long double)mBounds.lo[a] - p[a], p[a] - (long double)mBounds.hi[a]});
-        return v;
-    }
-
-    Interval valueInterval(const IntervalVec3& b) const override {
-        const Vec3& lo = mBounds.lo;
-        const Vec3& hi = mBounds.hi;
-        const Interval x = max(lo.x - b.x, b.x - hi.x);
-        const Interval y = max(lo.y - b.y, b.y - hi.y);
-        const Interval z = max(lo.z - b.z, b.z - hi.z);
-        return max(max(x, y), z);
-    }
-
-private:
     /// Interval isolation of the six linear slab functions in turn, each narrowing the range.
     /// The search window is the ray's chord through the box's circumscribed ball (a bounding
     /// volume, not the slab test), so it is finite and its ends lie outside the box.
@@ -113,19 +109,8 @@ private:
         dropThinSpans(out, ctx.relTolerance);
     }
 
-    /// Sphere tracing of value() (Lipschitz 1) within the bounds.
-    void sphereTracedSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                           SpanList& out) const {
-        double t0 = tmin, t1 = tmax;
-        if (!mBounds.clipRay(ray, t0, t1) || !std::isfinite(t0)) return;
-        sphereTraceSpans([this](const Vec3& p) { return Box::value(p); }, ray, t0, t1, 1.0,
-                         t0 > tmin, ctx,
-                         [&](double t) { return rootBoundary(t, faceNormal(ray.at(t)), ctx); },
-                         [](double t, bool) { return clipBoundary(t); }, out);
-    }
-
     /// The outward normal of the face whose slab distance is largest at p (value()'s gradient).
-    Vec3 faceNormal(const Vec3& p) const {
+    Vec3 gradient(const Vec3& p) const {
         double best = -kInf;
         Vec3 n(0.0);
         for (int a = 0; a < 3; ++a) {
@@ -134,13 +119,6 @@ private:
             if (hi > best) best = hi, n = Vec3(0.0), n[a] = 1.0;
         }
         return n;
-    }
-
-    /// An end of the searched range where the ray is inside: not a surface.
-    static Boundary clipBoundary(double t) {
-        Boundary b;
-        b.t = t;
-        return b;
     }
 };
 

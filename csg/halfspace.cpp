@@ -1,9 +1,8 @@
 // The half-space dot(n, p) ≤ offset: one plane crossing per ray, computed with compensated
 // dot products so the hit is exact to a few ulps even for nearly parallel rays.
 #include "csg/polynomial_isolation.h"
-#include "csg/primitive.h"
+#include "csg/closed_primitive.h"
 #include "csg/solids.h"
-#include "csg/sphere_trace.h"
 
 #include <algorithm>
 
@@ -55,7 +54,7 @@ inline double dot2(const Vec3& n, const Vec3& v, double extra) {
     return dot2Slow(n, v, extra);
 }
 
-class HalfSpace final : public Primitive {
+class HalfSpace final : public ClosedFormPrimitive<HalfSpace> {
 public:
     HalfSpace(const Vec3& normal, double offset)
         : mNormal(normal), mOffset(offset), mInvLength(1.0 / glm::length(normal)) {
@@ -75,26 +74,6 @@ public:
         }
     }
 
-    void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-               SpanList& out) const override {
-        out.clear();
-        ++ctx.stats.primitiveTests;
-        if (ctx.method == TraceMethod::Interval) return intervalSpans(ray, tmin, tmax, ctx, out);
-        if (ctx.method == TraceMethod::SphereTrace)
-            return sphereTracedSpans(ray, tmin, tmax, ctx, out);
-        const double nd = dot2(mNormal, ray.dir, 0.0);
-        const double g0 = dot2(mNormal, ray.origin, -mOffset);  // n·o − offset: > 0 outside
-        if (nd == 0.0) {  // +0 or −0: parallel to the plane, inside everywhere or nowhere
-            if (g0 <= 0.0) out.push_back({endless(-kInf), endless(kInf)});
-            return;
-        }
-        const double t = -g0 / nd;
-        if (nd > 0.0)  // heading outward: inside before the plane
-            out.push_back({endless(-kInf), boundary(t, mNormal)});
-        else
-            out.push_back({boundary(t, mNormal), endless(kInf)});
-    }
-
     double value(const Vec3& p) const override {
         return (mNormal.x * p.x + mNormal.y * p.y + mNormal.z * p.z - mOffset) * mInvLength;
     }
@@ -109,6 +88,25 @@ public:
     }
 
 private:
+    friend class ClosedFormPrimitive<HalfSpace>;
+    /// Sphere tracing needs a finite start: an unbounded tmin starts the march at 0.
+    static constexpr bool kUnbounded = true;
+
+    /// TraceMethod::Closed.
+    void closedSpans(const Ray& ray, SpanList& out) const {
+        const double nd = dot2(mNormal, ray.dir, 0.0);
+        const double g0 = dot2(mNormal, ray.origin, -mOffset);  // n·o − offset: > 0 outside
+        if (nd == 0.0) {  // +0 or −0: parallel to the plane, inside everywhere or nowhere
+            if (g0 <= 0.0) out.push_back({endless(-kInf), endless(kInf)});
+            return;
+        }
+        const double t = -g0 / nd;
+        if (nd > 0.0)  // heading outward: inside before the plane
+            out.push_back({endless(-kInf), boundary(t, mNormal)});
+        else
+            out.push_back({boundary(t, mNormal), endless(kInf)});
+    }
+
     /// Interval isolation of the linear g(t) = n·o − offset + t·n·d on [tmin, tmax]. An
     /// infinite end is cut at a finite one beyond which g's interval extension has one sign:
     /// from a finite base tb, |g| ≥ |g'|·|t − tb| − |g(tb)| > 0 once |t − tb| > 2|g(tb)/g'|.
@@ -140,28 +138,11 @@ private:
         dropThinSpans(out, ctx.relTolerance);
     }
 
-    /// Sphere tracing of value() (normalised: Lipschitz 1). The march needs a finite start: an
-    /// unbounded tmin starts it at 0 (the comparison's rays start there).
-    void sphereTracedSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                           SpanList& out) const {
-        double t0 = tmin, t1 = tmax;
-        if (!mBounds.clipRay(ray, t0, t1)) return;
-        const bool outsideBefore = t0 > tmin;  // the bound's face is the plane itself
-        if (!std::isfinite(t0)) t0 = std::min(0.0, t1);
-        if (!std::isfinite(t0)) return;
-        sphereTraceSpans([this](const Vec3& p) { return HalfSpace::value(p); }, ray, t0, t1, 1.0,
-                         outsideBefore,
-                         ctx, [&](double t) { return rootBoundary(t, mNormal, ctx); },
-                         [&](double t, bool atStart) { return endless(atStart ? tmin : t); },
-                         out);
-    }
+    /// value() is normalised (Lipschitz 1); its gradient is the plane's normal everywhere.
+    Vec3 gradient(const Vec3&) const { return mNormal; }
 
     /// An end of an unbounded span: not a surface, like a clip of the parameter range.
-    static Boundary endless(double t) {
-        Boundary b;
-        b.t = t;
-        return b;
-    }
+    static Boundary endless(double t) { return clipBoundary(t); }
 
     Vec3 mNormal;
     double mOffset;

@@ -45,28 +45,16 @@ public:
             sphereTraceSpans([this](const Vec3& p) { return Implicit::value(p); }, ray, r.t0,
                              r.t1, mLipschitz, false, ctx,
                              [&](double t) { return rootBoundary(t, normalAt(ray.at(t)), ctx); },
-                             [&](double t, bool atStart) {
-                                 return endBoundary(ray, t, atStart ? r.startOnBox : r.endOnBox,
-                                                    atStart);
-                             },
+                             [&](double, bool atStart) { return endBoundary(ray, r, atStart); },
                              out);
             return;
         }
 
         TapeAlongRay problem{*mTape, ray};
-        bool inside = isInside(problem.value(r.t0));
-        Boundary pending = inside ? endBoundary(ray, r.t0, r.startOnBox, true) : Boundary{};
-        isolateRoots(problem, r.t0, r.t1, 0.0, ctx, [&](double t, bool entering) {
-            const Boundary b = rootBoundary(t, normalAt(ray.at(t)), ctx);
-            if (entering)
-                pending = b;
-            else
-                out.push_back({pending, b});
-            inside = entering;
-        });
-        if (inside) out.push_back({pending, endBoundary(ray, r.t1, r.endOnBox, false)});
-        // A touch (double root) can leave a span no wider than the tolerance: drop it.
-        dropThinSpans(out, ctx.relTolerance);
+        isolatedSpans(
+            problem, r.t0, r.t1, 0.0, ctx,
+            [&](double t) { return rootBoundary(t, normalAt(ray.at(t)), ctx); },
+            [&](bool atStart) { return endBoundary(ray, r, atStart); }, out);
     }
 
     /// The same crossings as spans(), but the search stops once the first surface is decided:
@@ -80,15 +68,11 @@ public:
         if (!clip(ray, tmin, tmax, r)) return false;
         TapeAlongRay problem{*mTape, ray};
         FirstSurfaceTracker tracker(tmin, tmax, ctx.relTolerance);
-        const bool inside = isInside(problem.value(r.t0));
-        tracker.start(inside, inside ? endBoundary(ray, r.t0, r.startOnBox, true) : Boundary{});
-        isolateRoots(
+        tracker.search(
             problem, r.t0, r.t1, 0.0, ctx,
-            [&](double t, bool enters) {
-                tracker.crossing(rootBoundary(t, normalAt(ray.at(t)), ctx), enters);
-            },
-            [&](double tNext) { return tracker.settledBefore(tNext); });
-        tracker.finish(endBoundary(ray, r.t1, r.endOnBox, false));
+            [&](double t) { return rootBoundary(t, normalAt(ray.at(t)), ctx); },
+            [&](bool atStart) { return endBoundary(ray, r, atStart); },
+            [](double tNext) { return tNext; });
         return tracker.result(hit, entering);
     }
 
@@ -157,12 +141,9 @@ private:
 
     /// The boundary where the clipped range starts (entering) or ends while inside f: the box
     /// face the ray crosses there, or a clip of the caller's range (primitive 0).
-    Boundary endBoundary(const Ray& ray, double t, bool onBox, bool entering) const {
-        if (!onBox) {
-            Boundary clip;
-            clip.t = t;
-            return clip;
-        }
+    Boundary endBoundary(const Ray& ray, const Range& r, bool entering) const {
+        const double t = entering ? r.t0 : r.t1;
+        if (!(entering ? r.startOnBox : r.endOnBox)) return clipBoundary(t);
         // The face is on the axis whose slab gives the latest entry / earliest exit.
         int axis = 0;
         double best = entering ? -kInf : kInf;

@@ -4,6 +4,10 @@
 #pragma once
 
 #include "csg/node.h"
+#include "csg/sphere_trace.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace kerf {
 
@@ -31,6 +35,35 @@ protected:
         Boundary b = boundary(t, n);
         b.relError = static_cast<float>(ctx.relTolerance);
         return b;
+    }
+
+    /// An end of the searched range where the ray is inside: not a surface.
+    static Boundary clipBoundary(double t) {
+        Boundary b;
+        b.t = t;
+        return b;
+    }
+
+    /// TraceMethod::SphereTrace for a leaf whose implicit form value(p) is Lipschitz-1: marches
+    /// it within the bounds, crossings taking normal(p) as their normal. Callers pass
+    /// non-virtual calls. `unbounded` (a half-space): a range starting at −inf is marched from
+    /// 0, where the comparison's rays start; else such a range is not traced.
+    template <class Value, class Normal>
+    void sphereTraceWithinBounds(const Value& value, const Normal& normal, const Ray& ray,
+                                 double tmin, double tmax, TraceContext& ctx, SpanList& out,
+                                 bool unbounded = false) const {
+        double t0 = tmin, t1 = tmax;
+        if (!mBounds.clipRay(ray, t0, t1)) return;
+        // The ray comes from outside when it starts on the bounds (a half-space's is its plane).
+        const bool outsideBefore = t0 > tmin;
+        if (unbounded && !std::isfinite(t0)) t0 = std::min(0.0, t1);
+        if (!std::isfinite(t0)) return;
+        // The ray can start inside only at t0 == tmin, or at a start moved to 0 (unbounded):
+        // either way the first span reaches back to tmin.
+        sphereTraceSpans(value, ray, t0, t1, 1.0, outsideBefore, ctx,
+                         [&](double t) { return rootBoundary(t, normal(ray.at(t)), ctx); },
+                         [&](double t, bool atStart) { return clipBoundary(atStart ? tmin : t); },
+                         out);
     }
 
 private:

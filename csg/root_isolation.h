@@ -149,6 +149,27 @@ bool isolateRoots(P& p, double tmin, double tmax, double tOffset, TraceContext& 
     return isolateRoots(p, tmin, tmax, tOffset, ctx, sink, [](double) { return false; });
 }
 
+/// Node::spans for a primitive whose spans are built from every crossing of isolateRoots over
+/// [tmin, tmax]: surface(t) makes the boundary of a crossing, end(atStart) that of a range end
+/// where the ray is inside (p.value(tmin) ≤ 0 at the start). Spans thinner than the tolerance,
+/// left by touches (double roots), are dropped.
+template <typename P, typename Surface, typename End>
+void isolatedSpans(P& p, double tmin, double tmax, double tOffset, TraceContext& ctx,
+                   Surface&& surface, End&& end, SpanList& out) {
+    bool inside = isInside(p.value(tmin));
+    Boundary pending = inside ? end(true) : Boundary{};
+    isolateRoots(p, tmin, tmax, tOffset, ctx, [&](double t, bool entering) {
+        const Boundary b = surface(t);
+        if (entering)
+            pending = b;
+        else
+            out.push_back({pending, b});
+        inside = entering;
+    });
+    if (inside) out.push_back({pending, end(false)});
+    dropThinSpans(out, ctx.relTolerance);
+}
+
 /// Node::firstSurface for a primitive whose spans are built from isolateRoots' crossings: it
 /// takes the crossings as spans() turns them into spans and decides the first surface boundary
 /// as soon as no later crossing can change it, so the search can stop there. The answer equals
@@ -205,6 +226,20 @@ public:
         if (mInside) mTail.push_back({mPending, end});
         dropThinSpans(mTail, mRelTolerance);
         mDone = firstSurfaceOf(mTail, mTmin, mTmax, mHit, mEntering);
+    }
+
+    /// The whole search, as isolatedSpans makes spans: p's crossings on [a, b] (isolateRoots),
+    /// surface(x) the boundary of a crossing at x, end(atStart) that of an end of [a, b].
+    /// horizon(xNext): a t before every crossing at x ≥ xNext, for stopping early.
+    template <typename P, typename Surface, typename End, typename Horizon>
+    void search(P& p, double a, double b, double offset, TraceContext& ctx, Surface&& surface,
+                End&& end, Horizon&& horizon) {
+        const bool inside = isInside(p.value(a));
+        start(inside, inside ? end(true) : Boundary{});
+        isolateRoots(
+            p, a, b, offset, ctx, [&](double x, bool enters) { crossing(surface(x), enters); },
+            [&](double xNext) { return settledBefore(horizon(xNext)); });
+        finish(end(false));
     }
 
     /// The first surface boundary, if there is one.

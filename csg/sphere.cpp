@@ -1,9 +1,8 @@
 // The sphere: closed-form spans with the cancellation-free discriminant of Haines et al.
 #include "csg/polynomial_isolation.h"
-#include "csg/primitive.h"
+#include "csg/closed_primitive.h"
 #include "csg/quadratic.h"
 #include "csg/solids.h"
-#include "csg/sphere_trace.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +10,7 @@
 namespace kerf {
 namespace {
 
-class Sphere final : public Primitive {
+class Sphere final : public ClosedFormPrimitive<Sphere> {
 public:
     Sphere(const Vec3& center, double radius)
         : mCenter(center), mRadius(radius), mRadius2(radius * radius) {
@@ -20,21 +19,6 @@ public:
             mBounds.lo[a] = roundDown(center[a] - radius);
             mBounds.hi[a] = roundUp(center[a] + radius);
         }
-    }
-
-    void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-               SpanList& out) const override {
-        out.clear();
-        ++ctx.stats.primitiveTests;
-        if (ctx.method == TraceMethod::Interval) return intervalSpans(ray, tmin, tmax, ctx, out);
-        if (ctx.method == TraceMethod::SphereTrace)
-            return sphereTracedSpans(ray, tmin, tmax, ctx, out);
-        const Vec3 f = ray.origin - mCenter;
-        const double m = std::max({std::fabs(f.x), std::fabs(f.y), std::fabs(f.z), mRadius});
-        const double dm = std::max({std::fabs(ray.dir.x), std::fabs(ray.dir.y), std::fabs(ray.dir.z)});
-        if (m > kSquareSafe || m < 1.0 / kSquareSafe || dm > kSquareSafe || dm < 1.0 / kSquareSafe)
-            return rescaledSpans(f, ray.dir, out);
-        closedSpans(f, ray.dir, mRadius2, 0, out);
     }
 
     double value(const Vec3& p) const override {
@@ -53,13 +37,25 @@ public:
     }
 
 private:
+    friend class ClosedFormPrimitive<Sphere>;
+
+    /// TraceMethod::Closed.
+    void closedSpans(const Ray& ray, SpanList& out) const {
+        const Vec3 f = ray.origin - mCenter;
+        const double m = std::max({std::fabs(f.x), std::fabs(f.y), std::fabs(f.z), mRadius});
+        const double dm = std::max({std::fabs(ray.dir.x), std::fabs(ray.dir.y), std::fabs(ray.dir.z)});
+        if (m > kSquareSafe || m < 1.0 / kSquareSafe || dm > kSquareSafe || dm < 1.0 / kSquareSafe)
+            return rescaledSpans(f, ray.dir, out);
+        centredSpans(f, ray.dir, mRadius2, 0, out);
+    }
+
     /// Squares of numbers between 1/kSquareSafe and kSquareSafe neither overflow nor lose
     /// precision to underflow; outside it the ray is rescaled first.
     static constexpr double kSquareSafe = 0x1p250;
 
     /// The closed form for the ray f + t·d against the centred sphere of radius² r2. Roots are
     /// scaled by 2^tExp (exact), for rays that were rescaled to keep squares in range.
-    void closedSpans(const Vec3& f, const Vec3& d, double r2, int tExp, SpanList& out) const {
+    void centredSpans(const Vec3& f, const Vec3& d, double r2, int tExp, SpanList& out) const {
         const double a = glm::dot(d, d);
         const double h = glm::dot(f, d);
         // l: the centre-relative point of the line closest to the centre. h² − a·c would
@@ -88,7 +84,7 @@ private:
         const Vec3 ds(std::ldexp(d.x, -kd), std::ldexp(d.y, -kd), std::ldexp(d.z, -kd));
         const double rs = std::ldexp(mRadius, -kp);
         // f + t·d = 2^kp·(fs + t·2^(kd−kp)·ds): the scaled root t' gives t = 2^(kp−kd)·t'.
-        closedSpans(fs, ds, rs * rs, kp - kd, out);
+        centredSpans(fs, ds, rs * rs, kp - kd, out);
     }
 
     /// Interval isolation of |o + t·d − c|² − r² on [tmin, tmax]. Normalised: lengths by r, the
@@ -120,24 +116,8 @@ private:
         dropThinSpans(out, ctx.relTolerance);
     }
 
-    /// Sphere tracing of value() (a true distance: Lipschitz 1) within the bounds.
-    void sphereTracedSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                           SpanList& out) const {
-        double t0 = tmin, t1 = tmax;
-        if (!mBounds.clipRay(ray, t0, t1) || !std::isfinite(t0)) return;
-        sphereTraceSpans([this](const Vec3& p) { return Sphere::value(p); }, ray, t0, t1, 1.0,
-                         t0 > tmin,
-                         ctx,
-                         [&](double t) { return rootBoundary(t, ray.at(t) - mCenter, ctx); },
-                         [](double t, bool) { return clipBoundary(t); }, out);
-    }
-
-    /// An end of the searched range where the ray is inside: not a surface.
-    static Boundary clipBoundary(double t) {
-        Boundary b;
-        b.t = t;
-        return b;
-    }
+    /// value() is a true distance; its gradient points away from the centre.
+    Vec3 gradient(const Vec3& p) const { return p - mCenter; }
 
     Vec3 mCenter;
     double mRadius;

@@ -13,7 +13,6 @@
 #include "csg/primitive.h"
 #include "csg/root_isolation.h"
 #include "csg/solids.h"
-#include "csg/sphere_trace.h"
 
 namespace kerf {
 namespace {
@@ -72,23 +71,18 @@ public:
         out.clear();
         ++ctx.stats.primitiveTests;
         // The closed method already isolates the quartic by intervals: Interval is the same.
-        if (ctx.method == TraceMethod::SphereTrace)
-            return sphereTracedSpans(ray, tmin, tmax, ctx, out);
+        if (ctx.method == TraceMethod::SphereTrace) {
+            // value() is a true distance: Lipschitz 1.
+            return sphereTraceWithinBounds([this](const Vec3& p) { return Torus::value(p); },
+                                           [this](const Vec3& p) { return normalAt(p); }, ray,
+                                           tmin, tmax, ctx, out);
+        }
         Setup st;
         if (!setUp(ray, tmin, tmax, st)) return;
-        bool inside = isInside(st.q.value(st.sA));
-        Boundary pending = inside ? endBoundary(ray, st.t0, st.t0 == tmin) : Boundary{};
-        isolateRoots(st.q, st.sA, st.sB, st.tc * st.sPerT, ctx, [&](double s, bool entering) {
-            const Boundary bd = crossingBoundary(ray, st, s, ctx);
-            if (entering)
-                pending = bd;
-            else
-                out.push_back({pending, bd});
-            inside = entering;
-        });
-        if (inside) out.push_back({pending, endBoundary(ray, st.t1, st.t1 == tmax)});
-        // A touch of the surface can leave a span no wider than the tolerance: drop it.
-        dropThinSpans(out, ctx.relTolerance);
+        isolatedSpans(
+            st.q, st.sA, st.sB, st.tc * st.sPerT, ctx,
+            [&](double s) { return crossingBoundary(ray, st, s, ctx); },
+            [&](bool atStart) { return endBoundary(ray, st, atStart); }, out);
     }
 
     /// The same crossings as spans(), but the search stops once the first surface is decided.
@@ -100,20 +94,16 @@ public:
         Setup st;
         if (!setUp(ray, tmin, tmax, st)) return false;
         FirstSurfaceTracker tracker(tmin, tmax, ctx.relTolerance);
-        const bool inside = isInside(st.q.value(st.sA));
-        tracker.start(inside, inside ? endBoundary(ray, st.t0, st.t0 == tmin) : Boundary{});
-        isolateRoots(
+        tracker.search(
             st.q, st.sA, st.sB, st.tc * st.sPerT, ctx,
-            [&](double s, bool enters) {
-                tracker.crossing(crossingBoundary(ray, st, s, ctx), enters);
-            },
+            [&](double s) { return crossingBoundary(ray, st, s, ctx); },
+            [&](bool atStart) { return endBoundary(ray, st, atStart); },
             [&](double sNext) {
                 // Crossings at s ≥ sNext map to t ≥ tc + sNext/sPerT (rounding is monotone),
                 // less what refine() may move them.
                 const double t = st.tc + sNext / st.sPerT;
-                return tracker.settledBefore(t - 2.0 * kRefineLimit * std::fabs(t));
+                return t - 2.0 * kRefineLimit * std::fabs(t);
             });
-        tracker.finish(endBoundary(ray, st.t1, st.t1 == tmax));
         return tracker.result(hit, entering);
     }
 
@@ -137,6 +127,7 @@ private:
     struct Setup {
         TorusRay q;
         double t0, t1;  ///< the caller's range clipped to the bounds
+        bool t0Clip, t1Clip;  ///< t0 is the caller's tmin, t1 its tmax: not on the surface
         double sA, sB;  ///< the same in the normalised parameter s
         double tc;      ///< t of the point nearest the centre, where s = 0
         double sPerT;   ///< s = (t − tc)·sPerT
@@ -148,6 +139,8 @@ private:
         st.t0 = tmin, st.t1 = tmax;
         const double dd = glm::dot(ray.dir, ray.dir);
         if (!(dd > 0.0) || !mBounds.clipRay(ray, st.t0, st.t1)) return false;
+        st.t0Clip = st.t0 == tmin;
+        st.t1Clip = st.t1 == tmax;
 
         // Normalise: lengths by S, the parameter by arc length from the point nearest the centre.
         const double scale = mR + mr, inv = 1.0 / scale, len = std::sqrt(dd);
@@ -187,27 +180,10 @@ private:
 
     /// An end of the clipped range: a clip of the caller's range, or (measure zero) a point of
     /// the surface where the box touches the torus.
-    Boundary endBoundary(const Ray& ray, double t, bool clipped) const {
-        if (!clipped) return boundary(t, normalAt(ray.at(t)));
-        Boundary bd;
-        bd.t = t;
-        return bd;
-    }
-
-    /// Sphere tracing of value() (a true distance: Lipschitz 1) within the bounds.
-    void sphereTracedSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                           SpanList& out) const {
-        double t0 = tmin, t1 = tmax;
-        if (!mBounds.clipRay(ray, t0, t1) || !std::isfinite(t0)) return;
-        sphereTraceSpans([this](const Vec3& p) { return Torus::value(p); }, ray, t0, t1, 1.0,
-                         t0 > tmin, ctx,
-                         [&](double t) { return rootBoundary(t, normalAt(ray.at(t)), ctx); },
-                         [](double t, bool) {
-                             Boundary b;
-                             b.t = t;
-                             return b;
-                         },
-                         out);
+    Boundary endBoundary(const Ray& ray, const Setup& st, bool atStart) const {
+        const double t = atStart ? st.t0 : st.t1;
+        if (atStart ? st.t0Clip : st.t1Clip) return clipBoundary(t);
+        return boundary(t, normalAt(ray.at(t)));
     }
 
     /// Outward normal (not unit): ∇h/2 = ((ρ − R)·x/ρ, y, (ρ − R)·z/ρ).

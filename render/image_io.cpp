@@ -1,22 +1,16 @@
 /// @file render/image_io.cpp
 /// @brief Image files through OpenImageIO, written to a temporary file beside the target and
-/// renamed onto it, so that a failure never leaves a half file nor clobbers an earlier one.
+/// renamed onto it (render/atomic_file.h), so a failure never leaves a half file nor clobbers
+/// an earlier one.
 #include "render/image.h"
 
+#include "render/atomic_file.h"
 #include "render/srgb.h"
 
 #include <OpenImageIO/imageio.h>
 
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <fstream>
 #include <memory>
 
 namespace kerf {
@@ -41,36 +35,6 @@ Encoding encodingFor(const std::string& ext) {
 
 [[noreturn]] void fail(const std::string& path, const std::string& reason) {
     throw ImageWriteError("cannot write '" + path + "': " + reason);
-}
-
-/// The permissions a plain new file would get: those of the file being replaced, else
-/// 0666 less the umask. The umask is read from /proc, because umask() can only be read by
-/// setting it, which would race with other threads creating files.
-mode_t permissionsFor(const std::string& path) {
-    struct stat existing;
-    if (::stat(path.c_str(), &existing) == 0 && S_ISREG(existing.st_mode))
-        return existing.st_mode & 07777;
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    while (std::getline(status, line))
-        if (line.rfind("Umask:", 0) == 0)
-            return 0666 & ~mode_t(std::strtoul(line.c_str() + 6, nullptr, 8));
-    return 0644;
-}
-
-/// A uniquely named, freshly created file beside `path` whose name ends with the real
-/// extension, so OpenImageIO picks the format from it: "dir/.name.kerf-tmp-XXXXXX.ext".
-std::string createTemporaryBeside(const std::string& path, const std::string& ext) {
-    const size_t slash = path.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
-    const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-    std::string pattern = dir + "." + name + ".kerf-tmp-XXXXXX" + ext;
-    const int fd = mkstemps(pattern.data(), int(ext.size()));
-    if (fd < 0) fail(path, std::string("cannot create a temporary file: ") + std::strerror(errno));
-    // mkstemps makes the file private (0600); the image should not end up so.
-    ::fchmod(fd, permissionsFor(path));
-    ::close(fd);
-    return pattern;
 }
 
 /// Writes `image` to `file` (format by extension); returns an error message or "".
@@ -107,14 +71,12 @@ void writeImage(const Image& image, const std::string& path) {
         image.pixels.size() != size_t(image.width) * image.height * image.channels)
         fail(path, "the image is empty or its pixel buffer does not match its size");
 
-    const std::string temporary = createTemporaryBeside(path, ext);
-    std::string error = writeWithOiio(image, temporary, encoding);
-    if (error.empty() && std::rename(temporary.c_str(), path.c_str()) != 0)
-        error = std::string("cannot rename the temporary file onto it: ") + std::strerror(errno);
-    if (!error.empty()) {
-        std::remove(temporary.c_str());
-        fail(path, error);
-    }
+    // The temporary keeps the real extension, so OpenImageIO picks the format from it.
+    const std::string error =
+        writeThroughTemporary(path, ext, [&](int, const std::string& temporary) {
+            return writeWithOiio(image, temporary, encoding);
+        });
+    if (!error.empty()) fail(path, error);
 }
 
 Image readImage(const std::string& path) {
