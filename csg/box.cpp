@@ -65,7 +65,10 @@ private:
         }
         const double tin = std::max(std::max(tNear[0], tNear[1]), tNear[2]);
         const double tout = std::min(std::min(tFar[0], tFar[1]), tFar[2]);
-        if (!(tin < tout)) return;  // miss, or touching an edge or corner only
+        // A touch of an edge or corner (tin == tout) is kept as a zero-width span: a Boolean
+        // parent then sees this operand at the tie (so a union of abutting boxes enters through
+        // the outer face, not the seam), and drops the sliver afterwards; alone it is no hit.
+        if (!(tin <= tout)) return;
         // Entering through the face the ray runs into: the lo face when d > 0 (normal −e),
         // the hi face when d < 0 (normal +e); leaving is the opposite face.
         const int axisIn = tNear[0] == tin ? 0 : tNear[1] == tin ? 1 : 2;

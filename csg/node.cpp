@@ -7,6 +7,7 @@ bool firstSurfaceOf(const SpanList& spans, double tmin, double tmax, Boundary& h
                     bool& entering) {
     for (const Span& s : spans) {
         if (s.in.t > tmax) return false;
+        if (!(s.in.t < s.out.t)) continue;  // a zero-width touch is not a crossing
         if (s.in.t > tmin && s.in.isSurface()) {
             hit = s.in;
             entering = true;
