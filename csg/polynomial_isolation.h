@@ -100,6 +100,10 @@ struct FrustumAlongRay {
     double length;  ///< normalised axis length
 };
 
+/// Half-width of the search window in normalised units (the solid lies in [−1, 1]): a hair
+/// wider, so the window's ends lie strictly outside the solid.
+constexpr double kNormalisedWindow = 1.0 + 0x1p-20;
+
 /// Face numbers of a frustum's boundaries.
 enum FrustumFace { kFrustumWindow = 0, kFrustumLateral = 1, kFrustumBase = 2, kFrustumTop = 3 };
 
@@ -109,8 +113,7 @@ enum FrustumFace { kFrustumWindow = 0, kFrustumLateral = 1, kFrustumBase = 2, kF
 template <class Emit>
 void frustumSpans(const FrustumAlongRay& f, double sLo, double sHi, double sOffset,
                   TraceContext& ctx, Emit&& emit) {
-    constexpr double kBall = 1.0 + 0x1p-20;  // ends strictly outside the solid
-    FacedRange r{std::max(sLo, -kBall), std::min(sHi, kBall)};
+    FacedRange r{std::max(sLo, -kNormalisedWindow), std::min(sHi, kNormalisedWindow)};
     if (!(r.lo <= r.hi)) return;
     const Vec3& g = f.g;
     const Vec3& u = f.u;

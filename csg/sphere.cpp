@@ -101,9 +101,8 @@ private:
         const double sPerT = len * inv, tPerS = mRadius * invLen;
         const Vec3 p0 = (f + tc * d) * inv, u = d * invLen;
         const QuadraticAlongRay q{1.0, 2.0 * glm::dot(p0, u), glm::dot(p0, p0) - 1.0};
-        constexpr double kBall = 1.0 + 0x1p-20;  // window ends strictly outside the sphere
         const double sMin = (tmin - tc) * sPerT, sMax = (tmax - tc) * sPerT;
-        const FacedRange r{std::max(-kBall, sMin), std::min(kBall, sMax)};
+        const FacedRange r{std::max(-kNormalisedWindow, sMin), std::min(kNormalisedWindow, sMax)};
         if (!(r.lo <= r.hi)) return;
         const auto at = [&](double s, int face, double clipT) {
             if (face == 0) return clipBoundary(clipT);
