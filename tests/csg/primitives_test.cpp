@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <random>
+#include <sstream>
 #include <vector>
 
 using namespace kerf;
@@ -114,6 +115,15 @@ struct Comparison {
             REQUIRE(nIn <= 1e-12L);
             REQUIRE(nOut <= 1e-12L);
         }
+    }
+
+    /// The worst errors and the counts, for INFO and WARN lines.
+    std::string summary(const char* name) const {
+        std::ostringstream out;
+        out << name << ": worst relative t error " << double(worstT) << ", worst normal error "
+            << double(worstN) << ", " << hits << " hits of " << compared << " (" << skipped
+            << " grazing skipped)";
+        return out.str();
     }
 };
 
@@ -258,14 +268,11 @@ TEST_CASE("Sphere::spans") {
                       ray, radius);
         }
     }
-    INFO("worst relative t error " << double(cmp.worstT) << ", worst normal error "
-                                   << double(cmp.worstN) << ", " << cmp.hits << " hits of "
-                                   << cmp.compared << " (" << cmp.skipped << " grazing skipped)");
+    INFO(cmp.summary("sphere"));
     CHECK(cmp.hits > 4000);
     CHECK(cmp.compared - cmp.hits > 4000);
     CHECK(cmp.skipped < 200);
-    WARN("sphere: worst relative t error " << double(cmp.worstT) << ", normal "
-                                           << double(cmp.worstN));
+    WARN(cmp.summary("sphere"));
 }
 
 TEST_CASE("Box::spans") {
@@ -282,11 +289,10 @@ TEST_CASE("Box::spans") {
             cmp.check([&](const Ray& r) { return boxReference(lo, hi, r); }, *box, ray, size);
         }
     }
-    INFO("worst relative t error " << double(cmp.worstT) << ", " << cmp.hits << " hits of "
-                                   << cmp.compared << " (" << cmp.skipped << " skipped)");
+    INFO(cmp.summary("box"));
     CHECK(cmp.hits > 4000);
     CHECK(cmp.compared - cmp.hits > 4000);
-    WARN("box: worst relative t error " << double(cmp.worstT));
+    WARN(cmp.summary("box"));
 }
 
 TEST_CASE("Cylinder::spans") {
@@ -306,14 +312,11 @@ TEST_CASE("Cylinder::spans") {
                       ray, size);
         }
     }
-    INFO("worst relative t error " << double(cmp.worstT) << ", worst normal error "
-                                   << double(cmp.worstN) << ", " << cmp.hits << " hits of "
-                                   << cmp.compared << " (" << cmp.skipped << " grazing skipped)");
+    INFO(cmp.summary("cylinder"));
     CHECK(cmp.hits > 6000);
     CHECK(cmp.compared - cmp.hits > 6000);
     CHECK(cmp.skipped < 300);
-    WARN("cylinder: worst relative t error " << double(cmp.worstT) << ", normal "
-                                             << double(cmp.worstN));
+    WARN(cmp.summary("cylinder"));
 }
 
 TEST_CASE("Cone::spans") {
@@ -337,14 +340,11 @@ TEST_CASE("Cone::spans") {
                       size);
         }
     }
-    INFO("worst relative t error " << double(cmp.worstT) << ", worst normal error "
-                                   << double(cmp.worstN) << ", " << cmp.hits << " hits of "
-                                   << cmp.compared << " (" << cmp.skipped << " grazing skipped)");
+    INFO(cmp.summary("cone"));
     CHECK(cmp.hits > 6000);
     CHECK(cmp.compared - cmp.hits > 6000);
     CHECK(cmp.skipped < 300);
-    WARN("cone: worst relative t error " << double(cmp.worstT) << ", normal "
-                                         << double(cmp.worstN));
+    WARN(cmp.summary("cone"));
 }
 
 TEST_CASE("HalfSpace::spans") {
@@ -363,7 +363,7 @@ TEST_CASE("HalfSpace::spans") {
     }
     // The compensated dot products make the crossing exact to a few ulps.
     CHECK(cmp.worstT <= 1e-15L);
-    WARN("halfspace: worst relative t error " << double(cmp.worstT));
+    WARN(cmp.summary("halfspace"));
 }
 
 TEST_CASE("Node::bounds of the closed-form primitives") {

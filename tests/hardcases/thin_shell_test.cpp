@@ -14,6 +14,24 @@
 using namespace kerf;
 using namespace kerf::test;
 
+namespace {
+
+/// The reference spans cut to the side of the plane y = c (at ray parameter ty) that holds the
+/// open shell, y ≤ c: a span crossing the plane ends (or starts) there, exactly to 1e-15·ty.
+std::vector<RefSpan> belowPlane(const std::vector<RefSpan>& spans, const Ray& ray, LD ty) {
+    std::vector<RefSpan> ref;
+    const bool downward = ray.dir.y < 0;
+    for (RefSpan s : spans) {
+        if (downward ? s.out <= ty : s.in >= ty) continue;
+        if (downward && s.in < ty) s = {ty, s.out, 1e-15L * ty, s.errOut};
+        if (!downward && s.out > ty) s = {s.in, ty, s.errIn, 1e-15L * ty};
+        ref.push_back(s);
+    }
+    return ref;
+}
+
+}  // namespace
+
 
 TEST_CASE("Thin spherical shells cut open, on grazing rays") {
     Random rng(301);
@@ -40,14 +58,7 @@ TEST_CASE("Thin spherical shells cut open, on grazing rays") {
             const RefSpan outer = chord(oo, R, far, a, tolerance), inner = chord(oi, Rin, far, a, tolerance);
             // Clip to y ≤ c.y: the ray's parameter range on that side.
             const LD ty = (LD(c.y) - ray.origin.y) / ray.dir.y;
-            std::vector<RefSpan> ref;
-            for (RefSpan s : shellSpans(outer, oi, inner)) {
-                const bool downward = ray.dir.y < 0;
-                if (downward ? s.out <= ty : s.in >= ty) continue;
-                if (downward && s.in < ty) s = {ty, s.out, 1e-15L * ty, s.errOut};
-                if (!downward && s.out > ty) s = {s.in, ty, s.errIn, 1e-15L * ty};
-                ref.push_back(s);
-            }
+            const std::vector<RefSpan> ref = belowPlane(shellSpans(outer, oi, inner), ray, ty);
             SpanList got;
             shell->spans(ray, 0.0, kInf, ctx, got);
             ++tally.rays;
@@ -122,14 +133,7 @@ TEST_CASE("Thin implicit shells found by interval root isolation") {
             if (!oo.hit()) continue;
             const RefSpan o = chord(oo, 1, far, 1, 2 * tolerance), in = chord(oi, Rin, far, 1, 2 * tolerance);
             const LD ty = -LD(ray.origin.y) / ray.dir.y;  // the box's top face y = 0
-            std::vector<RefSpan> ref;
-            for (RefSpan s : shellSpans(o, oi, in)) {
-                const bool downward = ray.dir.y < 0;
-                if (downward ? s.out <= ty : s.in >= ty) continue;
-                if (downward && s.in < ty) s = {ty, s.out, 1e-15L * ty, s.errOut};
-                if (!downward && s.out > ty) s = {s.in, ty, s.errIn, 1e-15L * ty};
-                ref.push_back(s);
-            }
+            const std::vector<RefSpan> ref = belowPlane(shellSpans(o, oi, in), ray, ty);
             SpanList got;
             shell->spans(ray, 0.0, kInf, ctx, got);
             ++tally.rays;
