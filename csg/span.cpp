@@ -36,6 +36,19 @@ bool thin(const Boundary& a, const Boundary& b, double relTolerance) {
     return b.t - a.t <= rel * std::max(std::fabs(a.t), std::fabs(b.t));
 }
 
+/// Which of two boundaries at the same t comes first when the tie is broken (< 0: a, > 0: b,
+/// 0: undecided). A clip stands for a surface somewhere beyond the range it clips, so it
+/// comes before the surfaces at t when the ray enters there and after them when it leaves;
+/// surfaces go in primitive order. The order depends on neither operand's position, so the
+/// children of a commutative operation give the same boundaries in any order.
+int tieOrder(const Boundary& a, bool aEnters, const Boundary& b, bool bEnters) {
+    auto rank = [](const Boundary& x, bool enters) { return x.isSurface() ? 0 : enters ? -1 : 1; };
+    const int ra = rank(a, aEnters), rb = rank(b, bEnters);
+    if (ra != rb) return ra < rb ? -1 : 1;
+    if (a.primitive != b.primitive) return a.primitive < b.primitive ? -1 : 1;
+    return 0;
+}
+
 }  // namespace
 
 void SpanList::grow() {
@@ -66,8 +79,14 @@ void combineSpans(BoolOp op, const SpanList& a, const SpanList& b, double relTol
         const bool now = evaluate(op, inA, inB);
         if (now != inResult) {
             // The boundary that made the change: A's when A alone would have made it (a fixed
-            // preference keeps ties deterministic), else B's.
-            const bool fromA = takeA && evaluate(op, inA, wasB) != evaluate(op, wasA, wasB);
+            // preference keeps ties deterministic), else B's. Two events at once are taken in
+            // tie order: the first made the change if it alone would have.
+            bool fromA = takeA && evaluate(op, inA, wasB) != evaluate(op, wasA, wasB);
+            if (takeA && takeB) {
+                const int order = tieOrder(boundaryAt(a, ia), inA, boundaryAt(b, ib), inB);
+                if (order < 0) fromA = evaluate(op, inA, wasB) != inResult;
+                if (order > 0) fromA = evaluate(op, wasA, inB) == inResult;
+            }
             Boundary bd = fromA ? boundaryAt(a, ia) : boundaryAt(b, ib);
             // The result's outward normal: a cutter's surface faces the other way, and so does
             // either operand's surface where it lies inside the other operand of a xor.

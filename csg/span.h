@@ -117,6 +117,8 @@ enum class BoolOp { Union, Intersection, Difference, Xor };
 /// out = a op b. Both inputs sorted and disjoint; so is the result. At equal t the
 /// combination is decided as if the boundaries coincided exactly, so coincident faces leave no
 /// zero-width sliver; then dropThinSpans removes what is thinner than its boundaries' error.
+/// The boundary kept at such a tie depends only on the two boundaries (a clip yields to a
+/// surface where the surface decides; surfaces go by primitive id), not on which operand is a.
 /// Xor boundaries inside the other operand are flipped. `out` must not alias a or b.
 void combineSpans(BoolOp op, const SpanList& a, const SpanList& b, double relTolerance,
                   SpanList& out);
