@@ -189,3 +189,28 @@ TEST_CASE("fillMaterial: the innermost material wins", "[span]") {
     CHECK(s[0].in.material == 3);
     CHECK(s[0].out.material == 3);
 }
+
+TEST_CASE("combineSpans: a tie is decided by the boundaries, whichever operand comes first",
+          "[span]") {
+    // A clip (primitive 0) stands for a surface beyond the range it ends: where a surface
+    // decides the result at the same t, the surface is kept.
+    SpanList body = spansOf({{1, 4}}, 1), clipped = spansOf({{1, 3}}, 2);
+    clipped[0].in = bd(1, 0, Vec3(0.0));
+    SpanList r;
+    for (bool swap : {false, true}) {
+        INFO("swapped " << swap);
+        combineSpans(BoolOp::Intersection, swap ? clipped : body, swap ? body : clipped, 1e-12, r);
+        REQUIRE(r.size() == 1);
+        CHECK(r[0].in.primitive == 1);  // the body's entry face, not the clip
+        CHECK(r[0].out.primitive == 2);
+        combineSpans(BoolOp::Union, swap ? clipped : body, swap ? body : clipped, 1e-12, r);
+        REQUIRE(r.size() == 1);
+        CHECK(r[0].in.primitive == 0);  // the clipped operand may reach before 1: still a clip
+        CHECK(r[0].out.primitive == 1);
+        // Two surfaces at the same t: the lower primitive id, in either order.
+        combineSpans(BoolOp::Union, swap ? spansOf({{1, 3}}, 7) : spansOf({{1, 2}}, 5),
+                     swap ? spansOf({{1, 2}}, 5) : spansOf({{1, 3}}, 7), 1e-12, r);
+        REQUIRE(r.size() == 1);
+        CHECK(r[0].in.primitive == 5);
+    }
+}
