@@ -1,4 +1,5 @@
-// The scene's objects behind one BVH, searched near to far for the first surface crossing.
+// The scene's objects behind one BVH, searched near to far for the first surface crossing;
+// coincident surfaces of separate objects are told apart by a fixed rule, not by ulps.
 #include "csg/scene_geometry.h"
 
 #include <cmath>
@@ -12,6 +13,37 @@ std::vector<Bounds3> objectBounds(const std::vector<NodePtr>& objects) {
     boxes.reserve(objects.size());
     for (const NodePtr& o : objects) boxes.push_back(o->bounds());
     return boxes;
+}
+
+/// How far along the ray (in t) another surface may be computed and still coincide with the
+/// hit h: within h's error bound at this size, counting h's own relError or only rounding.
+double coincidenceWindow(const Ray& ray, const Hit& h, bool withRelError) {
+    const double rel = withRelError ? h.relError : 0.0;
+    return hitErrorBound(ray, h.t, ray.at(h.t), rel) / glm::length(ray.dir);
+}
+
+/// Whether the new hit h replaces the best so far. Surfaces of two objects at one place are
+/// one crossing, decided by a fixed rule rather than by ulps of t or the search order:
+///  - where the ray leaves one object and enters the other within either's error (relError
+///    included), it meets the one it enters: it passes from one into the other, and a ray
+///    leaving the other would start inside this one;
+///  - where it enters (or leaves) both within rounding, the object listed first wins.
+///    Within a root finder's error the nearer estimate still wins, as before.
+/// The winner's relError is widened to reach the other surface, so rays leaving it start past
+/// both.
+bool preferOrMerge(const Ray& ray, Hit& h, Hit& best) {
+    const double gap = h.t - best.t;
+    const bool passing = h.entering != best.entering;
+    const double window = std::max(coincidenceWindow(ray, h, passing),
+                                   coincidenceWindow(ray, best, passing));
+    if (gap < -window) return true;
+    if (gap > window) return false;
+    const bool takeNew = passing ? h.entering : h.object < best.object;
+    Hit& winner = takeNew ? h : best;
+    const double other = takeNew ? best.relError : h.relError;
+    const double t = std::fabs(winner.t);
+    winner.relError = std::max(winner.relError, other) + (t > 0.0 ? std::fabs(gap) / t : 0.0);
+    return takeNew;
 }
 
 }  // namespace
@@ -28,7 +60,6 @@ std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double
         Boundary bd;
         bool entering = true;
         if (!mObjects[index]->firstSurface(ray, tmin, nearest, ctx, bd, entering)) return nearest;
-        if (best && bd.t >= best->t) return nearest;
         Hit h;
         h.t = bd.t;
         const double len = glm::length(bd.normal);
@@ -38,8 +69,10 @@ std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double
         h.primitive = bd.primitive;
         h.relError = bd.relError;
         h.object = index;
+        if (best && !preferOrMerge(ray, h, *best)) return nearest;
         best = h;
-        nearest = h.t;
+        // Farther objects cannot win, but one whose surface coincides with this one can.
+        nearest = std::min(nearest, h.t + coincidenceWindow(ray, h, true));
         return nearest;
     });
     return best;

@@ -6,6 +6,8 @@
 #include "csg/bvh.h"
 #include "csg/node.h"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -18,14 +20,35 @@ struct Hit {
     int32_t material = 0;  ///< never kNoMaterial: objects without one get 0, the default
     uint32_t primitive = 0;
     int object = -1;
-    double relError = 0.0;  ///< Boundary::relError of the surface hit
+    /// Boundary::relError of the surface hit, widened to cover any other object's surface
+    /// that coincides with it (see nearestHit), so a ray leaving the hit starts past both.
+    double relError = 0.0;
 };
+
+/// Rounding operations counted in the error of a computed hit point (render/ray_offset.h
+/// explains the bound).
+constexpr double kHitRoundingOps = 16.0;
+
+/// An upper bound on the distance between the computed hit point `p` = ray.at(t) and the true
+/// surface, for a hit whose distance is within relative error `relTolerance` (Hit::relError):
+/// rounding of coordinates of this size, plus the root finder's error along the ray.
+inline double hitErrorBound(const Ray& ray, double t, const Vec3& p, double relTolerance) {
+    const Vec3 ap = glm::abs(p);
+    const Vec3 ao = glm::abs(ray.origin);
+    const double magnitude = std::max({ap.x, ap.y, ap.z, ao.x, ao.y, ao.z});
+    const double rounding = kHitRoundingOps * magnitude * 0x1.0p-52;
+    return rounding + relTolerance * std::abs(t) * glm::length(ray.dir);
+}
 
 class SceneGeometry {
 public:
     explicit SceneGeometry(std::vector<NodePtr> objects);
 
-    /// The first surface crossing with tmin < t ≤ tmax, over all objects.
+    /// The first surface crossing with tmin < t ≤ tmax, over all objects. Crossings of
+    /// several objects that coincide within their error (hitErrorBound) are one place, decided
+    /// whatever order the search finds them in: the ray meets the object it enters there
+    /// rather than one it leaves (it passes from one into the other), else the object listed
+    /// first.
     std::optional<Hit> nearestHit(const Ray& ray, double tmin, double tmax,
                                   TraceContext& ctx) const;
 

@@ -16,27 +16,16 @@
 /// leaves. Both terms scale with the scene: a scene scaled by 1e-6 or 1e6 gets offsets scaled
 /// by the same factor and renders the same. Lengths that matter for shading (Beer absorption,
 /// mist) are measured from p itself, not from the moved origin, so the offset does not bias them.
+///
+/// The bound itself (hitErrorBound) lives beside Hit in csg/scene_geometry.h: the nearest-hit
+/// search uses it too, to tell when surfaces of two objects coincide. A hit with such a twin
+/// carries a relError widened by their distance, so the new ray starts past both surfaces and
+/// neither re-hits the one behind it nor misses the one it is in.
 #pragma once
 
-#include "csg/types.h"
-
-#include <algorithm>
-#include <cmath>
+#include "csg/scene_geometry.h"
 
 namespace kerf {
-
-/// Rounding operations counted in the bound (see the file comment).
-constexpr double kHitRoundingOps = 16.0;
-
-/// An upper bound on the distance between the computed hit point `p` = ray.at(t) and the true
-/// surface, for a hit whose distance is within relative error `relTolerance` (Hit::relError).
-inline double hitErrorBound(const Ray& ray, double t, const Vec3& p, double relTolerance) {
-    const Vec3 ap = glm::abs(p);
-    const Vec3 ao = glm::abs(ray.origin);
-    const double magnitude = std::max({ap.x, ap.y, ap.z, ao.x, ao.y, ao.z});
-    const double rounding = kHitRoundingOps * magnitude * 0x1.0p-52;
-    return rounding + relTolerance * std::abs(t) * glm::length(ray.dir);
-}
 
 /// The origin for a ray leaving the surface at `p` on the side `side` points to (a unit
 /// normal oriented toward where the new ray goes), `errorBound` from hitErrorBound.
