@@ -2,7 +2,6 @@
 #include "lang/parser.h"
 #include "lang_test_util.h"
 
-#include <chrono>
 
 using namespace kerf;
 using kerf::test::compileText;
@@ -195,8 +194,10 @@ TEST_CASE("diagnostics: syntax errors") {
     requireOneError("object sphere {} material ;", 1, 27, "expected a material name after 'material', found ';'");
 }
 
-TEST_CASE("diagnostics: nesting 100,000 levels deep is an error, fast") {
-    const auto start = std::chrono::steady_clock::now();
+// Each section expects exactly one diagnostic: a parser that recursed per level would crash
+// here, and one that cascaded would report more. (No wall-clock bound: it could only fail on
+// a busy machine.)
+TEST_CASE("diagnostics: nesting 100,000 levels deep is one error") {
     SECTION("parentheses") {
         const std::string text = "let a = " + std::string(100000, '(') + "1" + std::string(100000, ')') + ";";
         requireOneError(text, 1, 9 + kMaxNesting, "nesting too deep");
@@ -226,8 +227,6 @@ TEST_CASE("diagnostics: nesting 100,000 levels deep is an error, fast") {
         REQUIRE(c.sink.errorCount() == 1);
         CHECK_THAT(c.sink.diagnostics()[0].message, Catch::Matchers::Contains("nested too deeply"));
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    CHECK(seconds < 2.0);
 }
 
 TEST_CASE("diagnostics: several errors in one run, no cascades") {

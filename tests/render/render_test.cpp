@@ -205,7 +205,11 @@ TEST_CASE("render: statistics, options and progress") {
         CHECK(r.stats.refractionRays == 0);
         CHECK(r.stats.trace.primitiveTests > 0);
         CHECK(r.stats.tolerance == Approx(defaultTolerance(10, 40)));
-        CHECK(r.stats.secondsTrace >= 0);
+        // Every traced ray that hits sends at most one shadow ray per light, and there are
+        // no refractions here: a count of rays traced twice or lost would break this.
+        const uint64_t traced = r.stats.cameraRays + r.stats.reflectionRays;
+        CHECK(r.stats.shadowRays <= traced * scene.lights.size());
+        CHECK(r.stats.reflectionRays <= r.stats.cameraRays * uint64_t(scene.settings.maxDepth));
     }
 
     SECTION("an explicit tolerance is the one in force") {
