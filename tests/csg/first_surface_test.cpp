@@ -12,8 +12,10 @@
 #include "csg/expr.h"
 #include "csg/solids.h"
 #include "csg/tape.h"
+#include "util/oracles.h"
 
 using namespace kerf;
+using kerf::test::gaussianUnit;
 
 namespace {
 
@@ -31,12 +33,6 @@ std::shared_ptr<const Tape> gyroidTape() {
 }
 
 NodePtr gyroid() { return makeImplicit(gyroidTape(), {Vec3(-1.0), Vec3(1.0)}); }
-
-Vec3 unitRandom(std::mt19937_64& rng) {
-    std::normal_distribution<double> n;
-    const Vec3 v(n(rng), n(rng), n(rng));
-    return v / glm::length(v);
-}
 
 struct Comparison {
     int rays = 0;
@@ -88,7 +84,7 @@ Comparison compareRandom(const Node& node, const Vec3& centre, double half, int 
                                          Vec3(2.0 * unit(rng) - 1.0, 2.0 * unit(rng) - 1.0,
                                               2.0 * unit(rng) - 1.0) *
                                          (i % 4 == 0 ? 0.6 : 2.5);
-        const Vec3 target = centre + 0.7 * half * unitRandom(rng) * unit(rng);
+        const Vec3 target = centre + 0.7 * half * gaussianUnit(rng) * unit(rng);
         const Vec3 dir = glm::normalize(target - origin) * (0.05 + 4.0 * unit(rng));
         const Ray ray{origin, dir};
         const double reach = 6.0 * half / glm::length(dir);  // t across the whole region
@@ -183,7 +179,7 @@ TEST_CASE("Tape::evalIntervalAlongRay with sin and cos of shared operands") {
     int misses = 0;
     std::string firstMiss;
     for (int i = 0; i < 3000; ++i) {
-        Ray ray{2.0 * unitRandom(rng) * unit(rng), unitRandom(rng) * (0.1 + 3.0 * unit(rng))};
+        Ray ray{2.0 * gaussianUnit(rng) * unit(rng), gaussianUnit(rng) * (0.1 + 3.0 * unit(rng))};
         if (i % 10 == 0) ray.dir.y = 0.0;  // an axis the ray does not move along
         const double t0 = 2.0 * unit(rng) - 1.0, t1 = t0 + std::pow(10.0, -6.0 * unit(rng));
         Interval f, dfdt;

@@ -8,34 +8,17 @@
 #include "csg/expr.h"
 #include "csg/solids.h"
 #include "csg/tape.h"
+#include "util/oracles.h"
 
 using namespace kerf;
+using kerf::test::gaussianUnit;
+using kerf::test::gyroidExpr;
+using kerf::test::sphereExpr;
 
 namespace {
 
-ExprId sumOfSquaresMinusOne(ExprGraph& g) {
-    const ExprId s =
-        g.binary(Op::Add, g.binary(Op::Add, g.unary(Op::Square, g.x()), g.unary(Op::Square, g.y())),
-                 g.unary(Op::Square, g.z()));
-    return g.binary(Op::Sub, s, g.constant(1.0));
-}
-
-/// sin x cos y + sin y cos z + sin z cos x
-ExprId gyroid(ExprGraph& g) {
-    auto term = [&](ExprId a, ExprId b) {
-        return g.binary(Op::Mul, g.unary(Op::Sin, a), g.unary(Op::Cos, b));
-    };
-    return g.binary(Op::Add, g.binary(Op::Add, term(g.x(), g.y()), term(g.y(), g.z())),
-                    term(g.z(), g.x()));
-}
 long double gyroidLD(long double x, long double y, long double z) {
     return std::sin(x) * std::cos(y) + std::sin(y) * std::cos(z) + std::sin(z) * std::cos(x);
-}
-
-Vec3 unitRandom(std::mt19937_64& rng) {
-    std::normal_distribution<double> n;
-    const Vec3 v(n(rng), n(rng), n(rng));
-    return v / glm::length(v);
 }
 
 }  // namespace
@@ -43,7 +26,7 @@ Vec3 unitRandom(std::mt19937_64& rng) {
 TEST_CASE("Implicit::spans of a sphere against the closed form") {
     ExprGraph g;
     const NodePtr sphere =
-        makeImplicit(Tape::compile(g, sumOfSquaresMinusOne(g)), {Vec3(-2.0), Vec3(2.0)});
+        makeImplicit(Tape::compile(g, sphereExpr(g, 1.0)), {Vec3(-2.0), Vec3(2.0)});
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     TraceContext ctx;
@@ -51,8 +34,8 @@ TEST_CASE("Implicit::spans of a sphere against the closed form") {
     for (double tolerance : {1e-9, 1e-12}) {
         ctx.relTolerance = tolerance;
         for (int i = 0; i < 2000; ++i) {
-            Ray ray{unitRandom(rng) * (2.0 + 8.0 * unit(rng)), Vec3(0.0)};
-            ray.dir = (unitRandom(rng) * 1.2 * unit(rng) - ray.origin) * (0.1 + 3.0 * unit(rng));
+            Ray ray{gaussianUnit(rng) * (2.0 + 8.0 * unit(rng)), Vec3(0.0)};
+            ray.dir = (gaussianUnit(rng) * 1.2 * unit(rng) - ray.origin) * (0.1 + 3.0 * unit(rng));
             SpanList s;
             sphere->spans(ray, 0.0, kInf, ctx, s);
             // |o + t d|² = 1, in long double.
@@ -86,7 +69,7 @@ TEST_CASE("Implicit::spans of a double root") {
     // f = (|p|² − 1)² ≥ 0 is zero only on the unit sphere: {f ≤ 0} is a shell of zero
     // thickness, so rays only touch it and no span wider than the tolerance may appear.
     ExprGraph g;
-    const ExprId root = g.unary(Op::Square, sumOfSquaresMinusOne(g));
+    const ExprId root = g.unary(Op::Square, sphereExpr(g, 1.0));
     const NodePtr shell = makeImplicit(Tape::compile(g, root), {Vec3(-2.0), Vec3(2.0)});
     std::mt19937_64 rng(4);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -94,8 +77,8 @@ TEST_CASE("Implicit::spans of a double root") {
     ctx.relTolerance = 1e-9;
     int spans = 0;
     for (int i = 0; i < 300; ++i) {
-        Ray ray{unitRandom(rng) * 5.0, Vec3(0.0)};
-        ray.dir = unitRandom(rng) * 0.5 * unit(rng) - ray.origin;
+        Ray ray{gaussianUnit(rng) * 5.0, Vec3(0.0)};
+        ray.dir = gaussianUnit(rng) * 0.5 * unit(rng) - ray.origin;
         SpanList s;
         shell->spans(ray, 0.0, kInf, ctx, s);
         for (const Span& sp : s) {
@@ -109,15 +92,15 @@ TEST_CASE("Implicit::spans of a double root") {
 TEST_CASE("Implicit::spans of a gyroid in a box against dense sampling") {
     ExprGraph g;
     const Bounds3 box{Vec3(-4.0, -3.0, -5.0), Vec3(4.0, 3.5, 5.0)};
-    const NodePtr solid = makeImplicit(Tape::compile(g, gyroid(g)), box);
-    const auto tape = Tape::compile(g, gyroid(g));
+    const NodePtr solid = makeImplicit(Tape::compile(g, gyroidExpr(g)), box);
+    const auto tape = Tape::compile(g, gyroidExpr(g));
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     TraceContext ctx;
     ctx.relTolerance = 1e-9;
     int rays = 0, boundaries = 0, boxFaces = 0, mismatches = 0;
     for (int i = 0; i < 300; ++i) {
-        Ray ray{unitRandom(rng) * 12.0, Vec3(0.0)};
+        Ray ray{gaussianUnit(rng) * 12.0, Vec3(0.0)};
         ray.dir = Vec3(unit(rng) * 6 - 3, unit(rng) * 6 - 3, unit(rng) * 6 - 3) - ray.origin;
         if (i % 5 == 0) ray.dir[i % 3] = -0.0;
         double t0 = 0.0, t1 = kInf;
@@ -182,7 +165,7 @@ TEST_CASE("Implicit::spans of a gyroid in a box against dense sampling") {
 TEST_CASE("Implicit::value") {
     ExprGraph g;
     const NodePtr sphere =
-        makeImplicit(Tape::compile(g, sumOfSquaresMinusOne(g)), {Vec3(-2.0), Vec3(0.5, 2.0, 2.0)});
+        makeImplicit(Tape::compile(g, sphereExpr(g, 1.0)), {Vec3(-2.0), Vec3(0.5, 2.0, 2.0)});
     CHECK(sphere->value(Vec3(0.0)) == -0.5);  // the box face x = 0.5 is nearer than f says
     CHECK(sphere->value(Vec3(0.0, 1.5, 0.0)) == 1.25);
     CHECK(sphere->value(Vec3(0.9, 0.0, 0.0)) == Approx(0.4));  // cut by the box at x = 0.5

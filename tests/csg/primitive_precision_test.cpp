@@ -2,6 +2,7 @@
 // away, scenes scaled by 1e±6, rays parallel to a half-space's plane, and the special cases of
 // the cone (apex, r1 = r2, rays along the axis or the slant).
 #include "csg/solids.h"
+#include "util/oracles.h"
 
 #include <catch2/catch.hpp>
 
@@ -10,14 +11,9 @@
 #include <vector>
 
 using namespace kerf;
+using namespace kerf::test;
 
 namespace {
-
-using LD = long double;
-using LVec3 = glm::vec<3, LD>;
-
-LVec3 ld(const Vec3& v) { return LVec3(v.x, v.y, v.z); }
-Vec3 unit(const Vec3& v) { return v / glm::length(v); }
 
 /// The spans callers keep (zero-width ones dropped), checked for NaN and order.
 std::vector<Span> kept(const Node& node, const Ray& ray) {
@@ -38,44 +34,20 @@ double unitError(const Vec3& got, const Vec3& expected) {
     return glm::length(unit(got) - unit(expected));
 }
 
-std::mt19937_64 gRng;
-double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(gRng); }
-Vec3 randomUnit() {
-    for (;;) {
-        const Vec3 v(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-        const double l = glm::length(v);
-        if (l > 0.1 && l <= 1.0) return v / l;
-    }
-}
-Vec3 randomInBall() {
-    for (;;) {
-        const Vec3 v(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-        if (glm::dot(v, v) <= 1.0) return v;
-    }
-}
-
-/// The entry of a ray into a sphere in long double, from the chord through the point of the
-/// line nearest the centre; also its outward normal.
-LD sphereEntry(const Vec3& c, double r, const Ray& ray, LVec3& normal) {
-    const LVec3 f = ld(ray.origin) - ld(c), d = ld(ray.dir);
-    const LD a = glm::dot(d, d), tc = -glm::dot(f, d) / a;
-    const LVec3 l = f + tc * d;
-    const LD w = std::sqrt((LD(r) * r - glm::dot(l, l)) / a);
-    normal = l - w * d;
-    return tc - w;
-}
+/// Each test case reseeds, so its rays do not depend on which other cases ran.
+Random gRnd;
 
 }  // namespace
 
 TEST_CASE("Sphere::spans from a million radii away") {
-    gRng.seed(3);
+    gRnd.seed(3);
     const Vec3 c(0.3, -0.2, 0.1);
     const NodePtr sphere = makeSphere(c, 1.0);
     LD worstT = 0, worstNaiveT = 0, worstN = 0;
     for (int i = 0; i < 20000; ++i) {
-        const Vec3 o = c + 1e6 * randomUnit();
-        const Vec3 target = c + 0.99 * randomInBall();
-        const Ray r{o, (target - o) * std::exp(uniform(-3, 3))};
+        const Vec3 o = c + 1e6 * gRnd.unitVector();
+        const Vec3 target = c + 0.99 * gRnd.inBall();
+        const Ray r{o, (target - o) * std::exp(gRnd.uniform(-3, 3))};
         LVec3 nRef;
         const LD tRef = sphereEntry(c, 1.0, r, nRef);
         const std::vector<Span> s = kept(*sphere, r);
@@ -104,7 +76,7 @@ TEST_CASE("Sphere::spans from a million radii away") {
 }
 
 TEST_CASE("Cylinder::spans from a million radii away") {
-    gRng.seed(5);
+    gRnd.seed(5);
     const Vec3 a(0.3, -0.2, 0.1), b(-0.4, 0.9, 0.5);
     const double radius = 0.8;
     const NodePtr cylinder = makeCylinder(a, b, radius);
@@ -112,9 +84,9 @@ TEST_CASE("Cylinder::spans from a million radii away") {
     LD worstT = 0;
     int compared = 0;
     for (int i = 0; i < 20000; ++i) {
-        const Vec3 o = a + 1e6 * randomUnit();
-        const Vec3 target = a + uniform(0.05, 0.95) * (b - a) + 0.7 * randomInBall();
-        const Ray r{o, (target - o) * std::exp(uniform(-3, 3))};
+        const Vec3 o = a + 1e6 * gRnd.unitVector();
+        const Vec3 target = a + gRnd.uniform(0.05, 0.95) * (b - a) + 0.7 * gRnd.inBall();
+        const Ray r{o, (target - o) * std::exp(gRnd.uniform(-3, 3))};
         // Reference: the infinite cylinder's entry in long double; kept where the caps do
         // not decide the entry (its axial position lies strictly between them).
         const LVec3 la = ld(a), u = (ld(b) - la) / glm::length(ld(b) - la);
@@ -140,7 +112,7 @@ TEST_CASE("Cylinder::spans from a million radii away") {
 }
 
 TEST_CASE("Primitive::spans are scale invariant") {
-    gRng.seed(13);
+    gRnd.seed(13);
     // A scene of every closed-form primitive at scale s; rays scaled alike keep their t.
     const auto solids = [](double s) {
         return std::vector<NodePtr>{
@@ -157,8 +129,8 @@ TEST_CASE("Primitive::spans are scale invariant") {
     for (double scale : {1e-6, 1e6}) {
         const std::vector<NodePtr> scaled = solids(scale);
         for (int i = 0; i < 3000; ++i) {
-            const Vec3 o = uniform(3, 8) * randomUnit();
-            const Vec3 d = (1.3 * randomInBall() - o) * std::exp(uniform(-3, 3));
+            const Vec3 o = gRnd.uniform(3, 8) * gRnd.unitVector();
+            const Vec3 d = (1.3 * gRnd.inBall() - o) * std::exp(gRnd.uniform(-3, 3));
             for (size_t k = 0; k < base.size(); ++k) {
                 const std::vector<Span> s1 = kept(*base[k], Ray{o, d});
                 const std::vector<Span> s2 = kept(*scaled[k], Ray{scale * o, scale * d});
@@ -281,13 +253,13 @@ TEST_CASE("Cone::spans special cases") {
         CHECK(kept(*cone, Ray{Vec3(1.2, 1.5, 0), Vec3(-0.1, 1, 0)}).empty());
     }
     SECTION("r1 = r2 behaves like the cylinder") {
-        gRng.seed(17);
+        gRnd.seed(17);
         const Vec3 a(0.2, -0.4, 0.3), b(-0.5, 0.6, 0.9);
         const NodePtr cone = makeCone(a, b, 0.6, 0.6), cylinder = makeCylinder(a, b, 0.6);
         LD worst = 0;
         for (int i = 0; i < 5000; ++i) {
-            const Vec3 o = uniform(3, 8) * randomUnit();
-            const Ray ray{o, (1.2 * randomInBall() - o) * std::exp(uniform(-3, 3))};
+            const Vec3 o = gRnd.uniform(3, 8) * gRnd.unitVector();
+            const Ray ray{o, (1.2 * gRnd.inBall() - o) * std::exp(gRnd.uniform(-3, 3))};
             const std::vector<Span> s1 = kept(*cone, ray), s2 = kept(*cylinder, ray);
             if (s1.size() != s2.size()) {  // only at tangency
                 for (const auto& s : {s1, s2})

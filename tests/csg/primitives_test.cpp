@@ -1,6 +1,7 @@
 // Sphere, box and half-space spans against closed forms evaluated independently in long double,
 // and the implicit forms of every closed-form primitive against their spans and intervals.
 #include "csg/solids.h"
+#include "util/oracles.h"
 
 #include <catch2/catch.hpp>
 
@@ -11,13 +12,9 @@
 #include <vector>
 
 using namespace kerf;
+using namespace kerf::test;
 
 namespace {
-
-using LD = long double;
-using LVec3 = glm::vec<3, LD>;
-
-LVec3 ld(const Vec3& v) { return LVec3(v.x, v.y, v.z); }
 
 /// A span with its normals made unit, in long double for comparing.
 struct RefSpan {
@@ -49,32 +46,15 @@ std::vector<RefSpan> ours(const Node& node, const Ray& ray) {
 }
 
 /// Each test case reseeds, so its rays do not depend on which other cases ran.
-std::mt19937_64& rng() {
-    static std::mt19937_64 g;
-    return g;
-}
-double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng()); }
-Vec3 randomUnit() {
-    for (;;) {
-        const Vec3 v(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-        const double l = glm::length(v);
-        if (l > 0.1 && l <= 1.0) return v / l;
-    }
-}
-Vec3 randomInBall() {
-    for (;;) {
-        const Vec3 v(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-        if (glm::dot(v, v) <= 1.0) return v;
-    }
-}
+Random gRnd;
 
 /// A ray from 3–8 sizes away aimed at a random point within 1.3 sizes of `center`, with a
 /// direction of random length (transforms do not renormalise): about half of them hit.
 Ray randomRay(const Vec3& center, double size) {
     Ray r;
-    r.origin = center + size * uniform(3.0, 8.0) * randomUnit();
-    const Vec3 target = center + 1.3 * size * randomInBall();
-    r.dir = (target - r.origin) * std::exp(uniform(-3.0, 3.0));
+    r.origin = center + size * gRnd.uniform(3.0, 8.0) * gRnd.unitVector();
+    const Vec3 target = center + 1.3 * size * gRnd.inBall();
+    r.dir = (target - r.origin) * std::exp(gRnd.uniform(-3.0, 3.0));
     return r;
 }
 
@@ -89,8 +69,8 @@ struct Comparison {
                const Ray& ray, double size) {
         const std::vector<RefSpan> ref = reference(ray);
         Ray nudged = ray;
-        nudged.origin += 1e-15 * glm::length(ray.origin) * randomUnit();
-        nudged.origin += 1e-15 * size * randomUnit();
+        nudged.origin += 1e-15 * glm::length(ray.origin) * gRnd.unitVector();
+        nudged.origin += 1e-15 * size * gRnd.unitVector();
         const std::vector<RefSpan> ref2 = reference(nudged);
         bool wellConditioned = ref.size() == ref2.size();
         for (size_t i = 0; wellConditioned && i < ref.size(); ++i)
@@ -256,11 +236,11 @@ std::vector<RefSpan> coneReference(const Vec3& a, const Vec3& b, double r1, doub
 }  // namespace
 
 TEST_CASE("Sphere::spans") {
-    rng().seed(102947);
+    gRnd.seed(102947);
     Comparison cmp;
     for (int scene = 0; scene < 40; ++scene) {
-        const Vec3 center(uniform(-5, 5), uniform(-5, 5), uniform(-5, 5));
-        const double radius = std::exp(uniform(-2, 2));
+        const Vec3 center(gRnd.uniform(-5, 5), gRnd.uniform(-5, 5), gRnd.uniform(-5, 5));
+        const double radius = std::exp(gRnd.uniform(-2, 2));
         const NodePtr sphere = makeSphere(center, radius);
         for (int i = 0; i < 500; ++i) {
             const Ray ray = randomRay(center, radius);
@@ -276,12 +256,12 @@ TEST_CASE("Sphere::spans") {
 }
 
 TEST_CASE("Box::spans") {
-    rng().seed(79190);
+    gRnd.seed(79190);
     Comparison cmp;
     for (int scene = 0; scene < 40; ++scene) {
-        const Vec3 lo(uniform(-5, 5), uniform(-5, 5), uniform(-5, 5));
-        const Vec3 hi = lo + Vec3(std::exp(uniform(-2, 2)), std::exp(uniform(-2, 2)),
-                                  std::exp(uniform(-2, 2)));
+        const Vec3 lo(gRnd.uniform(-5, 5), gRnd.uniform(-5, 5), gRnd.uniform(-5, 5));
+        const Vec3 hi = lo + Vec3(std::exp(gRnd.uniform(-2, 2)), std::exp(gRnd.uniform(-2, 2)),
+                                  std::exp(gRnd.uniform(-2, 2)));
         const NodePtr box = makeBox(lo, hi);
         const double size = glm::length(hi - lo) * 0.5;
         for (int i = 0; i < 500; ++i) {
@@ -296,13 +276,13 @@ TEST_CASE("Box::spans") {
 }
 
 TEST_CASE("Cylinder::spans") {
-    rng().seed(118785);
+    gRnd.seed(118785);
     Comparison cmp;
     for (int scene = 0; scene < 60; ++scene) {
-        const Vec3 a(uniform(-5, 5), uniform(-5, 5), uniform(-5, 5));
-        Vec3 u = randomUnit();
+        const Vec3 a(gRnd.uniform(-5, 5), gRnd.uniform(-5, 5), gRnd.uniform(-5, 5));
+        Vec3 u = gRnd.unitVector();
         if (scene % 3 == 0) u = Vec3(0), u[scene % 9 / 3] = scene % 2 ? 1.0 : -1.0;  // axis-aligned
-        const double len = std::exp(uniform(-1, 1.5)), radius = std::exp(uniform(-1.5, 1));
+        const double len = std::exp(gRnd.uniform(-1, 1.5)), radius = std::exp(gRnd.uniform(-1.5, 1));
         const Vec3 b = a + len * u;
         const NodePtr cylinder = makeCylinder(a, b, radius);
         const double size = std::max(0.5 * len, radius);
@@ -320,14 +300,14 @@ TEST_CASE("Cylinder::spans") {
 }
 
 TEST_CASE("Cone::spans") {
-    rng().seed(87109);
+    gRnd.seed(87109);
     Comparison cmp;
     for (int scene = 0; scene < 80; ++scene) {
-        const Vec3 a(uniform(-5, 5), uniform(-5, 5), uniform(-5, 5));
-        Vec3 u = randomUnit();
+        const Vec3 a(gRnd.uniform(-5, 5), gRnd.uniform(-5, 5), gRnd.uniform(-5, 5));
+        Vec3 u = gRnd.unitVector();
         if (scene % 3 == 0) u = Vec3(0), u[scene % 9 / 3] = scene % 2 ? 1.0 : -1.0;
-        const double len = std::exp(uniform(-1, 1.5));
-        double r1 = std::exp(uniform(-1.5, 1)), r2 = std::exp(uniform(-1.5, 1));
+        const double len = std::exp(gRnd.uniform(-1, 1.5));
+        double r1 = std::exp(gRnd.uniform(-1.5, 1)), r2 = std::exp(gRnd.uniform(-1.5, 1));
         if (scene % 4 == 1) r2 = 0;   // apex at b
         if (scene % 4 == 2) r1 = 0;   // apex at a
         if (scene % 8 == 3) r2 = r1;  // a cylinder
@@ -348,11 +328,11 @@ TEST_CASE("Cone::spans") {
 }
 
 TEST_CASE("HalfSpace::spans") {
-    rng().seed(126704);
+    gRnd.seed(126704);
     Comparison cmp;
     for (int scene = 0; scene < 40; ++scene) {
-        const Vec3 n = randomUnit() * std::exp(uniform(-3, 3));
-        const double offset = uniform(-5, 5);
+        const Vec3 n = gRnd.unitVector() * std::exp(gRnd.uniform(-3, 3));
+        const double offset = gRnd.uniform(-5, 5);
         const NodePtr half = makeHalfSpace(n, offset);
         const Vec3 onPlane = n * (offset / glm::dot(n, n));
         for (int i = 0; i < 500; ++i) {
@@ -409,7 +389,7 @@ std::vector<std::pair<const char*, NodePtr>> closedFormSolids() {
 }  // namespace
 
 TEST_CASE("Node::value agrees with the spans") {
-    rng().seed(261327);
+    gRnd.seed(261327);
     for (const auto& [name, solid] : closedFormSolids()) {
         INFO(name);
         int inside = 0, outside = 0;
@@ -447,13 +427,13 @@ TEST_CASE("Node::value agrees with the spans") {
 }
 
 TEST_CASE("Node::value is Lipschitz-1") {
-    rng().seed(205894);
+    gRnd.seed(205894);
     for (const auto& [name, solid] : closedFormSolids()) {
         INFO(name);
         double worst = 0;
         for (int i = 0; i < 5000; ++i) {
-            const Vec3 p = 3.0 * randomInBall();
-            const Vec3 q = p + std::exp(uniform(-8, 0)) * randomUnit();
+            const Vec3 p = 3.0 * gRnd.inBall();
+            const Vec3 q = p + std::exp(gRnd.uniform(-8, 0)) * gRnd.unitVector();
             worst = std::max(worst, std::fabs(solid->value(p) - solid->value(q)) / glm::length(p - q));
         }
         CHECK(worst <= 1.0 + 1e-9);
@@ -462,15 +442,15 @@ TEST_CASE("Node::value is Lipschitz-1") {
 }
 
 TEST_CASE("Node::valueInterval holds value on random boxes") {
-    rng().seed(372193);
+    gRnd.seed(372193);
     for (const auto& [name, solid] : closedFormSolids()) {
         INFO(name);
         int tight = 0;
         for (int i = 0; i < 3000; ++i) {
-            const Vec3 c = 2.5 * randomInBall();
+            const Vec3 c = 2.5 * gRnd.inBall();
             // Widths from 1e-12 to 4, and sometimes exactly 0 on an axis.
             Vec3 w;
-            for (int a = 0; a < 3; ++a) w[a] = uniform(0, 1) < 0.1 ? 0.0 : std::exp(uniform(-28, 1.4));
+            for (int a = 0; a < 3; ++a) w[a] = gRnd.uniform(0, 1) < 0.1 ? 0.0 : std::exp(gRnd.uniform(-28, 1.4));
             const IntervalVec3 box{{c.x - w.x, c.x + w.x}, {c.y - w.y, c.y + w.y}, {c.z - w.z, c.z + w.z}};
             const Interval v = solid->valueInterval(box);
             REQUIRE(v.lo <= v.hi);
@@ -479,7 +459,7 @@ TEST_CASE("Node::valueInterval holds value on random boxes") {
                 for (int a = 0; a < 3; ++a) {
                     const Interval& iv = a == 0 ? box.x : a == 1 ? box.y : box.z;
                     // Corners and faces as well as the interior.
-                    const double u = k < 8 ? double((k >> a) & 1) : uniform(0, 1);
+                    const double u = k < 8 ? double((k >> a) & 1) : gRnd.uniform(0, 1);
                     p[a] = std::min(iv.hi, iv.lo + u * (iv.hi - iv.lo));
                 }
                 const double f = solid->value(p);

@@ -8,8 +8,10 @@
 #include <vector>
 
 #include "csg/solids.h"
+#include "util/oracles.h"
 
 using namespace kerf;
+using kerf::test::gaussianUnit;
 
 namespace {
 
@@ -105,12 +107,6 @@ std::vector<Boundary> flatten(const SpanList& s) {
     return b;
 }
 
-Vec3 unitRandom(std::mt19937_64& rng) {
-    std::normal_distribution<double> n;
-    const Vec3 v(n(rng), n(rng), n(rng));
-    return v / glm::length(v);
-}
-
 }  // namespace
 
 TEST_CASE("Torus::spans against a long-double reference") {
@@ -126,14 +122,14 @@ TEST_CASE("Torus::spans against a long-double reference") {
             const NodePtr torus = makeTorus(R, r);
             for (int i = 0; i < 1500; ++i) {
                 Ray ray;
-                ray.origin = unitRandom(rng) * (S * (1.5 + 3.0 * unit(rng)));
+                ray.origin = gaussianUnit(rng) * (S * (1.5 + 3.0 * unit(rng)));
                 // Aim at a random point of the box, near the tube, or anywhere.
                 Vec3 target =
                     Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5) * 2.0 * Vec3(S, r, S);
                 if (i % 3 == 0) {
                     const double phi = 6.283185307179586 * unit(rng);
                     target = Vec3(R * std::cos(phi), 0.0, R * std::sin(phi)) +
-                             unitRandom(rng) * (r * 1.2 * unit(rng));
+                             gaussianUnit(rng) * (r * 1.2 * unit(rng));
                 }
                 ray.dir = (target - ray.origin) * (0.1 + 10.0 * unit(rng));
                 if (i % 7 == 0) ray.dir[i % 3] = -0.0;  // axis-parallel rays with −0 components

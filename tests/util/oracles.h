@@ -32,10 +32,20 @@ inline double stepUlps(double x, int k, double toward) {
     return x;
 }
 
+/// A unit vector from three normal deviates (a fresh distribution per call, as the tests that
+/// use it always drew them).
+inline Vec3 gaussianUnit(std::mt19937_64& rng) {
+    std::normal_distribution<double> n;
+    const Vec3 v(n(rng), n(rng), n(rng));
+    return v / glm::length(v);
+}
+
 /// Seeded random numbers for reproducible cases.
 class Random {
 public:
-    explicit Random(uint64_t seed) : mRng(seed) {}
+    explicit Random(uint64_t seed = std::mt19937_64::default_seed) : mRng(seed) {}
+    /// Restarts the sequence, so a test case's numbers do not depend on which others ran.
+    void seed(uint64_t s) { mRng.seed(s); }
     double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(mRng); }
     /// exp of a uniform value in [log a, log b]: magnitudes spread over decades.
     double logUniform(double a, double b) { return std::exp(uniform(std::log(a), std::log(b))); }
@@ -54,6 +64,8 @@ public:
     }
     /// A unit vector perpendicular to u.
     Vec3 perpendicular(const Vec3& u) { return unit(glm::cross(u, unitVector())); }
+    /// A unit vector from normal deviates (another sequence than unitVector's).
+    Vec3 gaussianUnitVector() { return gaussianUnit(mRng); }
     std::mt19937_64& engine() { return mRng; }
 
 private:
@@ -86,6 +98,15 @@ inline SphereOracle sphereOracleLD(const LV3& f, const LV3& d, LD r) {
 
 inline SphereOracle sphereOracle(const Ray& ray, const LV3& c, LD r) {
     return sphereOracleLD(ld(ray.origin) - c, ld(ray.dir), r);
+}
+
+/// The entry of a line into a sphere (centre c, radius r) in long double, by SphereOracle's
+/// chord; `normal` gets the outward normal there (not unit). Only for lines that hit.
+inline LD sphereEntry(const Vec3& c, double r, const Ray& ray, LV3& normal) {
+    const LV3 f = ld(ray.origin) - ld(c), d = ld(ray.dir);
+    const SphereOracle o = sphereOracleLD(f, d, r);
+    normal = (f + o.tMid * d) - o.halfChord * d;
+    return o.tIn();
 }
 
 /// The slab test in long double; nullopt when the open box misses the line.
