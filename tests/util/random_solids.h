@@ -5,19 +5,21 @@
 
 #include "util/oracles.h"
 
+#include <cmath>
 #include <memory>
 
 namespace kerf::test {
 
 /// The primitive kinds randomPrimitive draws from.
 enum class PrimitiveKind {
-    Sphere, Box, Cylinder, Cone, Torus, HalfSpace, ImplicitSphere, ImplicitFull, Count
+    Sphere, Box, GridBox, Cylinder, Cone, Torus, HalfSpace, ImplicitSphere, ImplicitFull, Count
 };
 
 /// A random primitive of the given kind in about [-1.5, 1.5]³. Implicit spheres get a bound
 /// box that cuts them on some sides; ImplicitFull (f = −1) is nothing but its bound box, whose
 /// faces are all the implicit's own boundaries. Half-spaces are axis-aligned half the time, so
-/// their bounds clip rays too.
+/// their bounds clip rays too. GridBoxes have their faces on a grid of halves, so two of them
+/// often share a face plane: crossings of different primitives at exactly the same t.
 inline NodePtr randomPrimitive(Random& rnd, PrimitiveKind kind) {
     auto point = [&](double r) { return Vec3(rnd.uniform(-r, r), rnd.uniform(-r, r), rnd.uniform(-r, r)); };
     switch (kind) {
@@ -25,6 +27,14 @@ inline NodePtr randomPrimitive(Random& rnd, PrimitiveKind kind) {
         case PrimitiveKind::Box: {
             const Vec3 c = point(1.0), h(rnd.uniform(0.2, 1.0), rnd.uniform(0.2, 1.0), rnd.uniform(0.2, 1.0));
             return makeBox(c - h, c + h);
+        }
+        case PrimitiveKind::GridBox: {
+            Vec3 lo, hi;
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = 0.5 * std::floor(rnd.uniform(-3.0, 3.0));
+                hi[a] = lo[a] + 0.5 * (1.0 + std::floor(rnd.uniform(0.0, 3.0)));
+            }
+            return makeBox(lo, hi);
         }
         case PrimitiveKind::Cylinder: {
             const Vec3 a = point(1.0);
