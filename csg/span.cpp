@@ -78,9 +78,10 @@ void combineSpans(BoolOp op, const SpanList& a, const SpanList& b, double relTol
         if (takeB) inB = !inB;
         const bool now = evaluate(op, inA, inB);
         if (now != inResult) {
-            // The boundary that made the change: A's when A alone would have made it (a fixed
-            // preference keeps ties deterministic), else B's. Two events at once are taken in
-            // tie order: the first made the change if it alone would have.
+            // The boundary that made the change: A's when A alone would have made it, else B's.
+            // Two events at once are taken in tie order, the first making the change if it
+            // alone would have; only boundaries tieOrder cannot tell apart (two clips, or one
+            // primitive reached twice) keep the fixed preference for A.
             bool fromA = takeA && evaluate(op, inA, wasB) != evaluate(op, wasA, wasB);
             if (takeA && takeB) {
                 const int order = tieOrder(boundaryAt(a, ia), inA, boundaryAt(b, ib), inB);
