@@ -23,9 +23,9 @@ constexpr int kW = 48, kH = 36;
 /// an ulp or so, either way.
 Scene contactScene(double s, bool mirrored, bool glassFirst) {
     const double sy = mirrored ? -1.0 : 1.0;
-    auto box = [&](Vec3 lo, Vec3 hi) {
-        if (mirrored) std::swap(lo.y, hi.y), lo.y = -lo.y, hi.y = -hi.y;
-        return makeBox(s * lo, s * hi);
+    auto box = [&](const Vec3& lo, const Vec3& hi) {  // y mirrored when asked
+        const double y0 = mirrored ? -hi.y : lo.y, y1 = mirrored ? -lo.y : hi.y;
+        return makeBox(s * Vec3(lo.x, y0, lo.z), s * Vec3(hi.x, y1, hi.z));
     };
     const Vec3 centre(0.1, 0.3 * sy, -0.05);
     Scene scene;
@@ -45,8 +45,8 @@ Scene contactScene(double s, bool mirrored, bool glassFirst) {
                   glassId);
     };
     if (glassFirst) addGlass();
-    addObject(scene, box(Vec3(-2, -1, -2) + centre * Vec3(1, sy, 1), Vec3(2, 0, 2) + centre * Vec3(1, sy, 1)),
-              clayId);
+    const Vec3 top(0.1, 0.3, -0.05);  // the block's top centre before mirroring
+    addObject(scene, box(top + Vec3(-2, -1, -2), top + Vec3(2, 0, 2)), clayId);
     if (!glassFirst) addGlass();
     Light sun;
     sun.kind = Light::Kind::Directional;
