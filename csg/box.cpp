@@ -38,6 +38,9 @@ public:
         return max(max(x, y), z);
     }
 
+    NodeKind kind() const override { return NodeKind::Box; }
+    NodeParams params() const override { return BoxParams{mBounds.lo, mBounds.hi}; }
+
 private:
     friend class ClosedFormPrimitive<Box>;
 

@@ -56,9 +56,13 @@ public:
     Interval valueInterval(const IntervalVec3& b) const override {
         Interval x, y, z;
         mFrame.toLocal(b, x, y, z);
-        const Interval side = (sqrt(sqr(x) + sqr(y)) - (mR1 + mSlope * z)) * mLateralScale;
+        const Interval side =
+            (sqrt(nonNegative(sqr(x) + sqr(y))) - (mR1 + mSlope * z)) * mLateralScale;
         return max(side, max(-z, z - mFrame.length));
     }
+
+    NodeKind kind() const override { return NodeKind::Cone; }
+    NodeParams params() const override { return ConeParams{mFrame.base, mTop, mR1, mR2}; }
 
 private:
     friend class ClosedFormPrimitive<Cone>;

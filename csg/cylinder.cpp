@@ -46,9 +46,12 @@ public:
     Interval valueInterval(const IntervalVec3& b) const override {
         Interval x, y, z;
         mFrame.toLocal(b, x, y, z);
-        const Interval side = sqrt(sqr(x) + sqr(y)) - mRadius;
+        const Interval side = sqrt(nonNegative(sqr(x) + sqr(y))) - mRadius;
         return max(side, max(-z, z - mFrame.length));
     }
+
+    NodeKind kind() const override { return NodeKind::Cylinder; }
+    NodeParams params() const override { return CylinderParams{mFrame.base, mTop, mRadius}; }
 
 private:
     friend class ClosedFormPrimitive<Cylinder>;

@@ -87,6 +87,9 @@ public:
         return (mNormal.x * b.x + mNormal.y * b.y + mNormal.z * b.z - mOffset) * mInvLength;
     }
 
+    NodeKind kind() const override { return NodeKind::HalfSpace; }
+    NodeParams params() const override { return HalfSpaceParams{mNormal, mOffset}; }
+
 private:
     friend class ClosedFormPrimitive<HalfSpace>;
     /// Sphere tracing needs a finite start: an unbounded tmin starts the march at 0.

@@ -1,6 +1,7 @@
 // The implicit primitive {f ≤ 0} ∩ box: spans by interval root isolation of the tape along the
 // ray, clipped to the box; where the box cuts the inside region, the box face is the boundary.
 #include <algorithm>
+#include <mutex>
 
 #include "csg/primitive.h"
 #include "csg/root_isolation.h"
@@ -31,7 +32,11 @@ class Implicit final : public Primitive {
 public:
     Implicit(std::shared_ptr<const Tape> f, const Bounds3& box) : mTape(std::move(f)) {
         mBounds = box;
-        mLipschitz = estimateLipschitz();
+    }
+    /// `original` with another function (a simplified tape): same box and primitive id.
+    Implicit(std::shared_ptr<const Tape> f, const Implicit& original)
+        : Primitive(original.id()), mTape(std::move(f)) {
+        mBounds = original.mBounds;
     }
 
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
@@ -43,7 +48,7 @@ public:
         // The closed method already isolates f by intervals: Interval is the same.
         if (ctx.method == TraceMethod::SphereTrace) {
             sphereTraceSpans([this](const Vec3& p) { return Implicit::value(p); }, ray, r.t0,
-                             r.t1, mLipschitz, false, ctx,
+                             r.t1, lipschitz(), false, ctx,
                              [&](double t) { return rootBoundary(t, normalAt(ray.at(t)), ctx); },
                              [&](double, bool atStart) { return endBoundary(ray, r, atStart); },
                              out);
@@ -99,6 +104,9 @@ public:
         return max(f, outside);
     }
 
+    NodeKind kind() const override { return NodeKind::Implicit; }
+    NodeParams params() const override { return ImplicitParams{mTape, mBounds}; }
+
 private:
     /// The part of the caller's range inside the box, and whether its ends are box faces.
     struct Range {
@@ -133,6 +141,13 @@ private:
         return std::max(1.0, 1.5 * maxGradient);
     }
 
+    /// The estimate, made on first use: pruned copies and renders that never sphere trace do
+    /// not pay for 4096 gradient samples.
+    double lipschitz() const {
+        std::call_once(mLipschitzOnce, [this] { mLipschitz = estimateLipschitz(); });
+        return mLipschitz;
+    }
+
     Vec3 normalAt(const Vec3& p) const {
         Vec3 g;
         mTape->evalGradient(p, g);
@@ -160,13 +175,18 @@ private:
     }
 
     std::shared_ptr<const Tape> mTape;
-    double mLipschitz = 1.0;  ///< estimated, for TraceMethod::SphereTrace only
+    mutable std::once_flag mLipschitzOnce;
+    mutable double mLipschitz = 1.0;  ///< estimated, for TraceMethod::SphereTrace only
 };
 
 }  // namespace
 
 NodePtr makeImplicit(std::shared_ptr<const Tape> f, const Bounds3& bound) {
     return std::make_shared<Implicit>(std::move(f), bound);
+}
+
+NodePtr withImplicitFunction(const Node& original, std::shared_ptr<const Tape> f) {
+    return std::make_shared<Implicit>(std::move(f), dynamic_cast<const Implicit&>(original));
 }
 
 }  // namespace kerf

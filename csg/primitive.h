@@ -21,6 +21,8 @@ public:
 
 protected:
     Primitive() : mId(nextPrimitiveId()) {}
+    /// A simplified copy of a primitive (csg/prune.h) keeps its id: the same surface.
+    explicit Primitive(uint32_t id) : mId(id) {}
 
     /// A boundary of this primitive at t with outward normal n (material left unset).
     Boundary boundary(double t, const Vec3& n) const {

@@ -23,6 +23,9 @@ NodePtr makeTorus(double majorRadius, double minorRadius);
 NodePtr makeHalfSpace(const Vec3& normal, double offset);
 /// {p in bound : f(p) ≤ 0}, f given as a tape over x, y, z.
 NodePtr makeImplicit(std::shared_ptr<const Tape> f, const Bounds3& bound);
+/// The implicit leaf `original` (its kind must be Implicit) with f in place of its function:
+/// same bound and primitive id, so where f equals the old function the two are one surface.
+NodePtr withImplicitFunction(const Node& original, std::shared_ptr<const Tape> f);
 
 /// The child seen through worldFromLocal (maps the child's space into this node's space).
 NodePtr makeTransform(NodePtr child, const Affine& worldFromLocal);

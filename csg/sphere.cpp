@@ -33,8 +33,11 @@ public:
 
     Interval valueInterval(const IntervalVec3& b) const override {
         const Interval x = b.x - mCenter.x, y = b.y - mCenter.y, z = b.z - mCenter.z;
-        return sqrt(sqr(x) + sqr(y) + sqr(z)) - mRadius;
+        return sqrt(nonNegative(sqr(x) + sqr(y) + sqr(z))) - mRadius;
     }
+
+    NodeKind kind() const override { return NodeKind::Sphere; }
+    NodeParams params() const override { return SphereParams{mCenter, mRadius}; }
 
 private:
     friend class ClosedFormPrimitive<Sphere>;

@@ -118,9 +118,12 @@ public:
     }
 
     Interval valueInterval(const IntervalVec3& box) const override {
-        const Interval rho = sqrt(sqr(box.x) + sqr(box.z));
-        return sqrt(sqr(rho - Interval(mR)) + sqr(box.y)) - Interval(mr);
+        const Interval rho = sqrt(nonNegative(sqr(box.x) + sqr(box.z)));
+        return sqrt(nonNegative(sqr(rho - Interval(mR)) + sqr(box.y))) - Interval(mr);
     }
+
+    NodeKind kind() const override { return NodeKind::Torus; }
+    NodeParams params() const override { return TorusParams{mR, mr}; }
 
 private:
     /// The normalised quartic along one ray and the range it is searched on.
