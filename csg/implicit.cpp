@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <mutex>
 
-#include "csg/primitive.h"
+#include "csg/comparison_methods.h"
 #include "csg/root_isolation.h"
 #include "csg/solids.h"
-#include "csg/sphere_trace.h"
 
 namespace kerf {
 namespace {
@@ -33,28 +32,22 @@ public:
     Implicit(std::shared_ptr<const Tape> f, const Bounds3& box) : mTape(std::move(f)) {
         mBounds = box;
     }
-    /// `original` with another function (a simplified tape): same box and primitive id.
-    Implicit(std::shared_ptr<const Tape> f, const Implicit& original)
-        : Primitive(original.id()), mTape(std::move(f)) {
-        mBounds = original.mBounds;
+    /// A copy of primitive `id` with another function (csg/prune.h) or a stand-in for it
+    /// (csg/comparison_methods.h): its boundaries carry that id.
+    Implicit(std::shared_ptr<const Tape> f, const Bounds3& box, uint32_t id)
+        : Primitive(id), mTape(std::move(f)) {
+        mBounds = box;
     }
 
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                SpanList& out) const override {
+        // The closed method already isolates f by intervals: Interval is the same.
+        if (ctx.method == TraceMethod::SphereTrace)
+            return comparisonSpans(*this, ray, tmin, tmax, ctx, out);
         out.clear();
         ++ctx.stats.primitiveTests;
         Range r;
         if (!clip(ray, tmin, tmax, r)) return;
-        // The closed method already isolates f by intervals: Interval is the same.
-        if (ctx.method == TraceMethod::SphereTrace) {
-            sphereTraceSpans([this](const Vec3& p) { return Implicit::value(p); }, ray, r.t0,
-                             r.t1, lipschitz(), false, ctx,
-                             [&](double t) { return rootBoundary(t, normalAt(ray.at(t)), ctx); },
-                             [&](double, bool atStart) { return endBoundary(ray, r, atStart); },
-                             out);
-            return;
-        }
-
         TapeAlongRay problem{*mTape, ray};
         isolatedSpans(
             problem, r.t0, r.t1, 0.0, ctx,
@@ -107,6 +100,32 @@ public:
     NodeKind kind() const override { return NodeKind::Implicit; }
     NodeParams params() const override { return ImplicitParams{mTape, mBounds}; }
 
+    /// The tape's instructions over the given coordinates (the bound is not part of it).
+    ExprId implicitExpr(ExprGraph& g, ExprId x, ExprId y, ExprId z) const override {
+        std::vector<ExprId> slot(mTape->size());
+        for (int i = 0; i < mTape->size(); ++i) {
+            const TapeInstr& in = mTape->instrs()[i];
+            switch (in.op) {
+                case Op::Const: slot[i] = g.constant(in.value); break;
+                case Op::VarX: slot[i] = x; break;
+                case Op::VarY: slot[i] = y; break;
+                case Op::VarZ: slot[i] = z; break;
+                case Op::PowInt: slot[i] = g.powInt(slot[in.a], static_cast<int>(in.value)); break;
+                default:
+                    slot[i] = in.b >= 0 ? g.binary(in.op, slot[in.a], slot[in.b])
+                                        : g.unary(in.op, slot[in.a]);
+            }
+        }
+        return slot.back();
+    }
+
+    /// For sphere tracing only: an ESTIMATE, made on first use so that pruned copies and
+    /// renders that never sphere trace do not pay for its 4096 gradient samples.
+    double lipschitz() const override {
+        std::call_once(mLipschitzOnce, [this] { mLipschitz = estimateLipschitz(); });
+        return mLipschitz;
+    }
+
 private:
     /// The part of the caller's range inside the box, and whether its ends are box faces.
     struct Range {
@@ -139,13 +158,6 @@ private:
                     if (n > maxGradient) maxGradient = n;  // NaN samples are skipped
                 }
         return std::max(1.0, 1.5 * maxGradient);
-    }
-
-    /// The estimate, made on first use: pruned copies and renders that never sphere trace do
-    /// not pay for 4096 gradient samples.
-    double lipschitz() const {
-        std::call_once(mLipschitzOnce, [this] { mLipschitz = estimateLipschitz(); });
-        return mLipschitz;
     }
 
     Vec3 normalAt(const Vec3& p) const {
@@ -186,7 +198,12 @@ NodePtr makeImplicit(std::shared_ptr<const Tape> f, const Bounds3& bound) {
 }
 
 NodePtr withImplicitFunction(const Node& original, std::shared_ptr<const Tape> f) {
-    return std::make_shared<Implicit>(std::move(f), dynamic_cast<const Implicit&>(original));
+    const auto& o = dynamic_cast<const Implicit&>(original);
+    return std::make_shared<Implicit>(std::move(f), o.bounds(), o.id());
+}
+
+NodePtr makeImplicitStandIn(std::shared_ptr<const Tape> f, const Bounds3& bound, uint32_t id) {
+    return std::make_shared<Implicit>(std::move(f), bound, id);
 }
 
 }  // namespace kerf

@@ -10,7 +10,8 @@
 #include <algorithm>
 #include <limits>
 
-#include "csg/primitive.h"
+#include "csg/comparison_methods.h"
+#include "csg/implicit_expr.h"
 #include "csg/root_isolation.h"
 #include "csg/solids.h"
 
@@ -68,15 +69,11 @@ public:
 
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                SpanList& out) const override {
+        // The closed method already isolates the quartic by intervals: Interval is the same.
+        if (ctx.method == TraceMethod::SphereTrace)
+            return comparisonSpans(*this, ray, tmin, tmax, ctx, out);  // a distance: Lipschitz 1
         out.clear();
         ++ctx.stats.primitiveTests;
-        // The closed method already isolates the quartic by intervals: Interval is the same.
-        if (ctx.method == TraceMethod::SphereTrace) {
-            // value() is a true distance: Lipschitz 1.
-            return sphereTraceWithinBounds([this](const Vec3& p) { return Torus::value(p); },
-                                           [this](const Vec3& p) { return normalAt(p); }, ray,
-                                           tmin, tmax, ctx, out);
-        }
         Setup st;
         if (!setUp(ray, tmin, tmax, st)) return;
         isolatedSpans(
@@ -124,6 +121,12 @@ public:
 
     NodeKind kind() const override { return NodeKind::Torus; }
     NodeParams params() const override { return TorusParams{mR, mr}; }
+
+    ExprId implicitExpr(ExprGraph& g, ExprId x, ExprId y, ExprId z) const override {
+        ExprBuilder e{g};
+        const ExprId rho = e.sqrt(e.add(e.sqr(x), e.sqr(z)));
+        return e.sub(e.sqrt(e.add(e.sqr(e.sub(rho, e.c(mR))), e.sqr(y))), e.c(mr));
+    }
 
 private:
     /// The normalised quartic along one ray and the range it is searched on.
