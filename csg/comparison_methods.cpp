@@ -27,16 +27,22 @@ Bounds3 widened(const Bounds3& b) {
     return w;
 }
 
+/// Stand-ins kept per thread before the cache starts over (they are cheap to rebuild).
+constexpr size_t kMaxStandIns = size_t(1) << 16;
+
 /// The implicit primitive equal to p: p's form over p's (widened) bounds, carrying p's id.
-/// One per thread and primitive (ids are never reused), built on first use.
+/// One per thread and primitive (ids are never reused), built on first use. The cache is
+/// cleared only when a new entry is made, so a stand-in stays valid while its primitive's
+/// trace asks for it again.
 const Node& standIn(const Primitive& p) {
     thread_local std::unordered_map<uint32_t, NodePtr> cache;
+    auto found = cache.find(p.id());
+    if (found != cache.end()) return *found->second;
+    if (cache.size() >= kMaxStandIns) cache.clear();
+    ExprGraph g;
+    const ExprId f = p.implicitExpr(g, g.x(), g.y(), g.z());
     NodePtr& node = cache[p.id()];
-    if (!node) {
-        ExprGraph g;
-        const ExprId f = p.implicitExpr(g, g.x(), g.y(), g.z());
-        node = makeImplicitStandIn(Tape::compile(g, f), widened(p.bounds()), p.id());
-    }
+    node = makeImplicitStandIn(Tape::compile(g, f), widened(p.bounds()), p.id());
     return *node;
 }
 
