@@ -17,7 +17,8 @@ public:
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                SpanList& out) const final {
         // One predictable branch: the comparison methods are never mixed with the default.
-        if (ctx.method != TraceMethod::Closed) return comparisonSpans(*this, ray, tmin, tmax, ctx, out);
+        if (ctx.method != TraceMethod::Closed)
+            return comparisonSpans(*this, ray, tmin, tmax, ctx, out);
         out.clear();
         ++ctx.stats.primitiveTests;
         static_cast<const Derived&>(*this).closedSpans(ray, out);

@@ -2,13 +2,13 @@
 // a stand-in implicit primitive, and sphere tracing of value().
 #include "csg/comparison_methods.h"
 
-#include "csg/solids.h"
-#include "csg/sphere_trace.h"
-
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
 #include <variant>
+
+#include "csg/solids.h"
+#include "csg/sphere_trace.h"
 
 namespace kerf {
 namespace {
@@ -55,7 +55,7 @@ bool settledBeyond(const Tape& f, const Ray& ray, double t, bool up) {
     if (slope.maybeNan || slope.containsZero()) return false;
     const bool inside = isInside(f.eval(ray.at(t)));
     const bool rising = (slope.lo > 0.0) == up;  // f grows moving away from t
-    return inside != rising;  // outside and rising, or inside and falling
+    return inside != rising;                     // outside and rising, or inside and falling
 }
 
 /// A finite replacement for an infinite end of the range, past which nothing changes: the
@@ -69,8 +69,8 @@ double finiteEnd(const Tape& f, const Ray& ray, double base, bool up) {
     }
 }
 
-void intervalSpans(const Primitive& p, const Ray& ray, double tmin, double tmax,
-                   TraceContext& ctx, SpanList& out) {
+void intervalSpans(const Primitive& p, const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                   SpanList& out) {
     const Node& node = standIn(p);
     double c0 = tmin, c1 = tmax;
     if (!node.bounds().clipRay(ray, c0, c1)) {
@@ -146,8 +146,8 @@ void sphereTraceSpans(const Primitive& p, const Ray& ray, double tmin, double tm
         }
         return b;
     };
-    kerf::sphereTraceSpans([&p](const Vec3& q) { return p.value(q); }, ray, t0, t1,
-                           p.lipschitz(), outsideBefore, ctx, surface, end, out);
+    kerf::sphereTraceSpans([&p](const Vec3& q) { return p.value(q); }, ray, t0, t1, p.lipschitz(),
+                           outsideBefore, ctx, surface, end, out);
 }
 
 }  // namespace
@@ -160,7 +160,8 @@ const Tape& implicitTape(const Primitive& p) {
 
 void comparisonSpans(const Primitive& p, const Ray& ray, double tmin, double tmax,
                      TraceContext& ctx, SpanList& out) {
-    if (ctx.method == TraceMethod::SphereTrace) return sphereTraceSpans(p, ray, tmin, tmax, ctx, out);
+    if (ctx.method == TraceMethod::SphereTrace)
+        return sphereTraceSpans(p, ray, tmin, tmax, ctx, out);
     intervalSpans(p, ray, tmin, tmax, ctx, out);
 }
 

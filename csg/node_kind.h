@@ -18,11 +18,13 @@ class Tape;
 using NodePtr = std::shared_ptr<const Node>;
 
 /// Every kind of node. Boolean nodes have one kind per operator.
+// clang-format off: grouped by arity
 enum class NodeKind : uint8_t {
     Sphere, Box, Cylinder, Cone, Torus, HalfSpace, Implicit,  // leaves
     Transform, Material,                                      // one child
     Union, Intersection, Difference, Xor,                     // one or more children
 };
+// clang-format on
 
 /// "sphere", "box", …, "xor": the language's keywords for the kinds.
 const char* nodeKindName(NodeKind kind);

@@ -2,11 +2,11 @@
 // node is rebuilt over the ones that do (Node::withChildren), bottom up.
 #include "csg/prune.h"
 
-#include "csg/solids.h"
-#include "csg/tape.h"
-
 #include <cmath>
 #include <variant>
+
+#include "csg/solids.h"
+#include "csg/tape.h"
 
 namespace kerf {
 namespace {
@@ -101,8 +101,10 @@ Pruned prunedBoolean(const NodePtr& node, const Bounds3& box) {
                 const Pruned r = pruned(c, box);
                 if (r.state == PruneState::Empty) continue;
                 // A Full child flips inside and outside: it stays, as the original.
-                if (r.state == PruneState::Full) ++fullCount, kept.push_back(c);
-                else ++partialCount, kept.push_back(r.node);
+                if (r.state == PruneState::Full)
+                    ++fullCount, kept.push_back(c);
+                else
+                    ++partialCount, kept.push_back(r.node);
             }
             if (partialCount == 0) return fullCount % 2 == 1 ? full() : empty();
             break;
@@ -119,9 +121,12 @@ Pruned prunedBoolean(const NodePtr& node, const Bounds3& box) {
 Pruned pruned(const NodePtr& node, const Bounds3& box) {
     if (Bounds3::overlap(node->bounds(), box).empty()) return empty();
     switch (node->valueInterval(asIntervals(box)).classify()) {
-        case Classification::Empty: return empty();
-        case Classification::Filled: return full();
-        case Classification::Ambiguous: break;
+        case Classification::Empty:
+            return empty();
+        case Classification::Filled:
+            return full();
+        case Classification::Ambiguous:
+            break;
     }
     switch (node->kind()) {
         case NodeKind::Implicit:

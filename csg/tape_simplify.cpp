@@ -9,8 +9,8 @@
 namespace kerf {
 namespace {
 
-/// Which operand of op(a, b) (min or max) gives its value wherever a ∈ A, b ∈ B; Both if undecided. An
-/// interval that may hold NaN decides nothing (min and max treat NaN asymmetrically).
+/// Which operand of op(a, b) (min or max) gives its value wherever a ∈ A, b ∈ B; Both if undecided.
+/// An interval that may hold NaN decides nothing (min and max treat NaN asymmetrically).
 Choice choose(Op op, const Interval& a, const Interval& b) {
     if (a.maybeNan || b.maybeNan) return Choice::Both;
     if (op == Op::Min) {
@@ -35,10 +35,18 @@ Interval Tape::evalInterval(const Interval& x, const Interval& y, const Interval
     for (size_t i = 0; i < mInstrs.size(); ++i) {
         const TapeInstr& in = mInstrs[i];
         switch (in.op) {
-            case Op::Const: s[i] = Interval(in.value); break;
-            case Op::VarX: s[i] = x; break;
-            case Op::VarY: s[i] = y; break;
-            case Op::VarZ: s[i] = z; break;
+            case Op::Const:
+                s[i] = Interval(in.value);
+                break;
+            case Op::VarX:
+                s[i] = x;
+                break;
+            case Op::VarY:
+                s[i] = y;
+                break;
+            case Op::VarZ:
+                s[i] = z;
+                break;
             case Op::Min:
             case Op::Max: {
                 const Choice c = choose(in.op, s[in.a], s[in.b]);

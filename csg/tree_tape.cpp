@@ -1,10 +1,10 @@
 // A tree compiled into one expression, by a walk over the open tree (kinds, children, params).
 #include "csg/tree_tape.h"
 
+#include <variant>
+
 #include "csg/implicit_expr.h"
 #include "csg/primitive.h"
-
-#include <variant>
 
 namespace kerf {
 
@@ -39,10 +39,18 @@ ExprId treeExpr(const Node& node, ExprGraph& g, ExprId x, ExprId y, ExprId z) {
     for (size_t i = 1; i < kids.size(); ++i) {
         const ExprId c = treeExpr(*kids[i], g, x, y, z);
         switch (kind) {
-            case NodeKind::Union: v = g.binary(Op::Min, v, c); break;
-            case NodeKind::Intersection: v = e.max(v, c); break;
-            case NodeKind::Difference: v = e.max(v, e.neg(c)); break;
-            default: v = e.max(g.binary(Op::Min, v, c), e.neg(e.max(v, c))); break;  // xor
+            case NodeKind::Union:
+                v = g.binary(Op::Min, v, c);
+                break;
+            case NodeKind::Intersection:
+                v = e.max(v, c);
+                break;
+            case NodeKind::Difference:
+                v = e.max(v, e.neg(c));
+                break;
+            default:
+                v = e.max(g.binary(Op::Min, v, c), e.neg(e.max(v, c)));
+                break;  // xor
         }
     }
     return v;

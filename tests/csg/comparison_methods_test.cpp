@@ -1,15 +1,15 @@
 // csg/comparison_methods: every primitive's implicit form (Primitive::implicitExpr) is its
 // value(), a whole tree's tape (csg/tree_tape.h) is the tree's value(), and the generic
 // interval method handles unbounded ranges (half-spaces) as the closed form does.
-#include <catch2/catch.hpp>
-
 #include "csg/comparison_methods.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
 #include "csg/expr.h"
 #include "csg/solids.h"
 #include "csg/tree_tape.h"
 #include "util/oracles.h"
-
-#include <cmath>
 
 using namespace kerf;
 using namespace kerf::test;
@@ -46,7 +46,8 @@ TEST_CASE("Primitive::implicitExpr is value() (with the bound's term for an impl
             const double v = p.value(q);
             // The same operations in the same order: equal up to a few roundings.
             CHECK(whole->eval(q) == Approx(v).margin(1e-14).epsilon(1e-14));
-            if (p.kind() != NodeKind::Implicit) CHECK(f.eval(q) == Approx(v).margin(1e-14).epsilon(1e-14));
+            if (p.kind() != NodeKind::Implicit)
+                CHECK(f.eval(q) == Approx(v).margin(1e-14).epsilon(1e-14));
         }
     }
 }
@@ -58,7 +59,8 @@ TEST_CASE("treeTape is the tree's value() through transforms and every Boolean")
                          .after(Affine::scale(Vec3(1.3, 0.7, 1.1)));
     const NodePtr tree = makeBoolean(
         BoolOp::Xor,
-        {makeMaterial(makeTransform(makeBoolean(BoolOp::Difference, {prims[0], prims[2], prims[5]}), m), 1),
+        {makeMaterial(
+             makeTransform(makeBoolean(BoolOp::Difference, {prims[0], prims[2], prims[5]}), m), 1),
          makeBoolean(BoolOp::Intersection, {prims[1], prims[6], prims[7]}),
          makeBoolean(BoolOp::Union, {prims[3], prims[4]})});
     const std::shared_ptr<const Tape> whole = treeTape(*tree);

@@ -35,11 +35,11 @@ ExprId randomExpr(ExprGraph& g, Random& rng, int depth) {
             }
             case 1: {
                 const Vec3 n = rng.unitVector();
-                const ExprId dot = g.binary(
-                    Op::Add,
-                    g.binary(Op::Add, g.binary(Op::Mul, g.constant(n.x), g.x()),
-                             g.binary(Op::Mul, g.constant(n.y), g.y())),
-                    g.binary(Op::Mul, g.constant(n.z), g.z()));
+                const ExprId dot =
+                    g.binary(Op::Add,
+                             g.binary(Op::Add, g.binary(Op::Mul, g.constant(n.x), g.x()),
+                                      g.binary(Op::Mul, g.constant(n.y), g.y())),
+                             g.binary(Op::Mul, g.constant(n.z), g.z()));
                 return g.binary(Op::Sub, dot, g.constant(rng.uniform(-0.5, 0.5)));
             }
             default: {
@@ -49,29 +49,38 @@ ExprId randomExpr(ExprGraph& g, Random& rng, int depth) {
                 const auto term = [&](ExprId a, ExprId b) {
                     return g.binary(Op::Mul, g.unary(Op::Sin, a), g.unary(Op::Cos, b));
                 };
-                const ExprId sum = g.binary(Op::Add, g.binary(Op::Add, term(kx, ky), term(ky, kz)),
-                                            term(kz, kx));
+                const ExprId sum =
+                    g.binary(Op::Add, g.binary(Op::Add, term(kx, ky), term(ky, kz)), term(kz, kx));
                 return g.binary(Op::Sub, g.unary(Op::Abs, sum), g.constant(0.4));
             }
         }
     }
     const ExprId a = randomExpr(g, rng, depth - 1), b = randomExpr(g, rng, depth - 1);
     switch (static_cast<int>(rng.uniform(0, 3))) {
-        case 0: return g.binary(Op::Min, a, b);
-        case 1: return g.binary(Op::Max, a, b);
-        default: return g.binary(Op::Max, a, g.unary(Op::Neg, b));
+        case 0:
+            return g.binary(Op::Min, a, b);
+        case 1:
+            return g.binary(Op::Max, a, b);
+        default:
+            return g.binary(Op::Max, a, g.unary(Op::Neg, b));
     }
 }
 
 NodePtr randomLeaf(Random& rng) {
     const Vec3 c = randomPoint(rng, 1.0);
     switch (static_cast<int>(rng.uniform(0, 7))) {
-        case 0: return makeSphere(c, rng.uniform(0.3, 1.2));
-        case 1: return makeBox(c - Vec3(rng.uniform(0.2, 1.0)), c + Vec3(rng.uniform(0.2, 1.0)));
-        case 2: return makeCylinder(c, randomPoint(rng, 1.0), rng.uniform(0.2, 0.8));
-        case 3: return makeCone(c, randomPoint(rng, 1.0), rng.uniform(0.2, 0.8), rng.uniform(0.0, 0.5));
-        case 4: return makeTorus(rng.uniform(0.6, 1.2), rng.uniform(0.1, 0.5));
-        case 5: return makeHalfSpace(rng.unitVector(), rng.uniform(-0.5, 0.5));
+        case 0:
+            return makeSphere(c, rng.uniform(0.3, 1.2));
+        case 1:
+            return makeBox(c - Vec3(rng.uniform(0.2, 1.0)), c + Vec3(rng.uniform(0.2, 1.0)));
+        case 2:
+            return makeCylinder(c, randomPoint(rng, 1.0), rng.uniform(0.2, 0.8));
+        case 3:
+            return makeCone(c, randomPoint(rng, 1.0), rng.uniform(0.2, 0.8), rng.uniform(0.0, 0.5));
+        case 4:
+            return makeTorus(rng.uniform(0.6, 1.2), rng.uniform(0.1, 0.5));
+        case 5:
+            return makeHalfSpace(rng.unitVector(), rng.uniform(-0.5, 0.5));
         default: {
             ExprGraph g;
             const ExprId root = randomExpr(g, rng, static_cast<int>(rng.uniform(1, 4)));
@@ -196,7 +205,8 @@ TEST_CASE("pruned: an implicit's tape keeps the branches interval evaluation can
             g.unary(Op::Square, g.z()));
         return g.binary(Op::Sub, g.unary(Op::Sqrt, r2), g.constant(1.0));
     };
-    const std::shared_ptr<const Tape> tape = Tape::compile(g, g.binary(Op::Min, sphere(-2.0), sphere(2.0)));
+    const std::shared_ptr<const Tape> tape =
+        Tape::compile(g, g.binary(Op::Min, sphere(-2.0), sphere(2.0)));
     const NodePtr node = makeImplicit(tape, {Vec3(-4.0), Vec3(4.0)});
     const Bounds3 box{Vec3(-1.4, -0.3, -0.3), Vec3(-0.6, 0.3, 0.3)};
     const Pruned p = pruned(node, box);

@@ -5,7 +5,6 @@
 // and (libfive's measure) the instructions of the whole object compiled into one tape
 // (csg/tree_tape.h) before and after Tape::simplified over the cell.
 #include <catch2/catch.hpp>
-
 #include <cstdio>
 #include <string>
 

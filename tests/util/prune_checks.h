@@ -4,17 +4,16 @@
 /// instructions) for the reports.
 #pragma once
 
-#include "csg/prune.h"
-#include "csg/tape.h"
-#include "util/oracles.h"
-
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <sstream>
 #include <string>
 #include <variant>
 #include <vector>
+
+#include "csg/prune.h"
+#include "csg/tape.h"
+#include "util/oracles.h"
 
 namespace kerf::test {
 
@@ -128,8 +127,8 @@ inline int checkPrunedAgrees(const NodePtr& original, const Pruned& p, const Bou
         if (same) continue;
         ++failures;
         INFO("ray " << ray.origin.x << ' ' << ray.origin.y << ' ' << ray.origin.z << " dir "
-                    << ray.dir.x << ' ' << ray.dir.y << ' ' << ray.dir.z << " on [" << t0
-                    << ", " << t1 << "]");
+                    << ray.dir.x << ' ' << ray.dir.y << ' ' << ray.dir.z << " on [" << t0 << ", "
+                    << t1 << "]");
         std::ostringstream text;
         text.precision(17);
         text << "original";
