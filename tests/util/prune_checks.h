@@ -8,6 +8,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -119,10 +120,12 @@ inline int checkPrunedAgrees(const NodePtr& original, const Pruned& p, const Bou
         for (size_t k = 0; same && k < a.size(); ++k) {
             same = std::fabs(a[k].in.t - b[k].in.t) <= kPruneSpanSlack &&
                    std::fabs(a[k].out.t - b[k].out.t) <= kPruneSpanSlack;
-            // The same surface on both sides: the normals agree too.
-            if (same && a[k].in.isSurface() && b[k].in.isSurface())
-                same = glm::dot(glm::normalize(a[k].in.normal), glm::normalize(b[k].in.normal)) >
-                       1.0 - 1e-6;
+            // The same surface on both sides (pruned leaves keep their ids), same normal.
+            for (const auto& [x, y] : {std::pair(a[k].in, b[k].in), std::pair(a[k].out, b[k].out)})
+                if (same && x.isSurface() && y.isSurface())
+                    same =
+                        x.primitive == y.primitive &&
+                        glm::dot(glm::normalize(x.normal), glm::normalize(y.normal)) > 1.0 - 1e-6;
         }
         if (same) continue;
         ++failures;
