@@ -153,9 +153,9 @@ void sphereTraceSpans(const Primitive& p, const Ray& ray, double tmin, double tm
 }  // namespace
 
 const Tape& implicitTape(const Primitive& p) {
-    const Node& node = p.kind() == NodeKind::Implicit ? p : standIn(p);
-    // The variant's tape is shared with the node, which outlives the caller's use.
-    return *std::get<ImplicitParams>(node.params()).tape;
+    if (const Tape* own = p.compiledForm()) return *own;
+    // Through the stand-in's own pointer: no shared_ptr copy (an atomic count) per call.
+    return *static_cast<const Primitive&>(standIn(p)).compiledForm();
 }
 
 void comparisonSpans(const Primitive& p, const Ray& ray, double tmin, double tmax,

@@ -119,6 +119,8 @@ public:
         return slot.back();
     }
 
+    const Tape* compiledForm() const override { return mTape.get(); }
+
     /// For sphere tracing only: an ESTIMATE, made on first use so that pruned copies and
     /// renders that never sphere trace do not pay for its 4096 gradient samples.
     double lipschitz() const override {

@@ -10,6 +10,7 @@
 
 namespace kerf {
 
+class Tape;
 uint32_t nextPrimitiveId();
 
 class Primitive : public Node {
@@ -25,6 +26,8 @@ public:
     /// A bound on |∇value()| for sphere tracing: 1 for the distance-like forms (an implicit's
     /// is estimated, not proven).
     virtual double lipschitz() const { return 1.0; }
+    /// The implicit form already compiled, if the primitive holds it (an implicit), else null.
+    virtual const Tape* compiledForm() const { return nullptr; }
 
 protected:
     Primitive() : mId(nextPrimitiveId()) {}
