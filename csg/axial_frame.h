@@ -59,6 +59,15 @@ struct AxialFrame {
         y = px * e2.x + py * e2.y + pz * e2.z;
         z = px * axis.x + py * axis.y + pz * axis.z;
     }
+    /// Local coordinates as expressions over x, y, z (an implicit form: csg/implicit_expr.h),
+    /// in the order of operations of the point version.
+    template <class Builder, class Id>
+    void toLocal(Builder& e, Id x, Id y, Id z, Id& lx, Id& ly, Id& lz) const {
+        const Id px = e.sub(x, e.c(base.x)), py = e.sub(y, e.c(base.y)), pz = e.sub(z, e.c(base.z));
+        lx = e.dot(e1, px, py, pz);
+        ly = e.dot(e2, px, py, pz);
+        lz = e.dot(axis, px, py, pz);
+    }
     Vec3 localPoint(const Vec3& p) const {
         Vec3 q;
         toLocal(p, q.x, q.y, q.z);

@@ -86,6 +86,13 @@ public:
         return d + 1;
     }
 
+    NodeKind kind() const override { return booleanKind(mOp); }
+    NodeParams params() const override { return BooleanParams{mOp}; }
+    NodeSpan children() const override { return {mChildren.data(), mChildren.size()}; }
+    NodePtr withChildren(std::vector<NodePtr> children) const override {
+        return makeBoolean(mOp, std::move(children));
+    }
+
 private:
     /// The children's implicit forms (valueOf(child)) combined left to right by the operator.
     template <class T, class ValueOf>

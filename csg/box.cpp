@@ -1,6 +1,6 @@
 // The axis-aligned box: a slab test that knows which face each boundary lies on.
-#include "csg/polynomial_isolation.h"
 #include "csg/closed_primitive.h"
+#include "csg/implicit_expr.h"
 #include "csg/solids.h"
 
 #include <algorithm>
@@ -36,6 +36,18 @@ public:
         const Interval y = max(lo.y - b.y, b.y - hi.y);
         const Interval z = max(lo.z - b.z, b.z - hi.z);
         return max(max(x, y), z);
+    }
+
+    NodeKind kind() const override { return NodeKind::Box; }
+    NodeParams params() const override { return BoxParams{mBounds.lo, mBounds.hi}; }
+
+    ExprId implicitExpr(ExprGraph& g, ExprId x, ExprId y, ExprId z) const override {
+        ExprBuilder e{g};
+        const ExprId v[3] = {x, y, z};
+        ExprId slab[3];
+        for (int a = 0; a < 3; ++a)
+            slab[a] = e.max(e.sub(e.c(mBounds.lo[a]), v[a]), e.sub(v[a], e.c(mBounds.hi[a])));
+        return e.max(e.max(slab[0], slab[1]), slab[2]);
     }
 
 private:
@@ -79,50 +91,6 @@ private:
         out.push_back({boundary(tin, nIn), boundary(tout, nOut)});
     }
 
-    /// Interval isolation of the six linear slab functions in turn, each narrowing the range.
-    /// The search window is the ray's chord through the box's circumscribed ball (a bounding
-    /// volume, not the slab test), so it is finite and its ends lie outside the box.
-    void intervalSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                       SpanList& out) const {
-        const Vec3& d = ray.dir;
-        const double dd = glm::dot(d, d);
-        if (!(dd > 0.0)) return;
-        const Vec3 c = mBounds.center(), f = ray.origin - c;
-        const double radius = 0.5 * glm::length(mBounds.extent()) * (1.0 + 0x1p-40);
-        const double tc = -glm::dot(f, d) / dd;
-        const Vec3 l = f + tc * d;
-        if (glm::dot(l, l) > radius * radius) return;
-        const double half = radius / std::sqrt(dd);
-        FacedRange r{std::max(tmin, tc - half), std::min(tmax, tc + half)};
-        if (!(r.lo <= r.hi)) return;
-        const double tLo = r.lo, tHi = r.hi;
-        // Face 1 + 2a: the lo face of axis a (lo − x ≤ 0); face 2 + 2a: the hi face.
-        for (int a = 0; a < 3; ++a) {
-            const double o = ray.origin[a], da = ray.dir[a];
-            if (!clipToLinear({0.0, -da, mBounds.lo[a] - o}, 1 + 2 * a, 0.0, ctx, r)) return;
-            if (!clipToLinear({0.0, da, o - mBounds.hi[a]}, 2 + 2 * a, 0.0, ctx, r)) return;
-        }
-        const auto at = [&](double t, int face, double clipT) {
-            if (face == 0) return clipBoundary(clipT);
-            Vec3 n(0.0);
-            n[(face - 1) / 2] = face % 2 == 1 ? -1.0 : 1.0;
-            return rootBoundary(t, n, ctx);
-        };
-        out.push_back({at(r.lo, r.loFace, tLo), at(r.hi, r.hiFace, tHi)});
-        dropThinSpans(out, ctx.relTolerance);
-    }
-
-    /// The outward normal of the face whose slab distance is largest at p (value()'s gradient).
-    Vec3 gradient(const Vec3& p) const {
-        double best = -kInf;
-        Vec3 n(0.0);
-        for (int a = 0; a < 3; ++a) {
-            const double lo = mBounds.lo[a] - p[a], hi = p[a] - mBounds.hi[a];
-            if (lo > best) best = lo, n = Vec3(0.0), n[a] = -1.0;
-            if (hi > best) best = hi, n = Vec3(0.0), n[a] = 1.0;
-        }
-        return n;
-    }
 };
 
 }  // namespace

@@ -1,39 +1,28 @@
 /// @file csg/closed_primitive.h
 /// @brief The base of the primitives with closed-form spans (sphere, box, cylinder, cone,
-/// half-space): one spans() that picks the trace method, without virtual calls (CRTP).
+/// half-space): one spans() that runs the closed form without a virtual call (CRTP), and
+/// hands the comparison methods to csg/comparison_methods.h.
 #pragma once
 
-#include "csg/primitive.h"
+#include "csg/comparison_methods.h"
 
 namespace kerf {
 
 /// Derived (final) provides, callable from here (it befriends this base):
 ///   void closedSpans(const Ray&, SpanList&) const;  the closed form (TraceMethod::Closed)
-///   void intervalSpans(const Ray&, double tmin, double tmax, TraceContext&, SpanList&) const;
-///   Vec3 gradient(const Vec3& p) const;  the normal a sphere-traced crossing at p gets
-/// and a Lipschitz-1 value(). `kUnbounded` (false here) may be redeclared true by a primitive
-/// without finite bounds (see Primitive::sphereTraceWithinBounds).
+/// and, as every primitive, implicitExpr().
 template <class Derived>
 class ClosedFormPrimitive : public Primitive {
 public:
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                SpanList& out) const final {
+        // One predictable branch: the comparison methods are never mixed with the default.
+        if (ctx.method != TraceMethod::Closed)
+            return comparisonSpans(*this, ray, tmin, tmax, ctx, out);
         out.clear();
         ++ctx.stats.primitiveTests;
-        const Derived& self = static_cast<const Derived&>(*this);
-        if (ctx.method == TraceMethod::Interval)
-            return self.intervalSpans(ray, tmin, tmax, ctx, out);
-        if (ctx.method == TraceMethod::SphereTrace) {
-            return sphereTraceWithinBounds(
-                [&self](const Vec3& p) { return self.Derived::value(p); },
-                [&self](const Vec3& p) { return self.gradient(p); }, ray, tmin, tmax, ctx, out,
-                Derived::kUnbounded);
-        }
-        self.closedSpans(ray, out);
+        static_cast<const Derived&>(*this).closedSpans(ray, out);
     }
-
-protected:
-    static constexpr bool kUnbounded = false;
 };
 
 }  // namespace kerf

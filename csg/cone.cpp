@@ -1,8 +1,9 @@
 // The capped cone (frustum) around an arbitrary axis. The lateral surface is the quadric
 // |p⊥|² = (r1 + k·z)², which has two nappes; the slab between the caps keeps only the real one,
 // since r1 + k·z ≥ 0 for 0 ≤ z ≤ L.
+#include "csg/axial_frame.h"
 #include "csg/closed_primitive.h"
-#include "csg/frustum_interval.h"
+#include "csg/implicit_expr.h"
 #include "csg/quadratic.h"
 #include "csg/solids.h"
 
@@ -56,8 +57,22 @@ public:
     Interval valueInterval(const IntervalVec3& b) const override {
         Interval x, y, z;
         mFrame.toLocal(b, x, y, z);
-        const Interval side = (sqrt(sqr(x) + sqr(y)) - (mR1 + mSlope * z)) * mLateralScale;
+        const Interval side =
+            (sqrt(nonNegative(sqr(x) + sqr(y))) - (mR1 + mSlope * z)) * mLateralScale;
         return max(side, max(-z, z - mFrame.length));
+    }
+
+    NodeKind kind() const override { return NodeKind::Cone; }
+    NodeParams params() const override { return ConeParams{mFrame.base, mTop, mR1, mR2}; }
+
+    ExprId implicitExpr(ExprGraph& g, ExprId x, ExprId y, ExprId z) const override {
+        ExprBuilder e{g};
+        ExprId lx, ly, lz;
+        mFrame.toLocal(e, x, y, z, lx, ly, lz);
+        const ExprId radius = e.add(e.c(mR1), e.mul(e.c(mSlope), lz));
+        const ExprId side =
+            e.mul(e.sub(e.sqrt(e.add(e.sqr(lx), e.sqr(ly))), radius), e.c(mLateralScale));
+        return e.max(side, e.max(e.neg(lz), e.sub(lz, e.c(mFrame.length))));
     }
 
 private:
@@ -141,28 +156,6 @@ private:
         const double rho = std::sqrt(px * px + py * py);
         if (rho == 0.0) return mFrame.capNormal(mSlope > 0.0 ? -1 : 1);  // the apex: out of the tip
         return mFrame.across(px, py) - (mSlope * rho) * mFrame.axis;
-    }
-
-    /// TraceMethod::Interval (csg/frustum_interval.h).
-    void intervalSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                       SpanList& out) const {
-        frustumIntervalSpans(
-            mFrame, {mR1, mSlope, std::max(mR1, mR2)}, ray, tmin, tmax, ctx,
-            [this](double x, double y) { return sideNormal(x, y); },
-            [&](double t, const Vec3& n) { return rootBoundary(t, n, ctx); },
-            [](double t) { return clipBoundary(t); }, out);
-    }
-
-    // Sphere tracing: value() is Lipschitz 1, since the lateral term's gradient (p̂⊥, −k) has
-    // length √(1 + k²) and is divided by it.
-
-    /// The gradient of value()'s largest term at p: the lateral normal, or a cap's normal.
-    Vec3 gradient(const Vec3& p) const {
-        double x, y, z;
-        mFrame.toLocal(p, x, y, z);
-        const double side = (std::sqrt(x * x + y * y) - (mR1 + mSlope * z)) * mLateralScale;
-        if (side >= -z && side >= z - mFrame.length) return sideNormal(x, y);
-        return mFrame.capNormal(-z > z - mFrame.length ? -1 : 1);
     }
 
     AxialFrame mFrame;  // from the base (radius r1) towards the top (radius r2)

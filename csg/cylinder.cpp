@@ -1,7 +1,8 @@
 // The capped cylinder around an arbitrary axis: a 2-D Haines-style quadratic across the axis
 // intersected with the slab between the caps.
+#include "csg/axial_frame.h"
 #include "csg/closed_primitive.h"
-#include "csg/frustum_interval.h"
+#include "csg/implicit_expr.h"
 #include "csg/quadratic.h"
 #include "csg/solids.h"
 
@@ -46,8 +47,19 @@ public:
     Interval valueInterval(const IntervalVec3& b) const override {
         Interval x, y, z;
         mFrame.toLocal(b, x, y, z);
-        const Interval side = sqrt(sqr(x) + sqr(y)) - mRadius;
+        const Interval side = sqrt(nonNegative(sqr(x) + sqr(y))) - mRadius;
         return max(side, max(-z, z - mFrame.length));
+    }
+
+    NodeKind kind() const override { return NodeKind::Cylinder; }
+    NodeParams params() const override { return CylinderParams{mFrame.base, mTop, mRadius}; }
+
+    ExprId implicitExpr(ExprGraph& g, ExprId x, ExprId y, ExprId z) const override {
+        ExprBuilder e{g};
+        ExprId lx, ly, lz;
+        mFrame.toLocal(e, x, y, z, lx, ly, lz);
+        const ExprId side = e.sub(e.sqrt(e.add(e.sqr(lx), e.sqr(ly))), e.c(mRadius));
+        return e.max(side, e.max(e.neg(lz), e.sub(lz, e.c(mFrame.length))));
     }
 
 private:
@@ -93,25 +105,6 @@ private:
     }
 
     Boundary capBoundary(double t, int cap) const { return boundary(t, mFrame.capNormal(cap)); }
-
-    /// TraceMethod::Interval (csg/frustum_interval.h).
-    void intervalSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                       SpanList& out) const {
-        frustumIntervalSpans(
-            mFrame, {mRadius, 0.0, mRadius}, ray, tmin, tmax, ctx,
-            [this](double x, double y) { return mFrame.across(x, y); },
-            [&](double t, const Vec3& n) { return rootBoundary(t, n, ctx); },
-            [](double t) { return clipBoundary(t); }, out);
-    }
-
-    /// The gradient of value()'s largest term at p: across the axis, or a cap's normal.
-    Vec3 gradient(const Vec3& p) const {
-        double x, y, z;
-        mFrame.toLocal(p, x, y, z);
-        const double side = std::sqrt(x * x + y * y) - mRadius;
-        if (side >= -z && side >= z - mFrame.length) return mFrame.across(x, y);
-        return mFrame.capNormal(-z > z - mFrame.length ? -1 : 1);
-    }
 
     AxialFrame mFrame;  // from the base towards the top
     Vec3 mTop;  ///< the given end point, for valueExtended

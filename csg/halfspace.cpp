@@ -1,7 +1,7 @@
 // The half-space dot(n, p) ≤ offset: one plane crossing per ray, computed with compensated
 // dot products so the hit is exact to a few ulps even for nearly parallel rays.
-#include "csg/polynomial_isolation.h"
 #include "csg/closed_primitive.h"
+#include "csg/implicit_expr.h"
 #include "csg/solids.h"
 
 #include <algorithm>
@@ -87,10 +87,16 @@ public:
         return (mNormal.x * b.x + mNormal.y * b.y + mNormal.z * b.z - mOffset) * mInvLength;
     }
 
+    NodeKind kind() const override { return NodeKind::HalfSpace; }
+    NodeParams params() const override { return HalfSpaceParams{mNormal, mOffset}; }
+
+    ExprId implicitExpr(ExprGraph& g, ExprId x, ExprId y, ExprId z) const override {
+        ExprBuilder e{g};
+        return e.mul(e.sub(e.dot(mNormal, x, y, z), e.c(mOffset)), e.c(mInvLength));
+    }
+
 private:
     friend class ClosedFormPrimitive<HalfSpace>;
-    /// Sphere tracing needs a finite start: an unbounded tmin starts the march at 0.
-    static constexpr bool kUnbounded = true;
 
     /// TraceMethod::Closed.
     void closedSpans(const Ray& ray, SpanList& out) const {
@@ -106,40 +112,6 @@ private:
         else
             out.push_back({boundary(t, mNormal), endless(kInf)});
     }
-
-    /// Interval isolation of the linear g(t) = n·o − offset + t·n·d on [tmin, tmax]. An
-    /// infinite end is cut at a finite one beyond which g's interval extension has one sign:
-    /// from a finite base tb, |g| ≥ |g'|·|t − tb| − |g(tb)| > 0 once |t − tb| > 2|g(tb)/g'|.
-    void intervalSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                       SpanList& out) const {
-        const double g1 = dot2(mNormal, ray.dir, 0.0);
-        const double g0 = dot2(mNormal, ray.origin, -mOffset);
-        const QuadraticAlongRay g{0.0, g1, g0};
-        const double tb = std::isfinite(tmin) ? tmin : std::isfinite(tmax) ? tmax : 0.0;
-        double reach = g1 == 0.0 ? 1.0 : 2.0 * std::fabs(g.value(tb) / g1) + std::fabs(tb);
-        if (!(reach > 0.0)) reach = 1.0;  // a root exactly at tb = 0 (any window holds it)
-        reach = std::min(reach, 0x1p1020);  // finite even for a ray almost in the plane
-        const double w0 = std::max(tmin, tb - reach), w1 = std::min(tmax, tb + reach);
-        if (!(w0 <= w1)) return;
-        Crossings c;
-        findCrossings(g, w0, w1, 0.0, ctx, c);
-        // Window ends that are not the caller's range are cut where nothing changes.
-        bool inside = c.insideAtStart;
-        Boundary pending = endless(tmin);
-        for (int i = 0; i < c.count; ++i) {
-            const Boundary b = rootBoundary(c.s[i], mNormal, ctx);
-            if (c.entering[i])
-                pending = b;
-            else
-                out.push_back({pending, b});
-            inside = c.entering[i];
-        }
-        if (inside) out.push_back({pending, endless(tmax)});
-        dropThinSpans(out, ctx.relTolerance);
-    }
-
-    /// value() is normalised (Lipschitz 1); its gradient is the plane's normal everywhere.
-    Vec3 gradient(const Vec3&) const { return mNormal; }
 
     /// An end of an unbounded span: not a surface, like a clip of the parameter range.
     static Boundary endless(double t) { return clipBoundary(t); }

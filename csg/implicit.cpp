@@ -1,11 +1,11 @@
 // The implicit primitive {f ≤ 0} ∩ box: spans by interval root isolation of the tape along the
 // ray, clipped to the box; where the box cuts the inside region, the box face is the boundary.
 #include <algorithm>
+#include <mutex>
 
-#include "csg/primitive.h"
+#include "csg/comparison_methods.h"
 #include "csg/root_isolation.h"
 #include "csg/solids.h"
-#include "csg/sphere_trace.h"
 
 namespace kerf {
 namespace {
@@ -31,25 +31,23 @@ class Implicit final : public Primitive {
 public:
     Implicit(std::shared_ptr<const Tape> f, const Bounds3& box) : mTape(std::move(f)) {
         mBounds = box;
-        mLipschitz = estimateLipschitz();
+    }
+    /// A copy of primitive `id` with another function (csg/prune.h) or a stand-in for it
+    /// (csg/comparison_methods.h): its boundaries carry that id.
+    Implicit(std::shared_ptr<const Tape> f, const Bounds3& box, uint32_t id)
+        : Primitive(id), mTape(std::move(f)) {
+        mBounds = box;
     }
 
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                SpanList& out) const override {
+        // The closed method already isolates f by intervals: Interval is the same.
+        if (ctx.method == TraceMethod::SphereTrace)
+            return comparisonSpans(*this, ray, tmin, tmax, ctx, out);
         out.clear();
         ++ctx.stats.primitiveTests;
         Range r;
         if (!clip(ray, tmin, tmax, r)) return;
-        // The closed method already isolates f by intervals: Interval is the same.
-        if (ctx.method == TraceMethod::SphereTrace) {
-            sphereTraceSpans([this](const Vec3& p) { return Implicit::value(p); }, ray, r.t0,
-                             r.t1, mLipschitz, false, ctx,
-                             [&](double t) { return rootBoundary(t, normalAt(ray.at(t)), ctx); },
-                             [&](double, bool atStart) { return endBoundary(ray, r, atStart); },
-                             out);
-            return;
-        }
-
         TapeAlongRay problem{*mTape, ray};
         isolatedSpans(
             problem, r.t0, r.t1, 0.0, ctx,
@@ -97,6 +95,37 @@ public:
             outside = max(outside, max(Interval(mBounds.lo[a]) - *axes[a],
                                        *axes[a] - Interval(mBounds.hi[a])));
         return max(f, outside);
+    }
+
+    NodeKind kind() const override { return NodeKind::Implicit; }
+    NodeParams params() const override { return ImplicitParams{mTape, mBounds}; }
+
+    /// The tape's instructions over the given coordinates (the bound is not part of it).
+    ExprId implicitExpr(ExprGraph& g, ExprId x, ExprId y, ExprId z) const override {
+        std::vector<ExprId> slot(mTape->size());
+        for (int i = 0; i < mTape->size(); ++i) {
+            const TapeInstr& in = mTape->instrs()[i];
+            switch (in.op) {
+                case Op::Const: slot[i] = g.constant(in.value); break;
+                case Op::VarX: slot[i] = x; break;
+                case Op::VarY: slot[i] = y; break;
+                case Op::VarZ: slot[i] = z; break;
+                case Op::PowInt: slot[i] = g.powInt(slot[in.a], static_cast<int>(in.value)); break;
+                default:
+                    slot[i] = in.b >= 0 ? g.binary(in.op, slot[in.a], slot[in.b])
+                                        : g.unary(in.op, slot[in.a]);
+            }
+        }
+        return slot.back();
+    }
+
+    const Tape* compiledForm() const override { return mTape.get(); }
+
+    /// For sphere tracing only: an ESTIMATE, made on first use so that pruned copies and
+    /// renders that never sphere trace do not pay for its 4096 gradient samples.
+    double lipschitz() const override {
+        std::call_once(mLipschitzOnce, [this] { mLipschitz = estimateLipschitz(); });
+        return mLipschitz;
     }
 
 private:
@@ -160,13 +189,23 @@ private:
     }
 
     std::shared_ptr<const Tape> mTape;
-    double mLipschitz = 1.0;  ///< estimated, for TraceMethod::SphereTrace only
+    mutable std::once_flag mLipschitzOnce;
+    mutable double mLipschitz = 1.0;  ///< estimated, for TraceMethod::SphereTrace only
 };
 
 }  // namespace
 
 NodePtr makeImplicit(std::shared_ptr<const Tape> f, const Bounds3& bound) {
     return std::make_shared<Implicit>(std::move(f), bound);
+}
+
+NodePtr withImplicitFunction(const Node& original, std::shared_ptr<const Tape> f) {
+    const auto& o = dynamic_cast<const Implicit&>(original);
+    return std::make_shared<Implicit>(std::move(f), o.bounds(), o.id());
+}
+
+NodePtr makeImplicitStandIn(std::shared_ptr<const Tape> f, const Bounds3& bound, uint32_t id) {
+    return std::make_shared<Implicit>(std::move(f), bound, id);
 }
 
 }  // namespace kerf

@@ -43,6 +43,14 @@ struct Interval {
     }
 };
 
+/// `a` for a quantity that cannot be negative (a sum of squares), its lower end clamped at 0:
+/// outward rounding of an exact 0 (0 + 0 rounds down to −2⁻¹⁰⁷⁴) would otherwise make sqrt
+/// report a possible NaN, and nothing holding it could ever be classified.
+inline Interval nonNegative(Interval a) {
+    if (a.lo < 0.0) a.lo = 0.0;
+    return a;
+}
+
 /// One ulp down / up; infinities stay put.
 inline double roundDown(double v) { return std::nextafter(v, -std::numeric_limits<double>::infinity()); }
 inline double roundUp(double v) { return std::nextafter(v, std::numeric_limits<double>::infinity()); }

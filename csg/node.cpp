@@ -1,4 +1,5 @@
-// The default first-surface search: all spans, then the first surface boundary after tmin.
+// The default first-surface search (all spans, then the first surface boundary after tmin),
+// and the names of the node kinds.
 #include "csg/node.h"
 
 namespace kerf {
@@ -27,6 +28,48 @@ bool Node::firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& 
     SpanList spans;
     this->spans(ray, tmin, tmax, ctx, spans);
     return firstSurfaceOf(spans, tmin, tmax, hit, entering);
+}
+
+}  // namespace kerf
+
+namespace kerf {
+
+const char* nodeKindName(NodeKind kind) {
+    switch (kind) {
+        case NodeKind::Sphere: return "sphere";
+        case NodeKind::Box: return "box";
+        case NodeKind::Cylinder: return "cylinder";
+        case NodeKind::Cone: return "cone";
+        case NodeKind::Torus: return "torus";
+        case NodeKind::HalfSpace: return "halfspace";
+        case NodeKind::Implicit: return "implicit";
+        case NodeKind::Transform: return "transform";
+        case NodeKind::Material: return "material";
+        case NodeKind::Union: return "union";
+        case NodeKind::Intersection: return "intersection";
+        case NodeKind::Difference: return "difference";
+        case NodeKind::Xor: return "xor";
+    }
+    return "?";
+}
+
+NodeKind booleanKind(BoolOp op) {
+    switch (op) {
+        case BoolOp::Union: return NodeKind::Union;
+        case BoolOp::Intersection: return NodeKind::Intersection;
+        case BoolOp::Difference: return NodeKind::Difference;
+        case BoolOp::Xor: return NodeKind::Xor;
+    }
+    return NodeKind::Union;
+}
+
+BoolOp booleanOp(NodeKind kind) {
+    switch (kind) {
+        case NodeKind::Intersection: return BoolOp::Intersection;
+        case NodeKind::Difference: return BoolOp::Difference;
+        case NodeKind::Xor: return BoolOp::Xor;
+        default: return BoolOp::Union;
+    }
 }
 
 }  // namespace kerf

@@ -5,11 +5,13 @@
 #pragma once
 
 #include "csg/interval.h"
+#include "csg/node_kind.h"
 #include "csg/span.h"
 #include "csg/trace_context.h"
 #include "csg/types.h"
 
 #include <memory>
+#include <vector>
 
 namespace kerf {
 
@@ -54,11 +56,22 @@ public:
     virtual int primitiveCount() const = 0;
     virtual int depth() const = 0;
 
+    // The open tree: enough for code outside csg/ to walk, print and rebuild trees.
+
+    /// Which kind of node this is.
+    virtual NodeKind kind() const = 0;
+    /// The data that defines this node besides its children (csg/node_kind.h).
+    virtual NodeParams params() const = 0;
+    /// The children, in order (a difference's body first); empty for a leaf.
+    virtual NodeSpan children() const { return {}; }
+    /// The same node over other children (as many as the kind allows: one for a transform or
+    /// a material, at least one for a Boolean). Transforms keep their exact inverse, so the
+    /// rebuilt node gives the same bits where the children do. A leaf returns nullptr.
+    virtual NodePtr withChildren(std::vector<NodePtr> children) const { return nullptr; }
+
 protected:
     Bounds3 mBounds;
 };
-
-using NodePtr = std::shared_ptr<const Node>;
 
 /// The first surface boundary with tmin < t ≤ tmax in sorted spans; false if there is none.
 bool firstSurfaceOf(const SpanList& spans, double tmin, double tmax, Boundary& hit,

@@ -1,16 +1,16 @@
 /// @file csg/primitive.h
 /// @brief The common base of the leaves of a solid tree. Each primitive has a process-unique
-/// id that its boundaries carry (for statistics and deterministic tie-breaks).
+/// id that its boundaries carry (for statistics and deterministic tie-breaks), and gives its
+/// implicit form as an expression, from which the comparison methods
+/// (csg/comparison_methods.h) trace it.
 #pragma once
 
+#include "csg/expr.h"
 #include "csg/node.h"
-#include "csg/sphere_trace.h"
-
-#include <algorithm>
-#include <cmath>
 
 namespace kerf {
 
+class Tape;
 uint32_t nextPrimitiveId();
 
 class Primitive : public Node {
@@ -19,8 +19,21 @@ public:
     int primitiveCount() const override { return 1; }
     int depth() const override { return 1; }
 
+    /// The implicit form f over the coordinates x, y, z of this primitive's space, built into
+    /// g: the solid is {f ≤ 0} ∩ bounds(). It is value() itself, except for an implicit, whose
+    /// value() adds its bound's term.
+    virtual ExprId implicitExpr(ExprGraph& g, ExprId x, ExprId y, ExprId z) const = 0;
+    /// A bound on |∇value()| for sphere tracing: 1 for the distance-like forms (an implicit's
+    /// is estimated, not proven).
+    virtual double lipschitz() const { return 1.0; }
+    /// The implicit form already compiled, if the primitive holds it (an implicit), else null.
+    virtual const Tape* compiledForm() const { return nullptr; }
+
 protected:
     Primitive() : mId(nextPrimitiveId()) {}
+    /// A copy or stand-in of another primitive (csg/prune.h, csg/comparison_methods.h)
+    /// keeps its id: the same surface.
+    explicit Primitive(uint32_t id) : mId(id) {}
 
     /// A boundary of this primitive at t with outward normal n (material left unset).
     Boundary boundary(double t, const Vec3& n) const {
@@ -42,28 +55,6 @@ protected:
         Boundary b;
         b.t = t;
         return b;
-    }
-
-    /// TraceMethod::SphereTrace for a leaf whose implicit form value(p) is Lipschitz-1: marches
-    /// it within the bounds, crossings taking normal(p) as their normal. Callers pass
-    /// non-virtual calls. `unbounded` (a half-space): a range starting at −inf is marched from
-    /// 0, where the comparison's rays start; else such a range is not traced.
-    template <class Value, class Normal>
-    void sphereTraceWithinBounds(const Value& value, const Normal& normal, const Ray& ray,
-                                 double tmin, double tmax, TraceContext& ctx, SpanList& out,
-                                 bool unbounded = false) const {
-        double t0 = tmin, t1 = tmax;
-        if (!mBounds.clipRay(ray, t0, t1)) return;
-        // The ray comes from outside when it starts on the bounds (a half-space's is its plane).
-        const bool outsideBefore = t0 > tmin;
-        if (unbounded && !std::isfinite(t0)) t0 = std::min(0.0, t1);
-        if (!std::isfinite(t0)) return;
-        // The ray can start inside only at t0 == tmin, or at a start moved to 0 (unbounded):
-        // either way the first span reaches back to tmin.
-        sphereTraceSpans(value, ray, t0, t1, 1.0, outsideBefore, ctx,
-                         [&](double t) { return rootBoundary(t, normal(ray.at(t)), ctx); },
-                         [&](double t, bool atStart) { return clipBoundary(atStart ? tmin : t); },
-                         out);
     }
 
 private:

@@ -23,6 +23,12 @@ NodePtr makeTorus(double majorRadius, double minorRadius);
 NodePtr makeHalfSpace(const Vec3& normal, double offset);
 /// {p in bound : f(p) ≤ 0}, f given as a tape over x, y, z.
 NodePtr makeImplicit(std::shared_ptr<const Tape> f, const Bounds3& bound);
+/// The implicit leaf `original` (its kind must be Implicit) with f in place of its function:
+/// same bound and primitive id, so where f equals the old function the two are one surface.
+NodePtr withImplicitFunction(const Node& original, std::shared_ptr<const Tape> f);
+/// An implicit {f ≤ 0} ∩ bound whose boundaries carry another primitive's id: the stand-in
+/// through which csg/comparison_methods.h traces that primitive's implicit form.
+NodePtr makeImplicitStandIn(std::shared_ptr<const Tape> f, const Bounds3& bound, uint32_t id);
 
 /// The child seen through worldFromLocal (maps the child's space into this node's space).
 NodePtr makeTransform(NodePtr child, const Affine& worldFromLocal);

@@ -1,6 +1,6 @@
 // The sphere: closed-form spans with the cancellation-free discriminant of Haines et al.
-#include "csg/polynomial_isolation.h"
 #include "csg/closed_primitive.h"
+#include "csg/implicit_expr.h"
 #include "csg/quadratic.h"
 #include "csg/solids.h"
 
@@ -33,7 +33,17 @@ public:
 
     Interval valueInterval(const IntervalVec3& b) const override {
         const Interval x = b.x - mCenter.x, y = b.y - mCenter.y, z = b.z - mCenter.z;
-        return sqrt(sqr(x) + sqr(y) + sqr(z)) - mRadius;
+        return sqrt(nonNegative(sqr(x) + sqr(y) + sqr(z))) - mRadius;
+    }
+
+    NodeKind kind() const override { return NodeKind::Sphere; }
+    NodeParams params() const override { return SphereParams{mCenter, mRadius}; }
+
+    ExprId implicitExpr(ExprGraph& g, ExprId x, ExprId y, ExprId z) const override {
+        ExprBuilder e{g};
+        const ExprId dx = e.sub(x, e.c(mCenter.x)), dy = e.sub(y, e.c(mCenter.y));
+        const ExprId dz = e.sub(z, e.c(mCenter.z));
+        return e.sub(e.sqrt(e.add(e.add(e.sqr(dx), e.sqr(dy)), e.sqr(dz))), e.c(mRadius));
     }
 
 private:
@@ -86,37 +96,6 @@ private:
         // f + t·d = 2^kp·(fs + t·2^(kd−kp)·ds): the scaled root t' gives t = 2^(kp−kd)·t'.
         centredSpans(fs, ds, rs * rs, kp - kd, out);
     }
-
-    /// Interval isolation of |o + t·d − c|² − r² on [tmin, tmax]. Normalised: lengths by r, the
-    /// parameter s by arc length from the ray's point nearest the centre (Haines et al.'s
-    /// conditioning), so q(s) = s² + 2(p0·u)·s + |p0|² − 1 and the ball is |s| ≤ 1.
-    void intervalSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                       SpanList& out) const {
-        const Vec3& d = ray.dir;
-        const double dd = glm::dot(d, d);
-        if (!(dd > 0.0)) return;
-        const Vec3 f = ray.origin - mCenter;
-        const double tc = -glm::dot(f, d) / dd, len = std::sqrt(dd);
-        const double inv = 1.0 / mRadius, invLen = 1.0 / len;
-        const double sPerT = len * inv, tPerS = mRadius * invLen;
-        const Vec3 p0 = (f + tc * d) * inv, u = d * invLen;
-        const QuadraticAlongRay q{1.0, 2.0 * glm::dot(p0, u), glm::dot(p0, p0) - 1.0};
-        const double sMin = (tmin - tc) * sPerT, sMax = (tmax - tc) * sPerT;
-        const FacedRange r{std::max(-kNormalisedWindow, sMin), std::min(kNormalisedWindow, sMax)};
-        if (!(r.lo <= r.hi)) return;
-        const auto at = [&](double s, int face, double clipT) {
-            if (face == 0) return clipBoundary(clipT);
-            return rootBoundary(tc + s * tPerS, p0 + s * u, ctx);
-        };
-        quadraticSpans(q, r, 1, tc * sPerT, ctx, [&](double sIn, int fIn, double sOut, int fOut) {
-            out.push_back({at(sIn, fIn, r.lo == sMin ? tmin : tc + sIn * tPerS),
-                           at(sOut, fOut, r.hi == sMax ? tmax : tc + sOut * tPerS)});
-        });
-        dropThinSpans(out, ctx.relTolerance);
-    }
-
-    /// value() is a true distance; its gradient points away from the centre.
-    Vec3 gradient(const Vec3& p) const { return p - mCenter; }
 
     Vec3 mCenter;
     double mRadius;

@@ -12,6 +12,11 @@
 
 namespace kerf {
 
+/// Which operand decided a min or max over a region (Fidget's Choice): Left (a), Right (b),
+/// or Both when interval evaluation could not tell. abs(a) records Left where a > 0 (it is a)
+/// and Right where a < 0 (it is −a). Other instructions record Both.
+enum class Choice : uint8_t { Both, Left, Right };
+
 /// Instruction i writes slot i; operands name earlier slots.
 struct TapeInstr {
     Op op;
@@ -39,6 +44,16 @@ public:
     /// Along a ray p(t) = o + t·d for t in `t`: an interval holding f, and one holding df/dt
     /// (forward-mode differentiation on intervals). Used by root isolation.
     void evalIntervalAlongRay(const Ray& ray, const Interval& t, Interval& f, Interval& dfdt) const;
+
+    /// evalInterval, also recording in `choices` (resized to size()) which operand of each
+    /// min/max (and the sign of each abs) decided it over the box (csg/tape_simplify.cpp).
+    Interval evalInterval(const Interval& x, const Interval& y, const Interval& z,
+                          std::vector<Choice>& choices) const;
+    /// The tape with every decided min/max (abs) replaced by its chosen operand (or its
+    /// negation) and the
+    /// instructions nothing uses any more dropped (libfive, Fidget). On the box the choices
+    /// were recorded over it computes the same doubles as this tape at every point.
+    std::shared_ptr<const Tape> simplified(const std::vector<Choice>& choices) const;
 
 private:
     std::vector<TapeInstr> mInstrs;

@@ -10,7 +10,8 @@
 #include <algorithm>
 #include <limits>
 
-#include "csg/primitive.h"
+#include "csg/comparison_methods.h"
+#include "csg/implicit_expr.h"
 #include "csg/root_isolation.h"
 #include "csg/solids.h"
 
@@ -68,15 +69,11 @@ public:
 
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                SpanList& out) const override {
+        // The closed method already isolates the quartic by intervals: Interval is the same.
+        if (ctx.method == TraceMethod::SphereTrace)
+            return comparisonSpans(*this, ray, tmin, tmax, ctx, out);  // a distance: Lipschitz 1
         out.clear();
         ++ctx.stats.primitiveTests;
-        // The closed method already isolates the quartic by intervals: Interval is the same.
-        if (ctx.method == TraceMethod::SphereTrace) {
-            // value() is a true distance: Lipschitz 1.
-            return sphereTraceWithinBounds([this](const Vec3& p) { return Torus::value(p); },
-                                           [this](const Vec3& p) { return normalAt(p); }, ray,
-                                           tmin, tmax, ctx, out);
-        }
         Setup st;
         if (!setUp(ray, tmin, tmax, st)) return;
         isolatedSpans(
@@ -118,8 +115,17 @@ public:
     }
 
     Interval valueInterval(const IntervalVec3& box) const override {
-        const Interval rho = sqrt(sqr(box.x) + sqr(box.z));
-        return sqrt(sqr(rho - Interval(mR)) + sqr(box.y)) - Interval(mr);
+        const Interval rho = sqrt(nonNegative(sqr(box.x) + sqr(box.z)));
+        return sqrt(nonNegative(sqr(rho - Interval(mR)) + sqr(box.y))) - Interval(mr);
+    }
+
+    NodeKind kind() const override { return NodeKind::Torus; }
+    NodeParams params() const override { return TorusParams{mR, mr}; }
+
+    ExprId implicitExpr(ExprGraph& g, ExprId x, ExprId y, ExprId z) const override {
+        ExprBuilder e{g};
+        const ExprId rho = e.sqrt(e.add(e.sqr(x), e.sqr(z)));
+        return e.sub(e.sqrt(e.add(e.sqr(e.sub(rho, e.c(mR))), e.sqr(y))), e.c(mr));
     }
 
 private:

@@ -12,12 +12,19 @@ class TransformNode final : public Node {
 public:
     TransformNode(NodePtr child, const Affine& worldFromLocal)
         : mChild(std::move(child)),
+          mWorldFromLocal(worldFromLocal),
           mLocalFromWorld(worldFromLocal.inverse()),
           mNormalToWorld(glm::transpose(mLocalFromWorld.linear)),
           mWorldFromLocalExtended(glm::tmat3x3<long double>(worldFromLocal.linear)),
           mLocalFromWorldExtended(glm::inverse(mWorldFromLocalExtended)),
           mOffsetExtended(worldFromLocal.offset) {
         mBounds = worldFromLocal.map(mChild->bounds());
+    }
+
+    /// The same maps (the inverses copied, not recomputed) over another child.
+    TransformNode(NodePtr child, const TransformNode& same) : TransformNode(same) {
+        mChild = std::move(child);
+        mBounds = mWorldFromLocal.map(mChild->bounds());
     }
 
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
@@ -61,8 +68,16 @@ public:
     int primitiveCount() const override { return mChild->primitiveCount(); }
     int depth() const override { return mChild->depth(); }
 
+    NodeKind kind() const override { return NodeKind::Transform; }
+    NodeParams params() const override { return TransformParams{mWorldFromLocal}; }
+    NodeSpan children() const override { return {&mChild, 1}; }
+    NodePtr withChildren(std::vector<NodePtr> children) const override {
+        return std::make_shared<TransformNode>(std::move(children.at(0)), *this);
+    }
+
 private:
     NodePtr mChild;
+    Affine mWorldFromLocal;  ///< as given, for params()
     Affine mLocalFromWorld;
     Mat3 mNormalToWorld;
     // The map inverted in long double, so references do not inherit the double inverse's error.
@@ -98,6 +113,13 @@ public:
     }
     int primitiveCount() const override { return mChild->primitiveCount(); }
     int depth() const override { return mChild->depth(); }
+
+    NodeKind kind() const override { return NodeKind::Material; }
+    NodeParams params() const override { return MaterialParams{mMaterial}; }
+    NodeSpan children() const override { return {&mChild, 1}; }
+    NodePtr withChildren(std::vector<NodePtr> children) const override {
+        return std::make_shared<MaterialNode>(std::move(children.at(0)), mMaterial);
+    }
 
 private:
     NodePtr mChild;

@@ -1,0 +1,31 @@
+/// @file csg/comparison_methods.h
+/// @brief TraceMethod::Interval and TraceMethod::SphereTrace for every primitive, from its
+/// implicit form alone (Primitive::implicitExpr), for `--method` and the accuracy comparison.
+/// A primitive brings only its closed form (if any) and its implicit form; a new primitive
+/// gets both comparison methods for free.
+///
+/// - Interval: the implicit primitive's own machinery (csg/implicit.cpp: interval root
+///   isolation of the tape along the ray with Tape::evalIntervalAlongRay, clipped to the
+///   bounds) run on a stand-in implicit over the primitive's form, bounds and id. An infinite
+///   end of the range (half-spaces) is first moved to a finite one beyond which interval
+///   evaluation proves the state cannot change.
+/// - SphereTrace: Hart's march (csg/sphere_trace.h) on value() with the primitive's Lipschitz
+///   bound, within its bounds; a crossing's normal is the gradient of the form.
+///
+/// Neither is on the default path: ClosedFormPrimitive::spans takes one predictable branch.
+#pragma once
+
+#include "csg/primitive.h"
+#include "csg/tape.h"
+
+namespace kerf {
+
+/// Node::spans of `p` by ctx.method, which is Interval or SphereTrace.
+void comparisonSpans(const Primitive& p, const Ray& ray, double tmin, double tmax,
+                     TraceContext& ctx, SpanList& out);
+
+/// p's implicit form compiled: an implicit's own tape; for other primitives compiled once per
+/// thread on first use and kept by primitive id, so primitives carry nothing for these methods.
+const Tape& implicitTape(const Primitive& p);
+
+}  // namespace kerf

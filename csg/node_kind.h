@@ -1,0 +1,70 @@
+/// @file csg/node_kind.h
+/// @brief What a walker outside csg/ can learn about a node without knowing its class: its
+/// kind, its children (csg/node.h) and the parameters that define it, as the factories in
+/// csg/solids.h took them.
+#pragma once
+
+#include "csg/span.h"
+#include "csg/types.h"
+
+#include <cstdint>
+#include <memory>
+#include <variant>
+
+namespace kerf {
+
+class Node;
+class Tape;
+using NodePtr = std::shared_ptr<const Node>;
+
+/// Every kind of node. Boolean nodes have one kind per operator.
+// clang-format off: grouped by arity
+enum class NodeKind : uint8_t {
+    Sphere, Box, Cylinder, Cone, Torus, HalfSpace, Implicit,  // leaves
+    Transform, Material,                                      // one child
+    Union, Intersection, Difference, Xor,                     // one or more children
+};
+// clang-format on
+
+/// "sphere", "box", …, "xor": the language's keywords for the kinds.
+const char* nodeKindName(NodeKind kind);
+/// True for the primitives (nodes without children).
+inline bool isLeaf(NodeKind kind) { return kind <= NodeKind::Implicit; }
+/// The Boolean kind of an operator, and back.
+NodeKind booleanKind(BoolOp op);
+BoolOp booleanOp(NodeKind kind);  ///< kind must be Union, Intersection, Difference or Xor
+
+struct SphereParams { Vec3 center; double radius; };
+struct BoxParams { Vec3 lo, hi; };
+struct CylinderParams { Vec3 a, b; double radius; };
+struct ConeParams { Vec3 a, b; double r1, r2; };
+struct TorusParams { double majorRadius, minorRadius; };
+struct HalfSpaceParams { Vec3 normal; double offset; };
+struct ImplicitParams { std::shared_ptr<const Tape> tape; Bounds3 bound; };
+struct TransformParams { Affine worldFromLocal; };
+struct MaterialParams { int32_t material; };
+struct BooleanParams { BoolOp op; };
+
+/// A node's defining data: the alternative matches its kind (all four Boolean kinds give
+/// BooleanParams). Passing it back to the factory of its kind rebuilds an equal node.
+using NodeParams =
+    std::variant<SphereParams, BoxParams, CylinderParams, ConeParams, TorusParams,
+                 HalfSpaceParams, ImplicitParams, TransformParams, MaterialParams, BooleanParams>;
+
+/// A node's children: a view of the NodePtrs it holds, valid while the node lives.
+class NodeSpan {
+public:
+    NodeSpan() = default;
+    NodeSpan(const NodePtr* data, size_t size) : mData(data), mSize(size) {}
+    size_t size() const { return mSize; }
+    bool empty() const { return mSize == 0; }
+    const NodePtr& operator[](size_t i) const { return mData[i]; }
+    const NodePtr* begin() const { return mData; }
+    const NodePtr* end() const { return mData + mSize; }
+
+private:
+    const NodePtr* mData = nullptr;
+    size_t mSize = 0;
+};
+
+}  // namespace kerf

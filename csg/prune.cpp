@@ -1,0 +1,155 @@
+// Pruning a tree over a box: interval classification decides which children matter, then the
+// node is rebuilt over the ones that do (Node::withChildren), bottom up.
+#include "csg/prune.h"
+
+#include <cmath>
+#include <variant>
+
+#include "csg/solids.h"
+#include "csg/tape.h"
+
+namespace kerf {
+namespace {
+
+IntervalVec3 asIntervals(const Bounds3& b) {
+    return {Interval(b.lo.x, b.hi.x), Interval(b.lo.y, b.hi.y), Interval(b.lo.z, b.hi.z)};
+}
+
+Pruned empty() { return {PruneState::Empty, nullptr}; }
+Pruned full() { return {PruneState::Full, nullptr}; }
+Pruned partial(NodePtr n) { return {PruneState::Partial, std::move(n)}; }
+
+/// `node` over new children: itself when they are the children it has (nothing pruned).
+NodePtr rebuilt(const NodePtr& node, std::vector<NodePtr> kids) {
+    const NodeSpan old = node->children();
+    bool same = kids.size() == old.size();
+    for (size_t i = 0; same && i < kids.size(); ++i) same = kids[i] == old[i];
+    return same ? node : node->withChildren(std::move(kids));
+}
+
+/// The box in the child's space of a transform: each local coordinate is an affine form of
+/// the world ones, evaluated on intervals (outward rounding), so every point of the box maps
+/// inside it.
+Bounds3 localBox(const Affine& worldFromLocal, const Bounds3& box) {
+    const Affine localFromWorld = worldFromLocal.inverse();
+    const Interval in[3] = {Interval(box.lo.x, box.hi.x), Interval(box.lo.y, box.hi.y),
+                            Interval(box.lo.z, box.hi.z)};
+    Bounds3 out;
+    for (int row = 0; row < 3; ++row) {
+        Interval acc(localFromWorld.offset[row]);
+        for (int col = 0; col < 3; ++col) {
+            const double m = localFromWorld.linear[col][row];
+            if (m != 0.0) acc = acc + Interval(m) * in[col];
+        }
+        // Padded: the point map rounds once more than this enclosure accounts for.
+        const double pad = 0x1p-40 * std::fmax(std::fabs(acc.lo), std::fabs(acc.hi));
+        out.lo[row] = acc.lo - pad;
+        out.hi[row] = acc.hi + pad;
+    }
+    return out;
+}
+
+Pruned prunedImplicit(const NodePtr& node, const Bounds3& box) {
+    const ImplicitParams p = std::get<ImplicitParams>(node->params());
+    // Outside the bound the node is outside whatever the tape says: only the overlap matters.
+    const IntervalVec3 region = asIntervals(Bounds3::overlap(box, p.bound));
+    std::vector<Choice> choices;
+    const Interval f = p.tape->evalInterval(region.x, region.y, region.z, choices);
+    if (f.classify() == Classification::Empty) return empty();
+    std::shared_ptr<const Tape> shorter = p.tape->simplified(choices);
+    if (shorter->size() == p.tape->size()) return partial(node);
+    return partial(withImplicitFunction(*node, std::move(shorter)));
+}
+
+Pruned prunedBoolean(const NodePtr& node, const Bounds3& box) {
+    const NodeKind kind = node->kind();
+    const NodeSpan kids = node->children();
+    std::vector<NodePtr> kept;
+    switch (kind) {
+        case NodeKind::Union:
+            for (const NodePtr& c : kids) {
+                const Pruned r = pruned(c, box);
+                if (r.state == PruneState::Full) return full();
+                if (r.state == PruneState::Partial) kept.push_back(r.node);
+            }
+            if (kept.empty()) return empty();
+            break;
+        case NodeKind::Intersection:
+            for (const NodePtr& c : kids) {
+                const Pruned r = pruned(c, box);
+                if (r.state == PruneState::Empty) return empty();
+                if (r.state == PruneState::Partial) kept.push_back(r.node);
+            }
+            if (kept.empty()) return full();
+            break;
+        case NodeKind::Difference: {
+            const Pruned body = pruned(kids[0], box);
+            if (body.state == PruneState::Empty) return empty();
+            // A Full body has no node of its own: the original stands in for it.
+            kept.push_back(body.state == PruneState::Full ? kids[0] : body.node);
+            for (size_t i = 1; i < kids.size(); ++i) {
+                const Pruned r = pruned(kids[i], box);
+                if (r.state == PruneState::Full) return empty();
+                if (r.state == PruneState::Partial) kept.push_back(r.node);
+            }
+            if (kept.size() == 1 && body.state == PruneState::Full) return full();
+            break;
+        }
+        case NodeKind::Xor: {
+            int fullCount = 0, partialCount = 0;
+            for (const NodePtr& c : kids) {
+                const Pruned r = pruned(c, box);
+                if (r.state == PruneState::Empty) continue;
+                // A Full child flips inside and outside: it stays, as the original.
+                if (r.state == PruneState::Full)
+                    ++fullCount, kept.push_back(c);
+                else
+                    ++partialCount, kept.push_back(r.node);
+            }
+            if (partialCount == 0) return fullCount % 2 == 1 ? full() : empty();
+            break;
+        }
+        default:
+            return partial(node);
+    }
+    if (kept.size() == 1) return partial(kept[0]);
+    return partial(rebuilt(node, std::move(kept)));
+}
+
+}  // namespace
+
+Pruned pruned(const NodePtr& node, const Bounds3& box) {
+    if (Bounds3::overlap(node->bounds(), box).empty()) return empty();
+    switch (node->valueInterval(asIntervals(box)).classify()) {
+        case Classification::Empty:
+            return empty();
+        case Classification::Filled:
+            return full();
+        case Classification::Ambiguous:
+            break;
+    }
+    switch (node->kind()) {
+        case NodeKind::Implicit:
+            return prunedImplicit(node, box);
+        case NodeKind::Transform:
+        case NodeKind::Material: {
+            const NodePtr& child = node->children()[0];
+            const Bounds3 childBox =
+                node->kind() == NodeKind::Transform
+                    ? localBox(std::get<TransformParams>(node->params()).worldFromLocal, box)
+                    : box;
+            const Pruned r = pruned(child, childBox);
+            if (r.state != PruneState::Partial) return r;
+            return partial(rebuilt(node, {r.node}));
+        }
+        case NodeKind::Union:
+        case NodeKind::Intersection:
+        case NodeKind::Difference:
+        case NodeKind::Xor:
+            return prunedBoolean(node, box);
+        default:
+            return partial(node);  // closed-form primitives: nothing to simplify
+    }
+}
+
+}  // namespace kerf
