@@ -2,9 +2,9 @@
 /// @brief The front door of render/: a Scene and options in, images and statistics out.
 #pragma once
 
-#include "csg/scene.h"
+#include "scene/scene.h"
 #include "csg/trace_context.h"
-#include "render/image.h"
+#include "io/image.h"
 
 #include <functional>
 

@@ -2,7 +2,7 @@
 // progress bar only on a terminal, and the same pixels whatever --threads.
 #include "kerf_runner.h"
 
-#include "render/image.h"
+#include "io/image.h"
 
 #include <catch2/catch.hpp>
 
