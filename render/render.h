@@ -32,6 +32,7 @@ struct RenderStats {
     double secondsSetup = 0;
     double secondsTrace = 0;
     double tolerance = 0;  ///< the relative tolerance in force
+    int samplesPerPixel = 0;  ///< traced per pixel: the requested spp rounded up to n×n
 };
 
 struct RenderResult {
