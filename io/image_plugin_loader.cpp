@@ -2,13 +2,13 @@
 /// @brief dlopen of the image plug-in, once, from the folder of the running executable.
 #include "io/image_plugin_loader.h"
 
-#include "io/image.h"
-
 #include <dlfcn.h>
 
 #include <filesystem>
 #include <mutex>
 #include <string>
+
+#include "io/image.h"
 
 namespace kerf {
 namespace {

@@ -65,8 +65,8 @@ struct Mist {
     double distance = 1.0;  ///< colour blends to the mist colour by exp(-d / distance)
 };
 
-/// A section plane: the solids are cut by it (the half-space the normal points into is kept
-/// out). Not yet used by render/; slice/ will read them.
+/// A section plane through `point`: the solids are cut by it, the side `normal` points to
+/// removed. Nothing reads them yet; slice/ and render/ will.
 struct SectionPlane {
     Vec3 point{0.0};
     Vec3 normal{0.0, 0.0, 1.0};  ///< unit length

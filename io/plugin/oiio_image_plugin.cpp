@@ -2,13 +2,13 @@
 /// @brief The image plug-in: OpenImageIO behind the C interface of io/image_plugin.h. Built as
 /// a loadable module next to the kerf executable, so OpenImageIO and the ~260 libraries it
 /// pulls in are loaded only by a process that reads or writes an image.
-#include "io/image_plugin.h"
-
 #include <OpenImageIO/imageio.h>
 
 #include <cstdio>
 #include <memory>
 #include <string>
+
+#include "io/image_plugin.h"
 
 namespace {
 
@@ -17,8 +17,8 @@ int fail(const std::string& message, char* error, size_t errorSize) {
     return 1;
 }
 
-int writeImage(const char* path, int width, int height, int channels, int bytes,
-               const void* pixels, const char* colorSpace, char* error, size_t errorSize) {
+int writeImage(const char* path, int width, int height, int channels, int bytes, const void* pixels,
+               const char* colorSpace, char* error, size_t errorSize) {
     try {
         std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
         if (!out) return fail(OIIO::geterror(), error, errorSize);

@@ -3,15 +3,14 @@
 /// three files, and the CSV's errors against the long-double reference meet the contract:
 /// closed forms exact to rounding, interval tracing within the requested tolerance, and no
 /// mismatch the tolerance does not explain.
-#include "accuracy/catalogue.h"
-#include "accuracy/report.h"
-#include "app/kerf_runner.h"
-
 #include <catch2/catch.hpp>
-
 #include <map>
 #include <set>
 #include <sstream>
+
+#include "accuracy/catalogue.h"
+#include "accuracy/report.h"
+#include "app/kerf_runner.h"
 
 using namespace kerf;
 using namespace kerf::test;

@@ -1,8 +1,8 @@
 // End-to-end tests of the image plug-in's loading: commands that write no image load no image
 // library, and a missing plug-in is a clear error that leaves no file behind.
-#include "kerf_runner.h"
-
 #include <catch2/catch.hpp>
+
+#include "kerf_runner.h"
 
 using namespace kerf::test;
 
@@ -14,8 +14,8 @@ KerfRun runBinary(const TempDir& cwd, const std::string& environment, const std:
                   const std::vector<std::string>& args) {
     const std::string outPath = cwd.file(".stdout");
     const std::string errPath = cwd.file(".stderr");
-    std::string command = "cd " + shellQuote(cwd.path().string()) + " && " + environment + " " +
-                          shellQuote(binary);
+    std::string command =
+        "cd " + shellQuote(cwd.path().string()) + " && " + environment + " " + shellQuote(binary);
     for (const std::string& arg : args) command += " " + shellQuote(arg);
     command += " </dev/null >" + shellQuote(outPath) + " 2>" + shellQuote(errPath);
     const int status = std::system(command.c_str());
