@@ -40,7 +40,9 @@ void load(PluginState& s, const std::string& path) {
         s.error = "cannot load image support '" + path + "': " + reason;
     };
     // Never closed: OpenImageIO keeps threads and static state until the process ends.
-    void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    // RTLD_LAZY as at process start: RTLD_NOW would bind every symbol of the ~260 libraries
+    // OpenImageIO pulls in, most of which are never called.
+    void* handle = ::dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
     if (handle == nullptr) return fail(::dlerror());
     const auto entry =
         reinterpret_cast<KerfImagePluginEntry>(::dlsym(handle, KERF_IMAGE_PLUGIN_ENTRY));
