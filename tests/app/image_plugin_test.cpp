@@ -78,6 +78,15 @@ TEST_CASE("kerf without its image plug-in") {
         CHECK(run.err.find("No such file") != std::string::npos);
         CHECK(dir.listing() == std::vector<std::string>{"ball.kerf", "kerf"});
     }
+    SECTION("a shared object without the entry point is refused") {
+        fs::copy_file(KERF_SOME_SHARED_LIBRARY, plugin);
+        const KerfRun run = runBinary(dir, "", kerf, {"render", "ball.kerf", "-o", "b.png"});
+        CHECK(run.exitCode == 1);
+        CHECK(run.err.rfind("kerf: error: cannot load image support '" + plugin +
+                                "': no entry point",
+                            0) == 0);
+        CHECK(!fs::exists(dir.file("b.png")));
+    }
     SECTION("a file that is not a plug-in is refused the same way") {
         dir.write("kerf_image_plugin.so", "not a shared object");
         const KerfRun run = runBinary(dir, "", kerf, {"render", "ball.kerf", "-o", "b.png"});
