@@ -7,10 +7,10 @@
 
 #include "app/exit_codes.h"
 #include "app/model_loader.h"
-#include "render/accuracy_bench.h"
-#include "render/accuracy_files.h"
-#include "render/accuracy_plot.h"
-#include "render/accuracy_report.h"
+#include "accuracy/bench.h"
+#include "accuracy/plot.h"
+#include "accuracy/report.h"
+#include "io/text_file.h"
 
 namespace kerf::app {
 
@@ -74,7 +74,7 @@ std::optional<std::vector<AccuracyScene>> loadScenes(const BenchCommandLine& lin
         if (!std::filesystem::exists(path))
             throw UsageError("scene file '" + path +
                              "' not found; run from the kerf source "
-                             "folder or give --scene-dir (the folder bench/accuracy)");
+                             "folder or give --scene-dir (the folder accuracy/scenes)");
         std::optional<Scene> scene = loadModel(path, std::cerr);
         if (!scene) return std::nullopt;
         scenes.push_back({*spec, std::move(*scene)});

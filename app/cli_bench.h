@@ -1,7 +1,7 @@
 /// @file app/cli_bench.h
 /// @brief `kerf bench accuracy [--out DIR] [--width W] [--height H] [--runs N]
 /// [--scenes a,b,…] [--methods closed,interval,sphere-trace] [--scene-dir DIR] [--quick]`:
-/// the speed-against-error report (render/accuracy_bench.h) as CSV, SVG plot and Markdown.
+/// the speed-against-error report (accuracy/bench.h) as CSV, SVG plot and Markdown.
 #pragma once
 
 #include <string>
@@ -18,7 +18,7 @@ namespace kerf::app {
 /// (given flags override the --quick presets).
 struct BenchCommandLine {
     std::string outDir = ".";
-    std::string sceneDir = "bench/accuracy";
+    std::string sceneDir = "accuracy/scenes";
     int width = 320;
     int height = 240;
     int runs = 5;

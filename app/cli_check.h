@@ -2,7 +2,7 @@
 /// @brief `kerf check FILE`: parse and compile a model and print a summary of the scene.
 #pragma once
 
-#include "csg/scene.h"
+#include "scene/scene.h"
 
 #include <iosfwd>
 #include <string>

@@ -6,7 +6,7 @@
 #include "app/output_paths.h"
 #include "app/progress_bar.h"
 #include "app/stats_report.h"
-#include "render/image.h"
+#include "io/image.h"
 #include "render/render.h"
 
 #include <CLI/CLI.hpp>
@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <future>
 #include <iostream>
 #include <memory>
 #include <thread>
@@ -117,6 +118,8 @@ int runRender(const RenderCommandLine& line) {
     const double secondsCompile = secondsSince(compileStart);
 
     RenderOptions options = renderOptions(line, plan);
+    // OpenImageIO loads (a few hundred libraries) on another thread while the image is traced.
+    const std::future<void> imageSupport = preloadImageSupport();
     std::unique_ptr<ProgressBar> bar;
     if (!line.quiet && stderrIsTerminal()) {
         bar = std::make_unique<ProgressBar>(stderr);

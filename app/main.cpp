@@ -5,7 +5,7 @@
 #include "app/cli_check.h"
 #include "app/cli_render.h"
 #include "app/exit_codes.h"
-#include "render/image.h"
+#include "io/image.h"
 
 #include <CLI/CLI.hpp>
 

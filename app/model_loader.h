@@ -3,7 +3,7 @@
 /// the diagnostics, so `render` and `check` report problems the same way.
 #pragma once
 
-#include "csg/scene.h"
+#include "scene/scene.h"
 
 #include <iosfwd>
 #include <optional>

@@ -33,7 +33,11 @@ void printStats(const RunReport& report, std::ostream& out) {
 
     out << "kerf statistics\n";
     out << line("image", std::to_string(report.width) + " x " + std::to_string(report.height));
-    out << line("samples per pixel", std::to_string(report.spp));
+    // The sampler takes an n×n grid, so the traced count can exceed the requested one.
+    std::string samples = std::to_string(s.samplesPerPixel);
+    if (s.samplesPerPixel != report.spp)
+        samples += " (requested " + std::to_string(report.spp) + ")";
+    out << line("samples per pixel", samples);
     out << line("threads", std::to_string(report.threads));
     std::snprintf(buffer, sizeof buffer, "%.3g (relative)", s.tolerance);
     out << line("tolerance", buffer);

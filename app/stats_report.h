@@ -12,7 +12,7 @@ namespace kerf::app {
 struct RunReport {
     int width = 0;
     int height = 0;
-    int spp = 0;
+    int spp = 0;      ///< requested; RenderStats::samplesPerPixel is what was traced
     int threads = 0;  ///< resolved: never 0
     RenderStats render;
     double secondsCompile = 0;  ///< parse + compile

@@ -2,7 +2,7 @@
 /// @brief The front door of lang/: a model file in, a Scene out (or diagnostics).
 #pragma once
 
-#include "csg/scene.h"
+#include "scene/scene.h"
 #include "lang/diagnostic.h"
 
 #include <optional>

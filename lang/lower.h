@@ -10,7 +10,7 @@
 #pragma once
 
 #include "csg/expr.h"
-#include "csg/scene.h"
+#include "scene/scene.h"
 #include "lang/ast.h"
 #include "lang/properties.h"
 #include "lang/value.h"

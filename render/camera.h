@@ -3,7 +3,7 @@
 /// documentation (right-handed world, vertical field of view, pixel (0, 0) at the top left).
 #pragma once
 
-#include "csg/scene.h"
+#include "scene/scene.h"
 #include "csg/types.h"
 
 namespace kerf {

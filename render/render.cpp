@@ -152,6 +152,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     const SceneGeometry geometry(scene.objects);
     const Camera camera(scene.camera, width, height);
     const PixelSampler sampler(spp);
+    result.stats.samplesPerPixel = sampler.sampleCount();
     const WhittedIntegrator integrator(scene, geometry, scene.settings.maxDepth);
     const FrameJob job{camera, sampler, geometry, integrator, result,
                        options.wantDepth, options.wantNormal};

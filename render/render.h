@@ -2,9 +2,9 @@
 /// @brief The front door of render/: a Scene and options in, images and statistics out.
 #pragma once
 
-#include "csg/scene.h"
+#include "scene/scene.h"
 #include "csg/trace_context.h"
-#include "render/image.h"
+#include "io/image.h"
 
 #include <functional>
 
@@ -32,6 +32,7 @@ struct RenderStats {
     double secondsSetup = 0;
     double secondsTrace = 0;
     double tolerance = 0;  ///< the relative tolerance in force
+    int samplesPerPixel = 0;  ///< traced per pixel: the requested spp rounded up to n×n
 };
 
 struct RenderResult {

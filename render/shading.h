@@ -23,7 +23,7 @@
 ///    every channel.
 #pragma once
 
-#include "csg/scene.h"
+#include "scene/scene.h"
 #include "csg/scene_geometry.h"
 #include "csg/trace_context.h"
 

@@ -3,7 +3,7 @@
 // double.
 #include "kerf_runner.h"
 
-#include "render/image.h"
+#include "io/image.h"
 
 #include <catch2/catch.hpp>
 

@@ -2,7 +2,7 @@
 // names the option, and never write anything; flags override the model's render block.
 #include "kerf_runner.h"
 
-#include "render/image.h"
+#include "io/image.h"
 
 #include <catch2/catch.hpp>
 

@@ -2,7 +2,7 @@
 // progress bar only on a terminal, and the same pixels whatever --threads.
 #include "kerf_runner.h"
 
-#include "render/image.h"
+#include "io/image.h"
 
 #include <catch2/catch.hpp>
 
@@ -65,6 +65,35 @@ TEST_CASE("kerf render --stats") {
                               "root-finder steps", "interval evaluations", "parse \\+ compile",
                               "setup", "trace", "write", "rays per second"}) {
         CHECK(statsValue(run.err, label) != "<absent>");
+    }
+}
+
+TEST_CASE("kerf render --stats: samples per pixel as traced") {
+    // The sampler takes an n×n grid, n = ceil(sqrt(spp)): the report gives the traced count
+    // and, when it differs, the requested one; the camera rays agree with the traced count.
+    TempDir dir;
+    dir.write("matte.kerf", kMatteModel);
+    struct Case {
+        const char* spp;
+        const char* printed;
+        int traced;
+    };
+    for (const Case& c : {Case{"5", "9 (requested 5)", 9}, Case{"9", "9", 9},
+                          Case{"2", "4 (requested 2)", 4}, Case{"1", "1", 1}}) {
+        INFO("--spp " << c.spp);
+        const KerfRun run =
+            runKerf(dir, {"render", "matte.kerf", "-o", "m.png", "--stats", "--spp", c.spp});
+        REQUIRE(run.exitCode == 0);
+        CHECK(statsValue(run.err, "samples per pixel") == c.printed);
+        CHECK(statsValue(run.err, "camera rays") == std::to_string(20 * 10 * c.traced));
+    }
+    SECTION("the model's render { spp } when no --spp is given") {
+        std::string model = kMatteModel;
+        model.replace(model.find("spp 1"), 5, "spp 3");
+        dir.write("spp3.kerf", model);
+        const KerfRun run = runKerf(dir, {"render", "spp3.kerf", "-o", "m.png", "--stats"});
+        REQUIRE(run.exitCode == 0);
+        CHECK(statsValue(run.err, "samples per pixel") == "4 (requested 3)");
     }
 }
 

@@ -2,7 +2,7 @@
 // something (not one flat colour).
 #include "kerf_runner.h"
 
-#include "render/image.h"
+#include "io/image.h"
 
 #include <catch2/catch.hpp>
 

@@ -4,7 +4,7 @@
 // look at the PNG copies it writes before committing.
 #include "kerf_runner.h"
 
-#include "render/image.h"
+#include "io/image.h"
 
 #include <catch2/catch.hpp>
 

@@ -2,7 +2,7 @@
 /// @brief Small scenes and closed-form oracles shared by the render tests.
 #pragma once
 
-#include "csg/scene.h"
+#include "scene/scene.h"
 #include "csg/solids.h"
 #include "render/render.h"
 

@@ -1,6 +1,6 @@
-/// @file render/accuracy_scenes.cpp
+/// @file accuracy/catalogue.cpp
 /// @brief The benchmark's scene list and names.
-#include "render/accuracy_scenes.h"
+#include "accuracy/catalogue.h"
 
 #include <string>
 

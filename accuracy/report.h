@@ -1,11 +1,11 @@
-/// @file render/accuracy_report.h
+/// @file accuracy/report.h
 /// @brief The benchmark's results as text: a CSV with one row per scene × method × tolerance,
 /// and Markdown tables (scenes, the default tolerance, every row).
 #pragma once
 
 #include <string>
 
-#include "render/accuracy_bench.h"
+#include "accuracy/bench.h"
 
 namespace kerf {
 

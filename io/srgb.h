@@ -1,4 +1,4 @@
-/// @file render/srgb.h
+/// @file io/srgb.h
 /// @brief The sRGB transfer function (IEC 61966-2-1) between linear values and 8-bit codes.
 #pragma once
 

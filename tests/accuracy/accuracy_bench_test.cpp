@@ -1,7 +1,7 @@
-/// @file tests/render/accuracy_bench_test.cpp
-/// @brief The accuracy benchmark (render/accuracy_*): its metrics against hand-made references,
+/// @file tests/accuracy/accuracy_bench_test.cpp
+/// @brief The accuracy benchmark (accuracy/): its metrics against hand-made references,
 /// and a small run on two of its scenes asserting the accuracy targets and the output formats.
-#include "render/accuracy_bench.h"
+#include "accuracy/bench.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -13,9 +13,8 @@
 
 #include "csg/solids.h"
 #include "lang/compile.h"
-#include "render/accuracy_files.h"
-#include "render/accuracy_plot.h"
-#include "render/accuracy_report.h"
+#include "accuracy/plot.h"
+#include "accuracy/report.h"
 
 namespace kerf {
 namespace {
@@ -25,7 +24,7 @@ AccuracyScene loadBenchScene(const std::string& name) {
     REQUIRE(spec != nullptr);
     DiagnosticSink sink;
     std::optional<Scene> scene =
-        compileFile(std::string(KERF_SOURCE_DIR) + "/bench/accuracy/" + spec->file, sink);
+        compileFile(std::string(KERF_SOURCE_DIR) + "/accuracy/scenes/" + spec->file, sink);
     REQUIRE(scene);
     return {*spec, std::move(*scene)};
 }
@@ -173,19 +172,6 @@ TEST_CASE("runAccuracyBench") {
         const std::string md = accuracyMarkdown(result);
         CHECK(countOf(md, "(default) |") == 2 * 3 * 2);  // in the default and the full table
     }
-}
-
-TEST_CASE("writeTextFileAtomically") {
-    const std::string path =
-        (std::filesystem::temp_directory_path() / "kerf-accuracy-write-test.txt").string();
-    writeTextFileAtomically(path, "first\n");
-    writeTextFileAtomically(path, "second, longer\n");
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    CHECK(text.str() == "second, longer\n");
-    std::remove(path.c_str());
-    CHECK_THROWS_AS(writeTextFileAtomically("/nonexistent-folder/x.csv", "x"), TextWriteError);
 }
 
 }  // namespace kerf

@@ -1,6 +1,8 @@
-/// @file csg/scene.h
-/// @brief The scene description that lang/ builds and render/ draws: plain data, validated
-/// when it was built. It lives in csg/ because both sides depend on csg/ and not on each other.
+/// @file scene/scene.h
+/// @brief The scene description that lang/ builds and render/ (and later slice/, volume
+/// export, kerf check) consume: plain data, validated when it was built. It holds nothing of
+/// the renderer's or the language's machinery, so any consumer can depend on it without a
+/// cycle: lang → scene → csg, render → scene.
 #pragma once
 
 #include "csg/node.h"
@@ -23,9 +25,14 @@ struct Material {
     double ior = 1.5;
     Vec3 absorb{0.0};       ///< Beer absorption coefficient per unit length inside
     Vec3 emit{0.0};         ///< emitted radiance, added unlit
+    /// Reserved for textures: a texture's name, empty for the flat `color` (the only kind
+    /// rendered yet). A texture will modulate `color`, so flat materials stay as they are.
+    std::string texture;
 };
 
 struct Light {
+    /// Area lights will be a third kind using `edgeU`/`edgeV`; point and directional lights
+    /// leave those zero.
     enum class Kind { Point, Directional };
     Kind kind = Kind::Point;
     Vec3 position{0.0};            ///< point lights
@@ -33,6 +40,8 @@ struct Light {
     Vec3 color{1.0};
     /// Point lights: irradiance at distance d is color·power / (4π d²). Directional: color.
     double power = 1.0;
+    Vec3 edgeU{0.0};  ///< reserved for area lights: the parallelogram's edges from `position`
+    Vec3 edgeV{0.0};
 };
 
 struct CameraDesc {
@@ -40,12 +49,27 @@ struct CameraDesc {
     Vec3 lookAt{0.0};
     Vec3 up{0.0, 1.0, 0.0};
     double fovDegrees = 40.0;  ///< vertical field of view, in (0, 180)
+    /// A thin lens and a shutter, reserved: the defaults are the pinhole camera at one instant,
+    /// which is all render/ draws yet.
+    double aperture = 0.0;       ///< lens diameter; 0 is a pinhole
+    double focusDistance = 0.0;  ///< 0: the distance from eye to lookAt
+    double shutterOpen = 0.0;    ///< shutter interval in scene time; equal ends: one instant
+    double shutterClose = 0.0;
 };
 
+/// Homogeneous mist, the only medium yet; heterogeneous media (a density grid from volume/)
+/// will sit beside it in Scene.
 struct Mist {
     bool enabled = false;
     Vec3 color{0.0};
     double distance = 1.0;  ///< colour blends to the mist colour by exp(-d / distance)
+};
+
+/// A section plane through `point`: the solids are cut by it, the side `normal` points to
+/// removed. Nothing reads them yet; slice/ and render/ will.
+struct SectionPlane {
+    Vec3 point{0.0};
+    Vec3 normal{0.0, 0.0, 1.0};  ///< unit length
 };
 
 struct RenderSettings {
@@ -62,6 +86,7 @@ struct Scene {
     std::vector<Material> materials{Material{}};
     Mist mist;
     Vec3 background{0.0};
+    std::vector<SectionPlane> sections;
     RenderSettings settings;
     /// Each object's tree already holds its transforms and materials; objects are separate
     /// (overlapping objects are not merged), the nearest surface of any of them is seen.

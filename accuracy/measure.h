@@ -1,4 +1,4 @@
-/// @file render/accuracy_measure.h
+/// @file accuracy/measure.h
 /// @brief One cell of the speed-against-error report: the primary rays of a camera traced by
 /// one method at one tolerance, timed, and compared with the extended-precision reference.
 #pragma once

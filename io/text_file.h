@@ -1,7 +1,7 @@
-/// @file render/accuracy_files.h
-/// @brief Writing the benchmark's text outputs (CSV, SVG, Markdown) like images are written
-/// (render/image_io.cpp): to a temporary file beside the target, then renamed onto it, so a
-/// failed run never leaves a half file nor clobbers an earlier report.
+/// @file io/text_file.h
+/// @brief Writing text outputs (CSV, SVG, Markdown) like images are written (io/image_io.cpp):
+/// to a temporary file beside the target, then renamed onto it, so a failed run never leaves a
+/// half file nor clobbers an earlier one.
 #pragma once
 
 #include <stdexcept>

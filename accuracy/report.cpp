@@ -1,6 +1,8 @@
-/// @file render/accuracy_report.cpp
+/// @file accuracy/report.cpp
 /// @brief CSV and Markdown tables of the accuracy benchmark.
-#include "render/accuracy_report.h"
+#include "accuracy/report.h"
+
+#include "io/csv.h"
 
 #include <cstdio>
 
@@ -76,29 +78,36 @@ std::string defaultTable(const AccuracyBenchResult& result) {
 
 }  // namespace
 
-std::string accuracyCsvHeader() {
-    return "scene,method,tolerance,is_default,width,height,rays,runs,median_seconds,ns_per_ray,"
-           "rays_per_second,root_steps_per_ray,both_hit,max_rel_error,mean_rel_error,"
-           "p99_rel_error,max_normal_error_deg,over_tolerance,over_tolerance_not_thin,"
-           "hit_miss_mismatches,mismatches_not_thin,uncertain_rays";
+namespace {
+
+std::vector<std::string> csvColumns() {
+    return {"scene", "method", "tolerance", "is_default", "width", "height", "rays", "runs",
+            "median_seconds", "ns_per_ray", "rays_per_second", "root_steps_per_ray", "both_hit",
+            "max_rel_error", "mean_rel_error", "p99_rel_error", "max_normal_error_deg",
+            "over_tolerance", "over_tolerance_not_thin", "hit_miss_mismatches",
+            "mismatches_not_thin", "uncertain_rays"};
 }
 
+}  // namespace
+
+std::string accuracyCsvHeader() { return CsvTable(csvColumns()).header(); }
+
 std::string accuracyCsv(const AccuracyBenchResult& result) {
-    std::string csv = accuracyCsvHeader() + "\n";
+    CsvTable table(csvColumns());
+    const auto g = [](double v) { return CsvTable::number("%.6g", v); };
+    const auto e = [](double v) { return CsvTable::number("%.6e", v); };
+    const auto i = [](long long v) { return std::to_string(v); };
     for (const AccuracyRow& row : result.rows) {
         const AccuracyMeasurement& m = row.m;
-        char line[512];
-        std::snprintf(
-            line, sizeof line,
-            "%s,%s,%.6g,%d,%d,%d,%d,%d,%.6e,%.6g,%.6g,%.6g,%d,%.6e,%.6e,%.6e,%.6e,%d,%d,%d,%d,%d\n",
-            row.scene.c_str(), traceMethodName(row.method), row.tolerance,
-            row.isDefaultTolerance ? 1 : 0, row.width, row.height, m.rays, m.runs, m.medianSeconds,
-            m.nsPerRay, m.raysPerSecond, m.rootStepsPerRay, m.bothHit, m.maxRelError,
-            m.meanRelError, m.p99RelError, m.maxNormalErrorDegrees, m.overTolerance,
-            m.overToleranceNotThin, m.hitMissMismatches, m.mismatchesNotThin, m.uncertainRays);
-        csv += line;
+        table.addRow({row.scene, traceMethodName(row.method), g(row.tolerance),
+                      i(row.isDefaultTolerance ? 1 : 0), i(row.width), i(row.height), i(m.rays),
+                      i(m.runs), e(m.medianSeconds), g(m.nsPerRay), g(m.raysPerSecond),
+                      g(m.rootStepsPerRay), i(m.bothHit), e(m.maxRelError), e(m.meanRelError),
+                      e(m.p99RelError), e(m.maxNormalErrorDegrees), i(m.overTolerance),
+                      i(m.overToleranceNotThin), i(m.hitMissMismatches), i(m.mismatchesNotThin),
+                      i(m.uncertainRays)});
     }
-    return csv;
+    return table.text();
 }
 
 std::string accuracyMarkdown(const AccuracyBenchResult& result) {

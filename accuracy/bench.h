@@ -1,15 +1,15 @@
-/// @file render/accuracy_bench.h
+/// @file accuracy/bench.h
 /// @brief The speed-against-error benchmark: every scene × method × tolerance, each measured
-/// against one reference per scene (render/accuracy_measure.h).
+/// against one reference per scene (accuracy/measure.h).
 #pragma once
 
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "csg/scene.h"
-#include "render/accuracy_measure.h"
-#include "render/accuracy_scenes.h"
+#include "scene/scene.h"
+#include "accuracy/measure.h"
+#include "accuracy/catalogue.h"
 
 namespace kerf {
 

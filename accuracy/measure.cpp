@@ -1,6 +1,6 @@
-/// @file render/accuracy_measure.cpp
+/// @file accuracy/measure.cpp
 /// @brief Timing a method over a scene's primary rays and measuring its error.
-#include "render/accuracy_measure.h"
+#include "accuracy/measure.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

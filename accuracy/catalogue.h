@@ -1,6 +1,6 @@
-/// @file render/accuracy_scenes.h
+/// @file accuracy/catalogue.h
 /// @brief The fixed scene set, tolerances and method names of `kerf bench accuracy`. The scenes
-/// are model files in bench/accuracy/; compiling them is the caller's job (render/ does not
+/// are model files in accuracy/scenes/; compiling them is the caller's job (accuracy/ does not
 /// depend on lang/).
 #pragma once
 
@@ -15,7 +15,7 @@ namespace kerf {
 /// One scene of the accuracy benchmark.
 struct AccuracySceneSpec {
     std::string name;  ///< short name, used by --scenes and in the CSV
-    std::string file;  ///< model file name inside bench/accuracy/
+    std::string file;  ///< model file name inside accuracy/scenes/
     /// False when every primitive of the scene is root-found (torus, implicit): the Closed
     /// method is then the Interval method and is not measured separately.
     bool hasClosedForms = true;

@@ -1,6 +1,6 @@
-/// @file render/accuracy_bench.cpp
+/// @file accuracy/bench.cpp
 /// @brief The benchmark loop: one reference per scene, then every method and tolerance.
-#include "render/accuracy_bench.h"
+#include "accuracy/bench.h"
 
 #include <algorithm>
 #include <cstdio>

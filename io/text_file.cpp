@@ -1,8 +1,8 @@
-/// @file render/accuracy_files.cpp
-/// @brief Text files through a temporary file and a rename (render/atomic_file.h).
-#include "render/accuracy_files.h"
+/// @file io/text_file.cpp
+/// @brief Text files through a temporary file and a rename (io/atomic_file.h).
+#include "io/text_file.h"
 
-#include "render/atomic_file.h"
+#include "io/atomic_file.h"
 
 #include <unistd.h>
 

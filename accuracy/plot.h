@@ -1,11 +1,11 @@
-/// @file render/accuracy_plot.h
+/// @file accuracy/plot.h
 /// @brief The benchmark's time-against-error plot as SVG, drawn by kerf itself: log-log, one
 /// polyline per scene and method (colour = scene, dash = method), decade ticks, a legend.
 #pragma once
 
 #include <string>
 
-#include "render/accuracy_bench.h"
+#include "accuracy/bench.h"
 
 namespace kerf {
 

@@ -1,6 +1,6 @@
-/// @file render/atomic_file.cpp
+/// @file io/atomic_file.cpp
 /// @brief A temporary file beside the target, renamed onto it.
-#include "render/atomic_file.h"
+#include "io/atomic_file.h"
 
 #include <sys/stat.h>
 #include <unistd.h>

@@ -1,7 +1,7 @@
-/// @file render/atomic_file.h
+/// @file io/atomic_file.h
 /// @brief Replacing a file all at once: the content goes to a temporary file beside the target,
 /// which is then renamed onto it, so a failure never leaves a half file nor clobbers an earlier
-/// one. Used for images (render/image_io.cpp) and the benchmark's text reports.
+/// one. Used for images (io/image_io.cpp) and text files (io/text_file.h).
 #pragma once
 
 #include <functional>

@@ -1,8 +1,8 @@
-/// @file tests/render/image_io_test.cpp
+/// @file tests/io/image_io_test.cpp
 /// @brief writeImage/readImage: round trips within the quantisation, format by extension,
 /// and failures that leave no file behind and never clobber an existing one.
-#include "render/image.h"
-#include "render/srgb.h"
+#include "io/image.h"
+#include "io/srgb.h"
 
 #include <catch2/catch.hpp>
 
