@@ -50,7 +50,7 @@ int run(int argc, char** argv) {
     } catch (const UsageError& e) {
         std::cerr << "kerf: error: " << e.what() << "\n";
         return kExitUsage;
-    } catch (const kerf::ImageWriteError& e) {
+    } catch (const kerf::FileWriteError& e) {  // images, text, CSV, SVG; before or after work
         std::cerr << "kerf: error: " << e.what() << "\n";
         return kExitFailure;
     }

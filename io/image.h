@@ -1,10 +1,12 @@
 /// @file io/image.h
 /// @brief A float image (linear values, interleaved channels) and its files. Image files go
 /// through OpenImageIO, which lives in a plug-in loaded on first use (io/image_plugin.h), so
-/// a process that reads or writes no image loads no image library. Writes go to a temporary
-/// file beside the target and are renamed, so a failed run never leaves a half-written file
-/// nor clobbers an earlier one.
+/// a process that reads or writes no image loads no image library. Images are encoded in
+/// memory and written through io/atomic_file.h, so a failed run never leaves a half-written
+/// file nor clobbers an earlier one.
 #pragma once
+
+#include "io/atomic_file.h"
 
 #include <future>
 #include <stdexcept>
@@ -25,9 +27,9 @@ struct Image {
     float at(int x, int y, int c) const { return pixels[(size_t(y) * width + x) * channels + c]; }
 };
 
-/// Thrown for an output that cannot be written; what() names the file and the reason.
-struct ImageWriteError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+/// Thrown for an output that cannot be written; what() is "cannot write 'F': <reason>".
+struct ImageWriteError : FileWriteError {
+    using FileWriteError::FileWriteError;
 };
 
 /// Thrown when the image plug-in cannot be loaded; what() is

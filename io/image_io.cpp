@@ -1,8 +1,8 @@
 /// @file io/image_io.cpp
-/// @brief Image files through the image plug-in (OpenImageIO, loaded on first use), written
-/// to a temporary file beside the target and renamed onto it (io/atomic_file.h), so a failure
-/// never leaves a half file nor clobbers an earlier one. The sRGB coding is done here, so the
-/// plug-in only moves buffers.
+/// @brief Image files through the image plug-in (OpenImageIO, loaded on first use), which
+/// encodes them in memory; the bytes are written by the one checked write path
+/// (io/atomic_file.h), so a failure never leaves a half file nor clobbers an earlier one. The
+/// sRGB coding is done here, so the plug-in only moves buffers.
 #include "io/image.h"
 
 #include "io/atomic_file.h"
@@ -34,25 +34,37 @@ Encoding encodingFor(const std::string& ext) {
 }
 
 [[noreturn]] void fail(const std::string& path, const std::string& reason) {
-    throw ImageWriteError("cannot write '" + path + "': " + reason);
+    throw ImageWriteError(cannotWrite(path, reason));
 }
 
-/// Writes `image` to `file` (format by extension); returns an error message or "".
-std::string writeWithPlugin(const KerfImagePlugin& plugin, const Image& image,
-                            const std::string& file, Encoding encoding) {
+/// Takes the encoded file from the plug-in (a C callback: nothing may be thrown through it).
+int keepBytes(void* user, const void* data, size_t size) {
+    try {
+        auto* bytes = static_cast<std::string*>(user);
+        bytes->assign(static_cast<const char*>(data), size);
+        return 0;
+    } catch (...) {
+        return 1;
+    }
+}
+
+/// Encodes `image` in the format `path`'s extension names into `bytes`; "" or the reason.
+std::string encode(const KerfImagePlugin& plugin, const Image& image, const std::string& path,
+                   Encoding encoding, std::string& bytes) {
     char error[1024] = "";
     int failed;
     if (encoding == Encoding::Srgb8) {
         std::vector<uint8_t> codes(image.pixels.size());
         std::transform(image.pixels.begin(), image.pixels.end(), codes.begin(), srgbByte);
-        failed = plugin.write(file.c_str(), image.width, image.height, image.channels, 1,
-                              codes.data(), "sRGB", error, sizeof error);
+        failed = plugin.encode(path.c_str(), image.width, image.height, image.channels, 1,
+                               codes.data(), "sRGB", keepBytes, &bytes, error, sizeof error);
     } else {
-        failed = plugin.write(file.c_str(), image.width, image.height, image.channels, 0,
-                              image.pixels.data(), "Linear", error, sizeof error);
+        failed = plugin.encode(path.c_str(), image.width, image.height, image.channels, 0,
+                               image.pixels.data(), "Linear", keepBytes, &bytes, error,
+                               sizeof error);
     }
     if (!failed) return "";
-    return error[0] != 0 ? std::string(error) : std::string("write failed");
+    return error[0] != 0 ? std::string(error) : std::string("the encoder failed");
 }
 
 /// Where the plug-in reads into: the image, sized once the file's size is known.
@@ -80,13 +92,15 @@ void writeImage(const Image& image, const std::string& path) {
         image.pixels.size() != size_t(image.width) * image.height * image.channels)
         fail(path, "the image is empty or its pixel buffer does not match its size");
 
-    const KerfImagePlugin& plugin = imagePlugin();
-    // The temporary keeps the real extension, so OpenImageIO picks the format from it.
-    const std::string error =
-        writeThroughTemporary(path, ext, [&](int, const std::string& temporary) {
-            return writeWithPlugin(plugin, image, temporary, encoding);
-        });
+    // A folder that is missing or not writable is reported as such, before encoding.
+    const std::string problem = outputProblem(path, false);
+    if (!problem.empty()) fail(path, problem);
+    std::string bytes;
+    const std::string error = encode(imagePlugin(), image, path, encoding, bytes);
     if (!error.empty()) fail(path, error);
+    // The temporary keeps the real extension, so a tool looking at it sees what it is.
+    const std::string writeError = replaceFile(path, ext, bytes.data(), bytes.size());
+    if (!writeError.empty()) fail(path, writeError);
 }
 
 Image readImage(const std::string& path) {

@@ -1,17 +1,17 @@
 /// @file io/text_file.h
-/// @brief Writing text outputs (CSV, SVG, Markdown) like images are written (io/image_io.cpp):
-/// to a temporary file beside the target, then renamed onto it, so a failed run never leaves a
-/// half file nor clobbers an earlier one.
+/// @brief Writing text outputs (CSV, SVG, Markdown) like images are written: through
+/// io/atomic_file.h, so a failed run never leaves a half file nor clobbers an earlier one.
 #pragma once
 
-#include <stdexcept>
+#include "io/atomic_file.h"
+
 #include <string>
 
 namespace kerf {
 
-/// Thrown when a text file cannot be written; what() names the file and the reason.
-struct TextWriteError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+/// Thrown when a text file cannot be written; what() is "cannot write 'F': <reason>".
+struct TextWriteError : FileWriteError {
+    using FileWriteError::FileWriteError;
 };
 
 /// Writes `text` to `path` through a temporary file and a rename. Throws TextWriteError.
