@@ -10,6 +10,7 @@
 #include "accuracy/bench.h"
 #include "accuracy/plot.h"
 #include "accuracy/report.h"
+#include "io/atomic_file.h"
 #include "io/text_file.h"
 
 namespace kerf::app {
@@ -123,6 +124,9 @@ int runBench(const BenchCommandLine& line) {
     std::error_code error;
     std::filesystem::create_directories(line.outDir, error);
     if (error) throw UsageError("--out: cannot create '" + line.outDir + "': " + error.message());
+    // Before the long run: a result that could not be kept is not worth computing.
+    for (const char* name : {"accuracy.csv", "accuracy.svg", "accuracy_table.md"})
+        checkOutputWritable(line.outDir + "/" + name);
 
     options.progress = [](const std::string& text) { std::cerr << text << std::endl; };
     std::cerr << "kerf bench accuracy: " << scenes->size() << " scenes, " << options.runs

@@ -37,7 +37,7 @@ struct BenchCommandLine {
 CLI::App* addBenchCommand(CLI::App& parent, BenchCommandLine& line);
 
 /// Runs the command; returns the exit code. Throws UsageError for bad options and lets
-/// TextWriteError and other failures through to main().
+/// FileWriteError (an output that cannot be written) and other failures through to main().
 int runBench(const BenchCommandLine& line);
 
 }  // namespace kerf::app

@@ -54,6 +54,7 @@ OutputPlan planOutputs(const RenderCommandLine& line) {
     if (plan.color.empty()) throw UsageError("-o: the output file name is empty");
     for (const std::string& spec : line.aovs) plan.aovs.push_back(parseAovSpec(spec));
     checkOutputPlan(plan, line.model);
+    checkOutputsWritable(plan);
     return plan;
 }
 

@@ -40,7 +40,8 @@ struct RenderCommandLine {
 CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line);
 
 /// Runs the command; returns the exit code. Throws UsageError for bad options and lets
-/// ImageWriteError and other failures through to main().
+/// FileWriteError (an output that cannot be written, found before tracing or when writing)
+/// and other failures through to main().
 int runRender(const RenderCommandLine& line);
 
 }  // namespace kerf::app

@@ -2,6 +2,7 @@
 #include "app/output_paths.h"
 
 #include "app/exit_codes.h"
+#include "io/atomic_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -43,6 +44,21 @@ fs::path canonicalForm(const std::string& p) {
 
 }  // namespace
 
+std::string missingStem(const std::string& path) {
+    // std::filesystem reads ".png" as a hidden file without extension; the user meant an
+    // image and forgot its name.
+    std::string name = fs::path(path).filename().string();
+    std::transform(name.begin(), name.end(), name.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if (!isWritableFormat(name)) return "";
+    return "output '" + path + "' has no file name before the extension";
+}
+
+void checkOutputsWritable(const OutputPlan& plan) {
+    checkOutputWritable(plan.color);
+    for (const AovRequest& aov : plan.aovs) checkOutputWritable(aov.path);
+}
+
 std::string defaultOutputPath(const std::string& modelPath) {
     return fs::path(modelPath).stem().string() + ".png";
 }
@@ -63,6 +79,8 @@ AovRequest parseAovSpec(const std::string& spec) {
         throw UsageError("--aov: unknown kind '" + kind + "' (known kinds: depth, normal)");
     }
     if (request.path.empty()) throw UsageError("--aov " + kind + ": the file name is missing");
+    if (const std::string stem = missingStem(request.path); !stem.empty())
+        throw UsageError("--aov " + kind + ": " + stem);
     if (!isFloatFormat(lowerExtension(request.path))) {
         throw UsageError("--aov " + kind + ": '" + request.path +
                          "' must be a float image (.exr, .tif or .tiff)");
@@ -80,6 +98,8 @@ bool samePath(const std::string& a, const std::string& b) {
 }
 
 void checkOutputPlan(const OutputPlan& plan, const std::string& modelPath) {
+    if (const std::string stem = missingStem(plan.color); !stem.empty())
+        throw UsageError("-o: " + stem);
     if (!isWritableFormat(lowerExtension(plan.color))) {
         throw UsageError("-o: cannot write '" + plan.color +
                          "' (use .png, .jpg, .jpeg, .exr, .tif or .tiff)");

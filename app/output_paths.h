@@ -27,10 +27,20 @@ std::string defaultOutputPath(const std::string& modelPath);
 /// `--aov` for an unknown kind, a missing `=` or file, or a non-float format.
 AovRequest parseAovSpec(const std::string& spec);
 
-/// Throws UsageError when the colour output has an extension kerf cannot write, when a kind
-/// is requested twice, or when any output is the model file or another output (compared as
-/// canonical paths, and as the same file when both exist).
+/// Throws UsageError when the colour output has an extension kerf cannot write or no name
+/// before it (`-o .png`), when a kind is requested twice, or when any output is the model
+/// file or another output (compared as canonical paths, and as the same file when both
+/// exist).
 void checkOutputPlan(const OutputPlan& plan, const std::string& modelPath);
+
+/// Throws FileWriteError (exit 1, like a write that fails later) when any output cannot be
+/// written: its folder is missing or not writable, or it is a folder. Called before the model
+/// is compiled, so no work is done for a run whose result could not be kept.
+void checkOutputsWritable(const OutputPlan& plan);
+
+/// "output 'F' has no file name before the extension" when the file name is only a known
+/// image extension (".png"), else "".
+std::string missingStem(const std::string& path);
 
 /// True when the two paths name the same file (existing or not).
 bool samePath(const std::string& a, const std::string& b);
