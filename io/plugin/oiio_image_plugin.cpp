@@ -6,13 +6,13 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
-#include <cctype>
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "io/image_plugin.h"
+#include "io/plugin/jpeg_errors.h"
 
 namespace {
 
@@ -21,54 +21,62 @@ int fail(const std::string& message, char* error, size_t errorSize) {
     return 1;
 }
 
-/// libjpeg's default error handler prints its own message and exits the process; kerf's
-/// checks keep it from being reached: the largest size JPEG can hold is tested here, and the
-/// bytes go to memory, where no write can fail.
-constexpr int kJpegMaxSide = 65500;
+/// The arguments of KerfImagePlugin::encode, passed through runCatchingJpegErrors.
+struct EncodeCall {
+    const char* fileName;
+    int width, height, channels, bytes;
+    const void* pixels;
+    const char* colorSpace;
+    KerfImageBytes sink;
+    void* user;
+    char* error;
+    size_t errorSize;
+};
 
-bool isJpeg(const std::string& fileName) {
-    const size_t dot = fileName.find_last_of('.');
-    std::string ext = dot == std::string::npos ? "" : fileName.substr(dot + 1);
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return ext == "jpg" || ext == "jpeg" || ext == "jpe";
+int encodeUnguarded(void* data) {
+    const EncodeCall& c = *static_cast<const EncodeCall*>(data);
+    try {
+        std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(c.fileName);
+        if (!out) return fail(OIIO::geterror(), c.error, c.errorSize);
+        if (!out->supports("ioproxy"))
+            return fail(std::string("OpenImageIO cannot encode ") + out->format_name() +
+                            " in memory",
+                        c.error, c.errorSize);
+        std::vector<unsigned char> encoded;
+        OIIO::Filesystem::IOVecOutput proxy(encoded);
+        const OIIO::TypeDesc type = c.bytes ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
+        OIIO::ImageSpec spec(c.width, c.height, c.channels, type);
+        spec.attribute("oiio:ColorSpace", c.colorSpace);
+        void* proxyPointer = &proxy;
+        spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxyPointer);
+        // Only the return values decide: geterror() can hold a warning after a success (the
+        // TIFF writer reports Exif it could not write and still writes a good image).
+        if (!out->open(c.fileName, spec)) return fail(out->geterror(), c.error, c.errorSize);
+        const bool ok = out->write_image(type, c.pixels);
+        std::string message = ok ? "" : out->geterror();
+        if (!out->close() && message.empty()) message = out->geterror();
+        if (!ok && message.empty()) message = "the encoder failed";
+        if (message.empty() && encoded.empty()) message = "the encoder produced no bytes";
+        if (!message.empty()) return fail(message, c.error, c.errorSize);
+        if (c.sink(c.user, encoded.data(), encoded.size()) != 0)
+            return fail("out of memory", c.error, c.errorSize);
+        return 0;
+    } catch (const std::exception& e) {  // nothing may cross the C boundary
+        return fail(e.what(), c.error, c.errorSize);
+    }
 }
 
 int encodeImage(const char* fileName, int width, int height, int channels, int bytes,
                 const void* pixels, const char* colorSpace, KerfImageBytes sink, void* user,
                 char* error, size_t errorSize) {
-    try {
-        if (isJpeg(fileName) && (width > kJpegMaxSide || height > kJpegMaxSide))
-            return fail("a JPEG image is at most " + std::to_string(kJpegMaxSide) +
-                            " pixels wide and high",
-                        error, errorSize);
-        std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(fileName);
-        if (!out) return fail(OIIO::geterror(), error, errorSize);
-        if (!out->supports("ioproxy"))
-            return fail(std::string("OpenImageIO cannot encode ") + out->format_name() +
-                            " in memory",
-                        error, errorSize);
-        std::vector<unsigned char> encoded;
-        OIIO::Filesystem::IOVecOutput proxy(encoded);
-        const OIIO::TypeDesc type = bytes ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
-        OIIO::ImageSpec spec(width, height, channels, type);
-        spec.attribute("oiio:ColorSpace", colorSpace);
-        void* proxyPointer = &proxy;
-        spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxyPointer);
-        // Only the return values decide: geterror() can hold a warning after a success (the
-        // TIFF writer reports Exif it could not write and still writes a good image).
-        if (!out->open(fileName, spec)) return fail(out->geterror(), error, errorSize);
-        const bool ok = out->write_image(type, pixels);
-        std::string message = ok ? "" : out->geterror();
-        if (!out->close() && message.empty()) message = out->geterror();
-        if (!ok && message.empty()) message = "the encoder failed";
-        if (message.empty() && encoded.empty()) message = "the encoder produced no bytes";
-        if (!message.empty()) return fail(message, error, errorSize);
-        if (sink(user, encoded.data(), encoded.size()) != 0)
-            return fail("out of memory", error, errorSize);
-        return 0;
-    } catch (const std::exception& e) {  // nothing may cross the C boundary
-        return fail(e.what(), error, errorSize);
-    }
+    EncodeCall call{fileName, width,      height, channels, bytes,    pixels,
+                    colorSpace, sink, user,   error,    errorSize};
+    // libjpeg would otherwise print its own message and exit (io/plugin/jpeg_errors.h).
+    char jpegMessage[256] = "";
+    const int result = kerf_plugin::runCatchingJpegErrors(encodeUnguarded, &call, jpegMessage,
+                                                          sizeof jpegMessage);
+    if (result == -1) return fail(jpegMessage, error, errorSize);
+    return result;
 }
 
 int readImage(const char* path, KerfImageAllocate allocate, void* user, char* error,
