@@ -16,18 +16,36 @@ namespace {
 thread_local std::jmp_buf* tEscape = nullptr;  ///< set while runCatchingJpegErrors runs
 thread_local char tMessage[JMSG_LENGTH_MAX];
 
-using ErrorExit = void (*)(j_common_ptr);
-ErrorExit gDefaultErrorExit = nullptr;
-ErrorExit gDefaultOutputMessage = nullptr;
+using StdError = struct jpeg_error_mgr* (*)(struct jpeg_error_mgr*);
+using Handler = void (*)(j_common_ptr);
+
+/// libjpeg's jpeg_std_error and the handlers it installs, looked up once.
+struct Defaults {
+    StdError stdError;
+    Handler errorExit;
+    Handler outputMessage;
+};
+
+const Defaults& defaults() {
+    static const Defaults d = [] {
+        void* symbol = ::dlvsym(RTLD_NEXT, "jpeg_std_error", "LIBJPEG_6.2");
+        if (symbol == nullptr) symbol = ::dlsym(RTLD_NEXT, "jpeg_std_error");
+        const auto stdError = reinterpret_cast<StdError>(symbol);
+        struct jpeg_error_mgr probe;
+        stdError(&probe);
+        return Defaults{stdError, probe.error_exit, probe.output_message};
+    }();
+    return d;
+}
 
 extern "C" void kerfJpegErrorExit(j_common_ptr cinfo) {
-    if (tEscape == nullptr) return gDefaultErrorExit(cinfo);  // not ours: libjpeg's behaviour
+    if (tEscape == nullptr) return defaults().errorExit(cinfo);  // not ours: libjpeg's way
     cinfo->err->format_message(cinfo, tMessage);
     std::longjmp(*tEscape, 1);
 }
 
 extern "C" void kerfJpegOutputMessage(j_common_ptr cinfo) {
-    if (tEscape == nullptr) gDefaultOutputMessage(cinfo);  // inside: kerf alone speaks
+    if (tEscape == nullptr) defaults().outputMessage(cinfo);  // inside: kerf alone speaks
 }
 
 }  // namespace
@@ -36,15 +54,7 @@ extern "C" void kerfJpegOutputMessage(j_common_ptr cinfo) {
 /// plug-in comes first.
 extern "C" __attribute__((visibility("default"))) struct jpeg_error_mgr* jpeg_std_error(
     struct jpeg_error_mgr* err) {
-    using StdError = struct jpeg_error_mgr* (*)(struct jpeg_error_mgr*);
-    static const StdError real = [] {
-        void* symbol = ::dlvsym(RTLD_NEXT, "jpeg_std_error", "LIBJPEG_6.2");
-        if (symbol == nullptr) symbol = ::dlsym(RTLD_NEXT, "jpeg_std_error");
-        return reinterpret_cast<StdError>(symbol);
-    }();
-    struct jpeg_error_mgr* result = real(err);
-    gDefaultErrorExit = result->error_exit;
-    gDefaultOutputMessage = result->output_message;
+    struct jpeg_error_mgr* result = defaults().stdError(err);
     result->error_exit = kerfJpegErrorExit;
     result->output_message = kerfJpegOutputMessage;
     return result;
