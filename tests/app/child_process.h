@@ -7,6 +7,7 @@
 
 #include "kerf_runner.h"
 
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/types.h>
 #include <sys/wait.h>
@@ -45,9 +46,16 @@ public:
         for (const auto& [name, value] : extra) env.push_back(name + "=" + value);
         std::vector<std::string> argv = {KERF_BINARY};
         argv.insert(argv.end(), args.begin(), args.end());
+        // Everything the child needs is built before fork (no allocation after it).
+        const std::string dir = cwd.path().string();
+        std::vector<char*> args, envs;
+        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+        for (const std::string& e : env) envs.push_back(const_cast<char*>(e.c_str()));
+        args.push_back(nullptr);
+        envs.push_back(nullptr);
         mPid = ::fork();
         if (mPid < 0) throw std::runtime_error("fork failed");
-        if (mPid == 0) runChild(cwd.path().string(), argv, env);
+        if (mPid == 0) runChild(dir, args, envs);
     }
     ~KerfChild() {
         if (mPid > 0) {
@@ -82,8 +90,9 @@ public:
     const std::string& err() const { return mErrText; }
 
 private:
-    [[noreturn]] void runChild(const std::string& dir, const std::vector<std::string>& argv,
-                               const std::vector<std::string>& env) {
+    [[noreturn]] void runChild(const std::string& dir, const std::vector<char*>& argv,
+                               const std::vector<char*>& env) {
+        // Only async-signal-safe calls after fork: the test process may have other threads.
         // A test runner may have started us with SIGINT ignored or signals blocked; kerf must
         // see them as an interactive run would.
         sigset_t none;
@@ -92,15 +101,13 @@ private:
         ::signal(SIGINT, SIG_DFL);
         ::signal(SIGTERM, SIG_DFL);
         if (::chdir(dir.c_str()) != 0) ::_exit(127);
-        if (!std::freopen("/dev/null", "r", stdin) || !std::freopen(mOut.c_str(), "w", stdout) ||
-            !std::freopen(mErr.c_str(), "w", stderr))
+        const int in = ::open("/dev/null", O_RDONLY);
+        const int out = ::open(mOut.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int err = ::open(mErr.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (in < 0 || out < 0 || err < 0 || ::dup2(in, 0) < 0 || ::dup2(out, 1) < 0 ||
+            ::dup2(err, 2) < 0)
             ::_exit(127);
-        std::vector<char*> args, envs;
-        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-        for (const std::string& e : env) envs.push_back(const_cast<char*>(e.c_str()));
-        args.push_back(nullptr);
-        envs.push_back(nullptr);
-        ::execve(args[0], args.data(), envs.data());
+        ::execve(argv[0], argv.data(), env.data());
         ::_exit(127);
     }
 
