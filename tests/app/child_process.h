@@ -48,14 +48,14 @@ public:
         argv.insert(argv.end(), args.begin(), args.end());
         // Everything the child needs is built before fork (no allocation after it).
         const std::string dir = cwd.path().string();
-        std::vector<char*> args, envs;
-        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-        for (const std::string& e : env) envs.push_back(const_cast<char*>(e.c_str()));
-        args.push_back(nullptr);
-        envs.push_back(nullptr);
+        std::vector<char*> argPointers, envPointers;
+        for (const std::string& a : argv) argPointers.push_back(const_cast<char*>(a.c_str()));
+        for (const std::string& e : env) envPointers.push_back(const_cast<char*>(e.c_str()));
+        argPointers.push_back(nullptr);
+        envPointers.push_back(nullptr);
         mPid = ::fork();
         if (mPid < 0) throw std::runtime_error("fork failed");
-        if (mPid == 0) runChild(dir, args, envs);
+        if (mPid == 0) runChild(dir, argPointers, envPointers);
     }
     ~KerfChild() {
         if (mPid > 0) {
