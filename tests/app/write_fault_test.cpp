@@ -60,9 +60,11 @@ TEST_CASE("kerf render on a full disk: an AOV keeps its earlier file") {
     renderEarlier(dir, {"-o", "out.png", "--aov", "depth=depth.exr"});
     const std::string earlier = readFile(dir.file("depth.exr"));
 
+    Environment env = faultEnvironment("depth.exr");
+    env.push_back({"KERF_FAULT_AFTER", "0"});  // no room at all
     KerfChild child(dir, {"render", "tiny.kerf", "-q", "-o", "out.png", "--aov",
                           "depth=depth.exr", "--width", "20"},
-                    faultEnvironment("depth.exr"));
+                    env);
     REQUIRE(child.wait());
     const std::string err = child.err();
     INFO("stderr:\n" << err);
@@ -70,6 +72,31 @@ TEST_CASE("kerf render on a full disk: an AOV keeps its earlier file") {
     CHECK(err == "kerf: error: cannot write 'depth.exr': No space left on device\n");
     CHECK(readFile(dir.file("depth.exr")) == earlier);
     CHECK(dir.listing() == std::vector<std::string>{"depth.exr", "out.png", "tiny.kerf"});
+}
+
+TEST_CASE("failures the write calls do not show: at fsync, or bytes lost") {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"KERF_FAULT_FSYNC", "kerf: error: cannot write 'out.png': Input/output error\n"},
+        {"KERF_FAULT_DROP", "kerf: error: cannot write 'out.png': the file holds 0 bytes instead of "}};
+    for (const auto& [variable, message] : cases) {
+        DYNAMIC_SECTION(variable) {
+            TempDir dir;
+            dir.write("tiny.kerf", kTinyModel);
+            renderEarlier(dir, {"-o", "out.png"});
+            const std::string earlier = readFile(dir.file("out.png"));
+
+            Environment env = faultEnvironment("out.png");
+            env.push_back({variable, "1"});
+            KerfChild child(dir, {"render", "tiny.kerf", "-q", "-o", "out.png", "--width", "20"},
+                            env);
+            REQUIRE(child.wait());
+            INFO("stderr:\n" << child.err());
+            CHECK(child.exitCode() == 1);
+            CHECK(child.err().rfind(message, 0) == 0);
+            CHECK(readFile(dir.file("out.png")) == earlier);
+            CHECK(dir.listing() == std::vector<std::string>{"out.png", "tiny.kerf"});
+        }
+    }
 }
 
 TEST_CASE("kerf bench accuracy on a full disk keeps the earlier CSV") {

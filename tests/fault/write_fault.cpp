@@ -5,6 +5,9 @@
 /// KERF_FAULT_MATCH, behaves like a disk that is full or very slow:
 ///   KERF_FAULT_AFTER=N   the first N bytes (over all matching files) pass, later writes fail
 ///                        with ENOSPC (a short write first, like a disk that fills mid-call);
+///   KERF_FAULT_DROP=1    writes report success but put nothing in the file (a lost write);
+///   KERF_FAULT_FSYNC=1   fsync and fdatasync fail with EIO (a file system that reports the
+///                        failure only when flushing);
 ///   KERF_FAULT_STALL=F   the first matching write creates the file F (so the test knows the
 ///                        write has started) and then blocks forever, for signal tests.
 /// Without KERF_FAULT_MATCH every call goes straight through.
@@ -57,7 +60,8 @@ void stallIfAsked() {
 size_t allowance(size_t size) {
     stallIfAsked();
     const char* after = std::getenv("KERF_FAULT_AFTER");
-    const long long limit = after != nullptr ? std::atoll(after) : 0;
+    if (after == nullptr) return size;
+    const long long limit = std::atoll(after);
     const long long passed = gPassed.load();
     const long long left = limit > passed ? limit - passed : 0;
     const size_t allowed = size < size_t(left) ? size : size_t(left);
@@ -69,6 +73,11 @@ size_t allowance(size_t size) {
 
 extern "C" {
 
+bool flagSet(const char* name) {
+    const char* value = std::getenv(name);
+    return value != nullptr && *value != '\0' && *value != '0';
+}
+
 ssize_t write(int fd, const void* data, size_t size) {
     static const auto next = real<ssize_t (*)(int, const void*, size_t)>("write");
     if (size == 0 || !matches(fd)) return next(fd, data, size);
@@ -77,7 +86,22 @@ ssize_t write(int fd, const void* data, size_t size) {
         errno = ENOSPC;
         return -1;
     }
+    if (flagSet("KERF_FAULT_DROP")) return ssize_t(allowed);
     return next(fd, data, allowed);
+}
+
+int fsync(int fd) {
+    static const auto next = real<int (*)(int)>("fsync");
+    if (!matches(fd) || !flagSet("KERF_FAULT_FSYNC")) return next(fd);
+    errno = EIO;
+    return -1;
+}
+
+int fdatasync(int fd) {
+    static const auto next = real<int (*)(int)>("fdatasync");
+    if (!matches(fd) || !flagSet("KERF_FAULT_FSYNC")) return next(fd);
+    errno = EIO;
+    return -1;
 }
 
 ssize_t pwrite(int fd, const void* data, size_t size, off_t offset) {
