@@ -25,10 +25,12 @@ using Environment = std::vector<std::pair<std::string, std::string>>;
 /// The environment that makes the shim fail or stall writes to files whose path contains
 /// `match` (tests/fault/write_fault.cpp).
 inline Environment faultEnvironment(const std::string& match) {
+    // A sanitizer build must accept the shim ahead of its runtime; other options stay.
+    const char* asan = std::getenv("ASAN_OPTIONS");
+    std::string asanOptions = asan != nullptr && *asan != '\0' ? std::string(asan) + ":" : "";
     return {{"LD_PRELOAD", KERF_WRITE_FAULT_SHIM},
             {"KERF_FAULT_MATCH", match},
-            // A sanitizer build must accept the shim ahead of its runtime.
-            {"ASAN_OPTIONS", "verify_asan_link_order=0"}};
+            {"ASAN_OPTIONS", asanOptions + "verify_asan_link_order=0"}};
 }
 
 class KerfChild {
