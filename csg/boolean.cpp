@@ -111,9 +111,9 @@ private:
 
     /// acc = acc op child.
     void fold(BoolOp op, SpanList& acc, const SpanList& child, TraceContext& ctx) const {
-        SpanList result;
-        combineSpans(op, acc, child, ctx.relTolerance, result);
-        acc.swap(result);
+        ScratchSpans result(ctx.scratch);
+        combineSpans(op, acc, child, ctx.relTolerance, *result);
+        acc.assign(*result);
     }
 
     /// Calls f(childIndex) for every searched child whose bounds may meet the ray segment.
@@ -131,11 +131,12 @@ private:
 
     void unionSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                     SpanList& out) const {
-        SpanList child;
+        ScratchSpans scratch(ctx.scratch);
+        SpanList& child = *scratch;
         forSearched(ray, tmin, tmax, ctx, [&](size_t i) {
             if (!childSpans(i, ray, tmin, tmax, ctx, child)) return;
             if (out.empty())
-                out = child;
+                out.assign(child);
             else
                 fold(BoolOp::Union, out, child, ctx);
         });
@@ -144,7 +145,8 @@ private:
     void intersectionSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                            SpanList& out) const {
         if (!childSpans(0, ray, tmin, tmax, ctx, out)) return;
-        SpanList child;
+        ScratchSpans scratch(ctx.scratch);
+        SpanList& child = *scratch;
         for (size_t i = 1; i < mChildren.size() && !out.empty(); ++i) {
             // Only where every earlier operand is inside can the result be.
             const double lo = std::max(tmin, out[0].in.t), hi = std::min(tmax, out.back().out.t);
@@ -161,7 +163,8 @@ private:
         if (!childSpans(0, ray, tmin, tmax, ctx, out)) return;
         // Cutters matter only where the body is: search them over the body's extent.
         const double lo = std::max(tmin, out[0].in.t), hi = std::min(tmax, out.back().out.t);
-        SpanList child;
+        ScratchSpans scratch(ctx.scratch);
+        SpanList& child = *scratch;
         forSearched(ray, lo, hi, ctx, [&](size_t i) {
             if (out.empty() || !childSpans(i, ray, lo, hi, ctx, child)) return;
             fold(BoolOp::Difference, out, child, ctx);
@@ -170,11 +173,12 @@ private:
 
     void xorSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                   SpanList& out) const {
-        SpanList child;
+        ScratchSpans scratch(ctx.scratch);
+        SpanList& child = *scratch;
         for (size_t i = 0; i < mChildren.size(); ++i) {
             if (!childSpans(i, ray, tmin, tmax, ctx, child)) continue;
             if (out.empty())
-                out = child;
+                out.assign(child);
             else
                 fold(BoolOp::Xor, out, child, ctx);
         }
