@@ -54,11 +54,12 @@ public:
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                SpanList& out) const override {
         out.clear();
+        const RayReciprocal rec(ray);  // once for all the children's box tests
         switch (mOp) {
-            case BoolOp::Union: return unionSpans(ray, tmin, tmax, ctx, out);
-            case BoolOp::Intersection: return intersectionSpans(ray, tmin, tmax, ctx, out);
-            case BoolOp::Difference: return differenceSpans(ray, tmin, tmax, ctx, out);
-            case BoolOp::Xor: return xorSpans(ray, tmin, tmax, ctx, out);
+            case BoolOp::Union: return unionSpans(ray, rec, tmin, tmax, ctx, out);
+            case BoolOp::Intersection: return intersectionSpans(ray, rec, tmin, tmax, ctx, out);
+            case BoolOp::Difference: return differenceSpans(ray, rec, tmin, tmax, ctx, out);
+            case BoolOp::Xor: return xorSpans(ray, rec, tmin, tmax, ctx, out);
         }
     }
 
@@ -96,12 +97,13 @@ private:
         return v;
     }
 
-    /// Spans of child i if its bounds meet the ray within [tmin, tmax]; else leaves `s` empty.
-    bool childSpans(size_t i, const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                    SpanList& s) const {
+    /// Spans of child i if its bounds may meet the ray within [tmin, tmax]; else leaves `s`
+    /// empty. `rec` is the ray's reciprocal direction, computed once per call of spans().
+    bool childSpans(size_t i, const Ray& ray, const RayReciprocal& rec, double tmin, double tmax,
+                    TraceContext& ctx, SpanList& s) const {
         double t0 = tmin, t1 = tmax;
         ++ctx.stats.boundsTests;
-        if (!mChildren[i]->bounds().clipRay(ray, t0, t1)) {
+        if (!mChildren[i]->bounds().clipRayConservative(rec, t0, t1)) {
             s.clear();
             return false;
         }
@@ -118,9 +120,10 @@ private:
 
     /// Calls f(childIndex) for every searched child whose bounds may meet the ray segment.
     template <class F>
-    void forSearched(const Ray& ray, double tmin, double tmax, TraceContext& ctx, F&& f) const {
+    void forSearched(const Ray& ray, const RayReciprocal& rec, double tmin, double tmax,
+                     TraceContext& ctx, F&& f) const {
         if (mUseBvh) {
-            mBvh.traverse(ray, tmin, tmax, ctx.stats, [&](int i, double) {
+            mBvh.traverse(rec, tmin, tmax, ctx.stats, [&](int i, double) {
                 f(static_cast<size_t>(i) + mFirstSearched);
                 return tmax;
             });
@@ -129,12 +132,12 @@ private:
         }
     }
 
-    void unionSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                    SpanList& out) const {
+    void unionSpans(const Ray& ray, const RayReciprocal& rec, double tmin, double tmax,
+                    TraceContext& ctx, SpanList& out) const {
         ScratchSpans scratch(ctx.scratch);
         SpanList& child = *scratch;
-        forSearched(ray, tmin, tmax, ctx, [&](size_t i) {
-            if (!childSpans(i, ray, tmin, tmax, ctx, child)) return;
+        forSearched(ray, rec, tmin, tmax, ctx, [&](size_t i) {
+            if (!childSpans(i, ray, rec, tmin, tmax, ctx, child)) return;
             if (out.empty())
                 out.assign(child);
             else
@@ -142,15 +145,15 @@ private:
         });
     }
 
-    void intersectionSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                           SpanList& out) const {
-        if (!childSpans(0, ray, tmin, tmax, ctx, out)) return;
+    void intersectionSpans(const Ray& ray, const RayReciprocal& rec, double tmin, double tmax,
+                           TraceContext& ctx, SpanList& out) const {
+        if (!childSpans(0, ray, rec, tmin, tmax, ctx, out)) return;
         ScratchSpans scratch(ctx.scratch);
         SpanList& child = *scratch;
         for (size_t i = 1; i < mChildren.size() && !out.empty(); ++i) {
             // Only where every earlier operand is inside can the result be.
             const double lo = std::max(tmin, out[0].in.t), hi = std::min(tmax, out.back().out.t);
-            if (!childSpans(i, ray, lo, hi, ctx, child)) {
+            if (!childSpans(i, ray, rec, lo, hi, ctx, child)) {
                 out.clear();
                 return;
             }
@@ -158,25 +161,25 @@ private:
         }
     }
 
-    void differenceSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                         SpanList& out) const {
-        if (!childSpans(0, ray, tmin, tmax, ctx, out)) return;
+    void differenceSpans(const Ray& ray, const RayReciprocal& rec, double tmin, double tmax,
+                         TraceContext& ctx, SpanList& out) const {
+        if (!childSpans(0, ray, rec, tmin, tmax, ctx, out)) return;
         // Cutters matter only where the body is: search them over the body's extent.
         const double lo = std::max(tmin, out[0].in.t), hi = std::min(tmax, out.back().out.t);
         ScratchSpans scratch(ctx.scratch);
         SpanList& child = *scratch;
-        forSearched(ray, lo, hi, ctx, [&](size_t i) {
-            if (out.empty() || !childSpans(i, ray, lo, hi, ctx, child)) return;
+        forSearched(ray, rec, lo, hi, ctx, [&](size_t i) {
+            if (out.empty() || !childSpans(i, ray, rec, lo, hi, ctx, child)) return;
             fold(BoolOp::Difference, out, child, ctx);
         });
     }
 
-    void xorSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                  SpanList& out) const {
+    void xorSpans(const Ray& ray, const RayReciprocal& rec, double tmin, double tmax,
+                  TraceContext& ctx, SpanList& out) const {
         ScratchSpans scratch(ctx.scratch);
         SpanList& child = *scratch;
         for (size_t i = 0; i < mChildren.size(); ++i) {
-            if (!childSpans(i, ray, tmin, tmax, ctx, child)) continue;
+            if (!childSpans(i, ray, rec, tmin, tmax, ctx, child)) continue;
             if (out.empty())
                 out.assign(child);
             else
