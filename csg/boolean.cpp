@@ -54,13 +54,13 @@ public:
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                SpanList& out) const override {
         out.clear();
-        const RayReciprocal rec(ray);  // once for all the children's box tests
-        switch (mOp) {
-            case BoolOp::Union: return unionSpans(ray, rec, tmin, tmax, ctx, out);
-            case BoolOp::Intersection: return intersectionSpans(ray, rec, tmin, tmax, ctx, out);
-            case BoolOp::Difference: return differenceSpans(ray, rec, tmin, tmax, ctx, out);
-            case BoolOp::Xor: return xorSpans(ray, rec, tmin, tmax, ctx, out);
+        // Wide nodes compute the reciprocal direction once for the BVH and every child's box
+        // test; for a few children three divisions per test cost less than making it.
+        if (mUseBvh) {
+            const RayReciprocal rec(ray);
+            return spansWith(ray, &rec, tmin, tmax, ctx, out);
         }
+        spansWith(ray, nullptr, tmin, tmax, ctx, out);
     }
 
     double value(const Vec3& p) const override {
@@ -88,6 +88,16 @@ public:
     }
 
 private:
+    void spansWith(const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
+                   TraceContext& ctx, SpanList& out) const {
+        switch (mOp) {
+            case BoolOp::Union: return unionSpans(ray, rec, tmin, tmax, ctx, out);
+            case BoolOp::Intersection: return intersectionSpans(ray, rec, tmin, tmax, ctx, out);
+            case BoolOp::Difference: return differenceSpans(ray, rec, tmin, tmax, ctx, out);
+            case BoolOp::Xor: return xorSpans(ray, rec, tmin, tmax, ctx, out);
+        }
+    }
+
     /// The children's implicit forms (valueOf(child)) combined left to right by the operator.
     template <class T, class ValueOf>
     T combinedValue(const ValueOf& valueOf) const {
@@ -98,12 +108,13 @@ private:
     }
 
     /// Spans of child i if its bounds may meet the ray within [tmin, tmax]; else leaves `s`
-    /// empty. `rec` is the ray's reciprocal direction, computed once per call of spans().
-    bool childSpans(size_t i, const Ray& ray, const RayReciprocal& rec, double tmin, double tmax,
+    /// empty. `rec`: the ray's reciprocal direction if spans() made it, else null.
+    bool childSpans(size_t i, const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
                     TraceContext& ctx, SpanList& s) const {
         double t0 = tmin, t1 = tmax;
         ++ctx.stats.boundsTests;
-        if (!mChildren[i]->bounds().clipRayConservative(rec, t0, t1)) {
+        const Bounds3& box = mChildren[i]->bounds();
+        if (!(rec ? box.clipRayConservative(*rec, t0, t1) : box.clipRay(ray, t0, t1))) {
             s.clear();
             return false;
         }
@@ -120,10 +131,10 @@ private:
 
     /// Calls f(childIndex) for every searched child whose bounds may meet the ray segment.
     template <class F>
-    void forSearched(const Ray& ray, const RayReciprocal& rec, double tmin, double tmax,
+    void forSearched(const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
                      TraceContext& ctx, F&& f) const {
         if (mUseBvh) {
-            mBvh.traverse(rec, tmin, tmax, ctx.stats, [&](int i, double) {
+            mBvh.traverse(*rec, tmin, tmax, ctx.stats, [&](int i, double) {
                 f(static_cast<size_t>(i) + mFirstSearched);
                 return tmax;
             });
@@ -132,7 +143,7 @@ private:
         }
     }
 
-    void unionSpans(const Ray& ray, const RayReciprocal& rec, double tmin, double tmax,
+    void unionSpans(const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
                     TraceContext& ctx, SpanList& out) const {
         ScratchSpans scratch(ctx.scratch);
         SpanList& child = *scratch;
@@ -145,7 +156,7 @@ private:
         });
     }
 
-    void intersectionSpans(const Ray& ray, const RayReciprocal& rec, double tmin, double tmax,
+    void intersectionSpans(const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
                            TraceContext& ctx, SpanList& out) const {
         if (!childSpans(0, ray, rec, tmin, tmax, ctx, out)) return;
         ScratchSpans scratch(ctx.scratch);
@@ -161,7 +172,7 @@ private:
         }
     }
 
-    void differenceSpans(const Ray& ray, const RayReciprocal& rec, double tmin, double tmax,
+    void differenceSpans(const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
                          TraceContext& ctx, SpanList& out) const {
         if (!childSpans(0, ray, rec, tmin, tmax, ctx, out)) return;
         // Cutters matter only where the body is: search them over the body's extent.
@@ -174,7 +185,7 @@ private:
         });
     }
 
-    void xorSpans(const Ray& ray, const RayReciprocal& rec, double tmin, double tmax,
+    void xorSpans(const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
                   TraceContext& ctx, SpanList& out) const {
         ScratchSpans scratch(ctx.scratch);
         SpanList& child = *scratch;

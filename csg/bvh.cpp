@@ -12,6 +12,7 @@ namespace {
 
 constexpr int kBins = 16;
 constexpr int kMaxLeafSize = 4;
+constexpr int kMedianLeafSize = 2;
 /// SAH costs, in node box tests: an item costs its own box test (the caller repeats it in
 /// double) and, now and then, its spans. Measured on the bench scenes: a cheaper item splits
 /// small sets that a ray mostly meets whole, and the extra node tests cost more than they save.
@@ -47,7 +48,8 @@ struct Bvh::BuildItem {
     int32_t index;
 };
 
-Bvh::Bvh(const std::vector<Bounds3>& items) : mItemCount(static_cast<int>(items.size())) {
+Bvh::Bvh(const std::vector<Bounds3>& items, Split split)
+    : mItemCount(static_cast<int>(items.size())), mSplit(split) {
     std::vector<BuildItem> build;
     for (int i = 0; i < mItemCount; ++i) {
         if (items[i].empty()) continue;  // an empty solid is never hit
@@ -91,9 +93,17 @@ int Bvh::build(std::vector<BuildItem>& items, int begin, int end, int depth) {
         if (count <= 0xffff) return makeLeaf();
     }
 
+    if (mSplit == Split::Median) {
+        const int longest =
+            (extent.x >= extent.y && extent.x >= extent.z) ? 0 : (extent.y >= extent.z ? 1 : 2);
+        if (count <= kMedianLeafSize || extent[longest] <= 0.0) {
+            if (count <= 0xffff) return makeLeaf();
+        }
+    }
+
     int axis = -1, split = 0;  // split: items in bins [0, split) go left
     double bestCost = kInf;
-    if (depth < kSahDepthLimit) {
+    if (mSplit == Split::Sah && depth < kSahDepthLimit) {
         for (int a = 0; a < 3; ++a) {
             if (!(extent[a] > 0.0)) continue;
             Bounds3 binBox[kBins];
@@ -135,7 +145,7 @@ int Bvh::build(std::vector<BuildItem>& items, int begin, int end, int depth) {
         const double splitCost = kNodeCost + kItemCost * (area > 0.0 ? bestCost / area : kInf);
         if (count <= kMaxLeafSize && !(splitCost < kItemCost * count)) return makeLeaf();
     }
-    if (axis < 0 && count <= kMaxLeafSize) return makeLeaf();
+    if (mSplit == Split::Sah && axis < 0 && count <= kMaxLeafSize) return makeLeaf();
 
     int mid;
     if (axis >= 0) {

@@ -15,8 +15,16 @@ namespace kerf {
 
 class Bvh {
 public:
+    /// How the build splits a node: by binned SAH, or at the median of the centroids along
+    /// their longest axis (two items per leaf), the tree kerf used before SAH. The scene's
+    /// objects keep the median tree: the order objects are searched in narrows the range each
+    /// later one is searched over, and root-isolated surfaces (torus, implicit) may land on a
+    /// different root within the tolerance when that range changes; the stored reference
+    /// images pin today's order.
+    enum class Split { Sah, Median };
+
     Bvh() = default;
-    explicit Bvh(const std::vector<Bounds3>& items);
+    explicit Bvh(const std::vector<Bounds3>& items, Split split = Split::Sah);
 
     /// Calls visit(index, tEnter) for every item whose box the ray meets within [tmin, tmax]
     /// (near boxes first, as far as the tree can tell; tEnter is at most the exact entry).
@@ -57,6 +65,7 @@ private:
     std::vector<int32_t> mOrder;      ///< item indices, leaves point into ranges of it
     std::vector<int32_t> mUnbounded;  ///< items with infinite boxes, always visited
     int mItemCount = 0;
+    Split mSplit = Split::Sah;
 };
 
 template <class Visit>

@@ -17,7 +17,7 @@ std::vector<Bounds3> objectBounds(const std::vector<NodePtr>& objects) {
 }  // namespace
 
 SceneGeometry::SceneGeometry(std::vector<NodePtr> objects)
-    : mObjects(std::move(objects)), mBvh(objectBounds(mObjects)) {}
+    : mObjects(std::move(objects)), mBvh(objectBounds(mObjects), Bvh::Split::Median) {}
 
 std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double tmax,
                                              TraceContext& ctx) const {

@@ -132,6 +132,7 @@ std::string describe(const Ray& r, double tmin, double tmax, const Bounds3& b) {
 }  // namespace
 
 TEST_CASE("Bvh::traverse reports every box the exact segment meets, at every scale") {
+    const Bvh::Split split = GENERATE(Bvh::Split::Sah, Bvh::Split::Median);
     for (const Scale& sc : kScales) {
         Sampler s(0x5eed0000u + uint64_t(sc.eLo + 2000));
         int exactHits = 0, reported = 0, rays = 0, lost = 0, lateEntries = 0;
@@ -139,7 +140,7 @@ TEST_CASE("Bvh::traverse reports every box the exact segment meets, at every sca
         for (int scene = 0; scene < 40; ++scene) {
             std::vector<Bounds3> boxes(1 + s.pick(200));
             for (Bounds3& b : boxes) b = randomBox(s, sc);
-            const Bvh bvh(boxes);
+            const Bvh bvh(boxes, split);
             CHECK(bvh.itemCount() == int(boxes.size()));
             for (int k = 0; k < 250; ++k) {
                 const Ray ray = randomRay(s, sc, boxes);
@@ -167,7 +168,7 @@ TEST_CASE("Bvh::traverse reports every box the exact segment meets, at every sca
                 for (char c : seen) reported += c;
             }
         }
-        INFO(sc.name << ": " << rays << " rays, " << exactHits << " exact box hits, "
+        INFO((split == Bvh::Split::Sah ? "SAH, " : "median, ") << sc.name << ": " << rays << " rays, " << exactHits << " exact box hits, "
                      << reported << " reported; first lost: " << firstLost);
         CHECK(exactHits > 0);
         CHECK(lost == 0);
