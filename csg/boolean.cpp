@@ -54,12 +54,13 @@ public:
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                SpanList& out) const override {
         out.clear();
-        switch (mOp) {
-            case BoolOp::Union: return unionSpans(ray, tmin, tmax, ctx, out);
-            case BoolOp::Intersection: return intersectionSpans(ray, tmin, tmax, ctx, out);
-            case BoolOp::Difference: return differenceSpans(ray, tmin, tmax, ctx, out);
-            case BoolOp::Xor: return xorSpans(ray, tmin, tmax, ctx, out);
+        // Wide nodes compute the reciprocal direction once for the BVH and every child's box
+        // test; for a few children three divisions per test cost less than making it.
+        if (mUseBvh) {
+            const RayReciprocal rec(ray);
+            return spansWith(ray, &rec, tmin, tmax, ctx, out);
         }
+        spansWith(ray, nullptr, tmin, tmax, ctx, out);
     }
 
     double value(const Vec3& p) const override {
@@ -94,6 +95,16 @@ public:
     }
 
 private:
+    void spansWith(const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
+                   TraceContext& ctx, SpanList& out) const {
+        switch (mOp) {
+            case BoolOp::Union: return unionSpans(ray, rec, tmin, tmax, ctx, out);
+            case BoolOp::Intersection: return intersectionSpans(ray, rec, tmin, tmax, ctx, out);
+            case BoolOp::Difference: return differenceSpans(ray, rec, tmin, tmax, ctx, out);
+            case BoolOp::Xor: return xorSpans(ray, rec, tmin, tmax, ctx, out);
+        }
+    }
+
     /// The children's implicit forms (valueOf(child)) combined left to right by the operator.
     template <class T, class ValueOf>
     T combinedValue(const ValueOf& valueOf) const {
@@ -103,12 +114,14 @@ private:
         return v;
     }
 
-    /// Spans of child i if its bounds meet the ray within [tmin, tmax]; else leaves `s` empty.
-    bool childSpans(size_t i, const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                    SpanList& s) const {
+    /// Spans of child i if its bounds may meet the ray within [tmin, tmax]; else leaves `s`
+    /// empty. `rec`: the ray's reciprocal direction if spans() made it, else null.
+    bool childSpans(size_t i, const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
+                    TraceContext& ctx, SpanList& s) const {
         double t0 = tmin, t1 = tmax;
         ++ctx.stats.boundsTests;
-        if (!mChildren[i]->bounds().clipRay(ray, t0, t1)) {
+        const Bounds3& box = mChildren[i]->bounds();
+        if (!(rec ? box.clipRayConservative(*rec, t0, t1) : box.clipRay(ray, t0, t1))) {
             s.clear();
             return false;
         }
@@ -118,16 +131,17 @@ private:
 
     /// acc = acc op child.
     void fold(BoolOp op, SpanList& acc, const SpanList& child, TraceContext& ctx) const {
-        SpanList result;
-        combineSpans(op, acc, child, ctx.relTolerance, result);
-        acc.swap(result);
+        ScratchSpans result(ctx.scratch);
+        combineSpans(op, acc, child, ctx.relTolerance, *result);
+        acc.assign(*result);
     }
 
     /// Calls f(childIndex) for every searched child whose bounds may meet the ray segment.
     template <class F>
-    void forSearched(const Ray& ray, double tmin, double tmax, TraceContext& ctx, F&& f) const {
+    void forSearched(const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
+                     TraceContext& ctx, F&& f) const {
         if (mUseBvh) {
-            mBvh.traverse(ray, tmin, tmax, ctx.stats, [&](int i, double) {
+            mBvh.traverse(*rec, tmin, tmax, ctx.stats, [&](int i, double) {
                 f(static_cast<size_t>(i) + mFirstSearched);
                 return tmax;
             });
@@ -136,26 +150,28 @@ private:
         }
     }
 
-    void unionSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                    SpanList& out) const {
-        SpanList child;
-        forSearched(ray, tmin, tmax, ctx, [&](size_t i) {
-            if (!childSpans(i, ray, tmin, tmax, ctx, child)) return;
+    void unionSpans(const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
+                    TraceContext& ctx, SpanList& out) const {
+        ScratchSpans scratch(ctx.scratch);
+        SpanList& child = *scratch;
+        forSearched(ray, rec, tmin, tmax, ctx, [&](size_t i) {
+            if (!childSpans(i, ray, rec, tmin, tmax, ctx, child)) return;
             if (out.empty())
-                out = child;
+                out.assign(child);
             else
                 fold(BoolOp::Union, out, child, ctx);
         });
     }
 
-    void intersectionSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                           SpanList& out) const {
-        if (!childSpans(0, ray, tmin, tmax, ctx, out)) return;
-        SpanList child;
+    void intersectionSpans(const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
+                           TraceContext& ctx, SpanList& out) const {
+        if (!childSpans(0, ray, rec, tmin, tmax, ctx, out)) return;
+        ScratchSpans scratch(ctx.scratch);
+        SpanList& child = *scratch;
         for (size_t i = 1; i < mChildren.size() && !out.empty(); ++i) {
             // Only where every earlier operand is inside can the result be.
             const double lo = std::max(tmin, out[0].in.t), hi = std::min(tmax, out.back().out.t);
-            if (!childSpans(i, ray, lo, hi, ctx, child)) {
+            if (!childSpans(i, ray, rec, lo, hi, ctx, child)) {
                 out.clear();
                 return;
             }
@@ -163,25 +179,27 @@ private:
         }
     }
 
-    void differenceSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                         SpanList& out) const {
-        if (!childSpans(0, ray, tmin, tmax, ctx, out)) return;
+    void differenceSpans(const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
+                         TraceContext& ctx, SpanList& out) const {
+        if (!childSpans(0, ray, rec, tmin, tmax, ctx, out)) return;
         // Cutters matter only where the body is: search them over the body's extent.
         const double lo = std::max(tmin, out[0].in.t), hi = std::min(tmax, out.back().out.t);
-        SpanList child;
-        forSearched(ray, lo, hi, ctx, [&](size_t i) {
-            if (out.empty() || !childSpans(i, ray, lo, hi, ctx, child)) return;
+        ScratchSpans scratch(ctx.scratch);
+        SpanList& child = *scratch;
+        forSearched(ray, rec, lo, hi, ctx, [&](size_t i) {
+            if (out.empty() || !childSpans(i, ray, rec, lo, hi, ctx, child)) return;
             fold(BoolOp::Difference, out, child, ctx);
         });
     }
 
-    void xorSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                  SpanList& out) const {
-        SpanList child;
+    void xorSpans(const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
+                  TraceContext& ctx, SpanList& out) const {
+        ScratchSpans scratch(ctx.scratch);
+        SpanList& child = *scratch;
         for (size_t i = 0; i < mChildren.size(); ++i) {
-            if (!childSpans(i, ray, tmin, tmax, ctx, child)) continue;
+            if (!childSpans(i, ray, rec, tmin, tmax, ctx, child)) continue;
             if (out.empty())
-                out = child;
+                out.assign(child);
             else
                 fold(BoolOp::Xor, out, child, ctx);
         }

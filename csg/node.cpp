@@ -25,9 +25,9 @@ bool firstSurfaceOf(const SpanList& spans, double tmin, double tmax, Boundary& h
 
 bool Node::firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                         Boundary& hit, bool& entering) const {
-    SpanList spans;
-    this->spans(ray, tmin, tmax, ctx, spans);
-    return firstSurfaceOf(spans, tmin, tmax, hit, entering);
+    ScratchSpans spans(ctx.scratch);
+    this->spans(ray, tmin, tmax, ctx, *spans);
+    return firstSurfaceOf(*spans, tmin, tmax, hit, entering);
 }
 
 }  // namespace kerf

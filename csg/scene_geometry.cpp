@@ -49,7 +49,7 @@ bool preferOrMerge(const Ray& ray, Hit& h, Hit& best) {
 }  // namespace
 
 SceneGeometry::SceneGeometry(std::vector<NodePtr> objects)
-    : mObjects(std::move(objects)), mBvh(objectBounds(mObjects)) {}
+    : mObjects(std::move(objects)), mBvh(objectBounds(mObjects), Bvh::Split::Median) {}
 
 std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double tmax,
                                              TraceContext& ctx) const {

@@ -53,9 +53,9 @@ int tieOrder(const Boundary& a, bool aEnters, const Boundary& b, bool bEnters) {
 
 void SpanList::grow() {
     const int capacity = mCapacity * 2;
-    Span* data = new Span[capacity];
-    std::copy(mData, mData + mSize, data);
-    if (mData != mInline) delete[] mData;
+    Span* data = static_cast<Span*>(::operator new(sizeof(Span) * capacity));
+    std::memcpy(static_cast<void*>(data), mData, sizeof(Span) * mSize);
+    if (mData != inlineData()) ::operator delete(static_cast<void*>(mData));
     mData = data;
     mCapacity = capacity;
 }

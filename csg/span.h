@@ -7,6 +7,8 @@
 
 #include <cstdint>
 #include <cstring>
+#include <new>
+#include <type_traits>
 #include <utility>
 
 namespace kerf {
@@ -38,7 +40,8 @@ struct Span {
 };
 
 /// A sorted list of disjoint spans. Small-buffer storage: most lists hold a few spans, and the
-/// hot path must not touch the heap.
+/// hot path must not touch the heap. The inline buffer is raw storage, so an empty list costs
+/// nothing to make (Boundary's default values would otherwise be written four times over).
 class SpanList {
 public:
     SpanList() = default;
@@ -67,10 +70,16 @@ public:
     const Span& back() const { return mData[mSize - 1]; }
     void push_back(const Span& s) {
         if (mSize == mCapacity) grow();
-        mData[mSize++] = s;
+        new (&mData[mSize++]) Span(s);
     }
     /// Keeps the first n spans (n ≤ size()); the storage stays.
     void truncate(int n) { mSize = n; }
+    /// Copies o's spans into this list's storage (which grows only if it must).
+    void assign(const SpanList& o) {
+        while (mCapacity < o.mSize) grow();
+        std::memcpy(static_cast<void*>(mData), o.mData, sizeof(Span) * o.mSize);
+        mSize = o.mSize;
+    }
     void swap(SpanList& o) noexcept {
         SpanList tmp(std::move(o));
         o = std::move(*this);
@@ -79,35 +88,33 @@ public:
 
 private:
     static constexpr int kInline = 4;
+    static_assert(std::is_trivially_copyable<Span>::value && std::is_trivially_destructible<Span>::value,
+                  "spans are copied with memcpy and never destroyed one by one");
     void grow();
-    void assign(const SpanList& o) {
-        while (mCapacity < o.mSize) grow();
-        std::memcpy(static_cast<void*>(mData), o.mData, sizeof(Span) * o.mSize);
-        mSize = o.mSize;
-    }
+    Span* inlineData() { return reinterpret_cast<Span*>(mInline); }
     void moveFrom(SpanList& o) {
-        if (o.mData == o.mInline) {
-            mData = mInline;
+        if (o.mData == o.inlineData()) {
+            mData = inlineData();
             mCapacity = kInline;
-            std::memcpy(static_cast<void*>(mInline), o.mInline, sizeof(Span) * o.mSize);
+            std::memcpy(static_cast<void*>(mData), o.mData, sizeof(Span) * o.mSize);
         } else {
             mData = o.mData;
             mCapacity = o.mCapacity;
-            o.mData = o.mInline;
+            o.mData = o.inlineData();
             o.mCapacity = kInline;
         }
         mSize = o.mSize;
         o.mSize = 0;
     }
     void release() {
-        if (mData != mInline) delete[] mData;
-        mData = mInline;
+        if (mData != inlineData()) ::operator delete(static_cast<void*>(mData));
+        mData = inlineData();
         mCapacity = kInline;
         mSize = 0;
     }
 
-    Span mInline[kInline];
-    Span* mData = mInline;
+    alignas(Span) unsigned char mInline[kInline * sizeof(Span)];
+    Span* mData = inlineData();
     int mSize = 0;
     int mCapacity = kInline;
 };

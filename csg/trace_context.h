@@ -1,10 +1,15 @@
 /// @file csg/trace_context.h
-/// @brief Per-thread state for tracing: the tolerance in force and the statistics counters.
+/// @brief Per-thread state for tracing: the tolerance in force, the statistics counters and
+/// the reusable span storage.
 #pragma once
 
+#include "csg/span.h"
+
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace kerf {
 
@@ -42,6 +47,42 @@ const char* traceMethodName(TraceMethod method);
 /// The method named by traceMethodName, or nullopt.
 std::optional<TraceMethod> parseTraceMethod(const std::string& name);
 
+/// Span lists reused by nested span computations, in stack order: a Boolean node takes its
+/// temporaries here instead of building fresh lists on every call, so after the first rays a
+/// thread's trace allocates nothing. Copying a context copies none of it (it is scratch).
+class SpanScratch {
+public:
+    SpanScratch() = default;
+    SpanScratch(const SpanScratch&) {}
+    SpanScratch& operator=(const SpanScratch&) { return *this; }
+
+    /// The next free list (contents unspecified); release() gives back the latest one.
+    SpanList& acquire() {
+        if (mUsed == mLists.size()) mLists.push_back(std::make_unique<SpanList>());
+        return *mLists[mUsed++];
+    }
+    void release() { --mUsed; }
+
+private:
+    std::vector<std::unique_ptr<SpanList>> mLists;  ///< stable addresses as the stack grows
+    size_t mUsed = 0;
+};
+
+/// A scratch span list held for one scope.
+class ScratchSpans {
+public:
+    explicit ScratchSpans(SpanScratch& scratch) : mScratch(scratch), mList(scratch.acquire()) {}
+    ~ScratchSpans() { mScratch.release(); }
+    ScratchSpans(const ScratchSpans&) = delete;
+    ScratchSpans& operator=(const ScratchSpans&) = delete;
+    SpanList& operator*() const { return mList; }
+    SpanList* operator->() const { return &mList; }
+
+private:
+    SpanScratch& mScratch;
+    SpanList& mList;
+};
+
 /// What a trace needs besides the ray. One per thread; never shared.
 struct TraceContext {
     /// Hit distances must satisfy |t − t*| ≤ relTolerance·|t*|; spans thinner than
@@ -49,6 +90,7 @@ struct TraceContext {
     double relTolerance = 1e-9;
     TraceMethod method = TraceMethod::Closed;
     TraceStats stats;
+    SpanScratch scratch;
 };
 
 }  // namespace kerf

@@ -43,6 +43,44 @@ bool Bounds3::clipRay(const Ray& ray, double& tmin, double& tmax) const {
     return true;
 }
 
+namespace {
+/// The slab test by division, widened by a few ulps of t at the end: for rays whose
+/// reciprocal overflows or ranges that reach below t = 0, where RayReciprocal's margins do not
+/// hold. The division's rounding (≤ 3 ulps of t) must not cull a box the exact segment meets.
+template <class T>
+bool clipRayWidened(const RayReciprocal& r, const T* lo, const T* hi, double& tmin,
+                    double& tmax) {
+    double t0 = -kInf, t1 = kInf;
+    for (int a = 0; a < 3; ++a) {
+        const double o = r.origin[a], d = r.dir[a];
+        if (d == 0.0) {  // also −0: parallel to the slab, inside it or not (exact)
+            if (o < lo[a] || o > hi[a]) return false;
+            continue;
+        }
+        double s0 = (lo[a] - o) / d, s1 = (hi[a] - o) / d;
+        if (s0 > s1) std::swap(s0, s1);
+        t0 = std::max(t0, s0);
+        t1 = std::min(t1, s1);
+    }
+    constexpr double kWiden = 0x1p-50, kTiny = 0x1p-1074;
+    t0 = t0 * (t0 > 0.0 ? 1.0 - kWiden : 1.0 + kWiden) - kTiny;
+    t1 = t1 * (t1 > 0.0 ? 1.0 + kWiden : 1.0 - kWiden) + kTiny;
+    tmin = std::max(tmin, t0);
+    tmax = std::min(tmax, t1);
+    return tmin <= tmax;
+}
+}  // namespace
+
+bool Bounds3::clipRayDividing(const RayReciprocal& r, const float* lo, const float* hi,
+                           double& tmin, double& tmax) {
+    return clipRayWidened(r, lo, hi, tmin, tmax);
+}
+
+bool Bounds3::clipRayDividing(const RayReciprocal& r, const double* lo, const double* hi,
+                           double& tmin, double& tmax) {
+    return clipRayWidened(r, lo, hi, tmin, tmax);
+}
+
 Affine Affine::inverse() const {
     Affine r;
     r.linear = glm::inverse(linear);
