@@ -97,6 +97,8 @@ private:
     std::optional<Affine> modifierTransform(const Modifier& m);
     /// False, with an error at `m`, when the transforms folded up to `m` are unusable.
     bool checkFolded(const Affine& folded, const Modifier& m);
+    /// makeTransform, or null with an error at `last` when the result's extent overflows.
+    NodePtr transformed(const NodePtr& node, const Affine& map, const Modifier& last);
     std::optional<int> materialIndex(const std::string& name, const SourceLoc& use);
     NodePtr solidByName(const std::string& name, const SourceLoc& use);
 

@@ -313,33 +313,6 @@ NodePtr Lowering::lowerImplicit(const Solid& s) {
     return makeImplicit(Tape::compile(graph, root), *bound);
 }
 
-NodePtr Lowering::applyModifiers(NodePtr node, const Solid& s) {
-    bool ok = node != nullptr;
-    Affine pending;
-    bool hasPending = false;
-    for (const Modifier& m : s.modifiers) {
-        if (m.kind == Modifier::Kind::Material) {
-            const auto index = materialIndex(m.material, m.materialLoc);
-            if (!index || !ok) {
-                ok = false;
-                continue;
-            }
-            if (hasPending) node = makeTransform(node, pending);
-            pending = Affine{};
-            hasPending = false;
-            node = makeMaterial(node, *index);
-        } else if (const auto t = modifierTransform(m)) {
-            pending = t->after(pending);  // later modifiers apply after earlier ones
-            hasPending = true;
-            if (ok && !checkFolded(pending, m)) ok = false;
-        } else {
-            ok = false;
-        }
-    }
-    if (!ok) return nullptr;
-    return hasPending ? makeTransform(node, pending) : node;
-}
-
 namespace {
 
 const char* modifierWord(const Modifier& m) {
@@ -353,6 +326,49 @@ const char* modifierWord(const Modifier& m) {
 }
 
 }  // namespace
+
+NodePtr Lowering::applyModifiers(NodePtr node, const Solid& s) {
+    bool ok = node != nullptr;
+    Affine pending;
+    const Modifier* hasPending = nullptr;  // the last transform modifier folded into pending
+    for (const Modifier& m : s.modifiers) {
+        if (m.kind == Modifier::Kind::Material) {
+            const auto index = materialIndex(m.material, m.materialLoc);
+            if (!index || !ok) {
+                ok = false;
+                continue;
+            }
+            if (hasPending) node = transformed(node, pending, *hasPending);
+            if (!node) return nullptr;
+            pending = Affine{};
+            hasPending = nullptr;
+            node = makeMaterial(node, *index);
+        } else if (const auto t = modifierTransform(m)) {
+            pending = t->after(pending);  // later modifiers apply after earlier ones
+            hasPending = &m;
+            if (ok && !checkFolded(pending, m)) ok = false;
+        } else {
+            ok = false;
+        }
+    }
+    if (!ok) return nullptr;
+    return hasPending ? transformed(node, pending, *hasPending) : node;
+}
+
+NodePtr Lowering::transformed(const NodePtr& node, const Affine& map, const Modifier& last) {
+    // A solid of finite extent moved or scaled past the double range would have hit points
+    // that overflow (a radius 1e300 scaled by 1e10); nested transforms can do this even when
+    // each fold is finite.
+    NodePtr out = makeTransform(node, map);
+    if (node->bounds().finite() && !out->bounds().finite()) {
+        error(last.loc, std::string("the solid's extent is not finite after this ") + modifierWord(last) +
+                            ": it reaches past ±1.8e308",
+              "coordinates must stay within the double range");
+        return nullptr;
+    }
+    return out;
+}
+
 
 bool Lowering::checkFolded(const Affine& folded, const Modifier& m) {
     const std::string word = modifierWord(m);

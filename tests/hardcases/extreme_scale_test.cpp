@@ -122,3 +122,26 @@ TEST_CASE("render: a sphere of radius 1e308 centred at 1e308 gives finite pixels
     for (double t : depths(scene)) hits += t > 0;
     CHECK(hits > kW * kH / 4);
 }
+
+TEST_CASE("render: scaling up to the edge of the double range matches the parameters") {
+    // World radius 1e308 reached by a transform, against the same sphere written directly.
+    const std::string view = "camera { eye <0, 0, -1.7e308> look_at <0, 0, 0> fov 60 }\n"
+                             "light directional { direction <-1, -2, 1> }\n";
+    const Scene a = compileModel(view + "object sphere { radius 1e298 } scale 1e10;\n");
+    const Scene b = compileModel(view + "object sphere { radius 1e308 };\n");
+    const std::vector<double> da = depths(a), db = depths(b);
+    int maskDiffers = 0, hits = 0;
+    double worst = 0;
+    for (size_t k = 0; k < da.size(); ++k) {
+        maskDiffers += (da[k] > 0) != (db[k] > 0);
+        if (da[k] > 0 && db[k] > 0) {
+            ++hits;
+            worst = std::max(worst, std::fabs(da[k] - db[k]) / db[k]);
+        }
+    }
+    CHECK(hits > kW * kH / 4);
+    CHECK(maskDiffers == 0);
+    CHECK(worst <= kDepthBound);
+    CHECK(nonFinitePixels(a) == 0);
+    CHECK(nonFinitePixels(b) == 0);
+}

@@ -50,6 +50,16 @@ TEST_CASE("Lowering: a folded transform that is not finite or singular is an err
     requireOk("object sphere {} scale <1e-300, 1, 1e300> rotate <10, 20, 30>;");
 }
 
+TEST_CASE("Lowering: a transformed solid whose extent passes the double range is an error") {
+    requireOneError("object sphere { radius 1e300 } scale 1e10;", 1, 32, "the solid's extent is not finite after this scale");
+    // Nested transforms: each fold is finite, together they are not.
+    requireOneError("object union { sphere {} scale 1e200 } scale 1e200;", 1, 40, "extent is not finite after this scale");
+    requireOneError("object sphere { radius 1e306 } translate <1.79e308, 0, 0> material default;", 1, 32,
+                    "extent is not finite after this translate");
+    requireOk("object sphere { radius 1e298 } scale 1e10;");
+    requireOk("object halfspace { normal <0, 1, 0> } scale 1e300;");  // unbounded to begin with
+}
+
 TEST_CASE("Lowering: a matrix is singular relative to its own scale") {
     requireOk("object sphere {} matrix [1e300 0 0 0  0 1e300 0 0  0 0 1e300 0];");
     requireOk("object sphere {} matrix [1e-300 0 0 0  0 1e-300 0 0  0 0 1e-300 0];");
