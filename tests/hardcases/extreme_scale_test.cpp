@@ -1,7 +1,6 @@
 // Scale invariance over the double range, through the language and the renderer: a primitive
-// (sphere, box, cylinder, cone, torus)
-// written with `scale s` renders as the same primitive written with parameters scaled by s,
-// and as the unit scene, for s = 1e±50 … 1e±300 (camera scaled too); every pixel is finite.
+// (sphere, box, cylinder, cone, torus) written with `scale s` renders as the same primitive
+// written with parameters scaled by s, and as the unit scene, for s = 1e±50 … 1e±300 (camera scaled too); every pixel is finite.
 // The depths are compared in double (nearestHit on each pixel's centre ray): the float film
 // cannot hold 5e300. docs/robustness.md ("Values") states the bound.
 #include "lang/compile.h"

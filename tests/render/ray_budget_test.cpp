@@ -1,7 +1,7 @@
 /// @file tests/render/ray_budget_test.cpp
 /// @brief The work per camera ray is bounded whatever the weights (render/shading.h): the
 /// budget's split, a glass whose weights exceed the language's policy (built through the API,
-/// which does not check them) finishing with a bounded ray count, and a mirror box that
+/// which does not check them) in a mirror box finishing with a bounded ray count, and a mirror box that
 /// the language accepts (reflect 1, max_depth 1000) tracing every bounce uncut.
 #include "lang/compile.h"
 #include "render/shading.h"
@@ -29,26 +29,31 @@ TEST_CASE("splitRayBudget: in proportion to the weights, never more than the bud
     }
 }
 
-TEST_CASE("render: a glass with transmit 1 reflect 1 at depth 1000 finishes within the budget") {
+TEST_CASE("render: a glass with transmit 1 reflect 1 in a mirror box at depth 1000 finishes within the budget") {
+    // Every hit on the ball sends two rays on and the mirror walls bring both back, so the
+    // tree would hold ~2^1000 rays (the earlier code never finished); the budget bounds it.
     Scene scene;
     Material glass = blackMaterial();
     glass.transmit = 1;
     glass.reflect = 1;  // past the policy: each hit passes on more light than arrives
     glass.ior = 1.5;
+    Material mirror = blackMaterial();
+    mirror.reflect = 1;
     addObject(scene, makeSphere(Vec3(0.0), 1.0), addMaterial(scene, glass));
+    addObject(scene,
+              makeBoolean(BoolOp::Difference, {makeBox(Vec3(-4.0), Vec3(4.0)), makeBox(Vec3(-3.0), Vec3(3.0))}),
+              addMaterial(scene, mirror));
     Light light;
-    light.position = Vec3(0, 5, -5);
+    light.position = Vec3(1.5, 2.5, -2);
     light.power = 100;
     scene.lights.push_back(light);
-    scene.camera.eye = Vec3(0, 0, -3);
+    scene.camera.eye = Vec3(0.2, 0.3, -2.5);
     scene.settings.maxDepth = 1000;
     const RenderResult r = render(scene, smallImage(2, 2));
     const uint64_t secondary = r.stats.reflectionRays + r.stats.refractionRays;
     INFO("secondary rays " << secondary << " for " << r.stats.cameraRays << " camera rays");
     CHECK(secondary <= r.stats.cameraRays * kRayBudget);
-    // Each hit passes on ~2× the light it gets, so each level halves the budget a ray gets:
-    // the tree stops about log2(kRayBudget) bounces deep instead of growing as 2^depth.
-    CHECK(r.stats.reflectionRays > r.stats.cameraRays * 8);
+    CHECK(secondary > r.stats.cameraRays * 1000);  // it did branch: more than one chain per ray
     for (int j = 0; j < 2; ++j)
         for (int i = 0; i < 2; ++i)
             for (int k = 0; k < 3; ++k) CHECK(std::isfinite(r.color.at(i, j, k)));
