@@ -8,6 +8,7 @@
 #include "csg/solids.h"
 
 #include <algorithm>
+#include <climits>
 
 namespace kerf {
 namespace {
@@ -99,7 +100,9 @@ private:
     void rescaledSpans(const Vec3& f, const Vec3& dl, const CapSlab& slab, SpanList& out) const {
         const int kp = std::ilogb(std::max({std::fabs(f.x), std::fabs(f.y), std::fabs(f.z), mR1, mFrame.length}));
         const int kd = std::ilogb(std::max({std::fabs(dl.x), std::fabs(dl.y), std::fabs(dl.z)}));
-        if (kp == FP_ILOGBNAN || kd == FP_ILOGBNAN || kd == FP_ILOGB0) return;
+        // An infinite origin or direction (ilogb gives INT_MAX) meets nothing, and kp − kd
+        // would overflow an int.
+        if (kp == FP_ILOGBNAN || kd == FP_ILOGBNAN || kd == FP_ILOGB0 || kp == INT_MAX || kd == INT_MAX) return;
         const Vec3 fs(std::ldexp(f.x, -kp), std::ldexp(f.y, -kp), std::ldexp(f.z, -kp));
         const Vec3 ds(std::ldexp(dl.x, -kd), std::ldexp(dl.y, -kd), std::ldexp(dl.z, -kd));
         conicSpans(fs, ds, std::ldexp(mR1, -kp), std::ldexp(mFrame.length, -kp), glm::dot(ds, ds), kp - kd,
