@@ -1,5 +1,5 @@
 // Scale invariance over the double range, through the language and the renderer: a primitive
-// (sphere, box, cylinder, cone, torus) written with `scale s` renders as the same primitive
+// (sphere, box, cylinder, cone, torus, halfspace) written with `scale s` renders as the same primitive
 // written with parameters scaled by s, and as the unit scene, for s = 1e±50 … 1e±300 (camera scaled too); every pixel is finite.
 // The depths are compared in double (nearestHit on each pixel's centre ray): the float film
 // cannot hold 5e300. docs/robustness.md ("Values") states the bound.
@@ -37,6 +37,7 @@ std::string byScale(const std::string& solid, const std::string& s) {
     if (solid == "box") return "object box { min <-1, -0.5, -1> max <1, 0.5, 0.8> } rotate <0, 20, 0> scale " + s + ";\n";
     if (solid == "cone") return "object cone { from <0, -1, 0> to <0.3, 1, 0> radius1 1 radius2 0.2 } scale " + s + ";\n";
     if (solid == "torus") return "object torus { major 1 minor 0.4 } rotate <60, 0, 0> scale " + s + ";\n";
+    if (solid == "halfspace") return "object halfspace { normal <0.1, 1, 0.3> offset -0.3 } scale " + s + ";\n";
     return "object cylinder { from <0, -1, 0> to <0.3, 1, 0> radius 0.6 } scale " + s + ";\n";
 }
 
@@ -49,6 +50,7 @@ std::string byParameters(const std::string& solid, const std::string& s) {
         return "object cone { from <0, -" + s + ", 0> to <0.3 * " + s + ", " + s + ", 0> radius1 " + s +
                " radius2 0.2 * " + s + " };\n";
     if (solid == "torus") return "object torus { major " + s + " minor 0.4 * " + s + " } rotate <60, 0, 0>;\n";
+    if (solid == "halfspace") return "object halfspace { normal <0.1, 1, 0.3> offset -0.3 * " + s + " };\n";
     return "object cylinder { from <0, -" + s + ", 0> to <0.3 * " + s + ", " + s + ", 0> radius 0.6 * " + s + " };\n";
 }
 
@@ -89,7 +91,7 @@ int nonFinitePixels(const Scene& scene) {
 }  // namespace
 
 TEST_CASE("render: scale s and parameters scaled by s agree from 1e-300 to 1e300") {
-    for (const std::string solid : {"sphere", "box", "cylinder", "cone", "torus"}) {
+    for (const std::string solid : {"sphere", "box", "cylinder", "cone", "torus", "halfspace"}) {
         const std::vector<double> unit = depths(compileModel(camera("1") + byParameters(solid, "1")));
         int unitHits = 0;
         for (double t : unit) unitHits += t > 0;
