@@ -27,4 +27,9 @@ double relativeDeterminant(const Mat3& m);
 /// The first problem of `a` in the order of AffineStatus, or Ok.
 AffineStatus checkAffine(const Affine& a);
 
+/// Rows and columns of m scaled by powers of two (exact) so each one's largest entry is in
+/// [1, 2): m = 2^rowExp · n · 2^colExp (diagonal scalings) for the n returned. Rows first or
+/// columns first, whichever leaves n better conditioned. Affine::inverse inverts n.
+Mat3 equilibrate(const Mat3& m, int rowExp[3], int colExp[3]);
+
 }  // namespace kerf

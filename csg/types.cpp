@@ -1,6 +1,8 @@
 // Bounds and affine maps: the small geometric helpers behind every module.
 #include "csg/types.h"
 
+#include "csg/affine_check.h"
+
 #include <algorithm>
 
 namespace kerf {
@@ -42,10 +44,6 @@ bool Bounds3::clipRay(const Ray& ray, double& tmin, double& tmax) const {
     }
     return true;
 }
-
-// In csg/affine_check.cpp: scales rows, then columns, by powers of two so each one's largest
-// entry is in [1, 2); linear = 2^rowExp · n · 2^colExp (diagonal scalings), exactly.
-Mat3 equilibrate(const Mat3& m, int rowExp[3], int colExp[3]);
 
 Affine Affine::inverse() const {
     // glm::inverse forms the determinant, a product of three entries: it overflows for a map
