@@ -45,9 +45,15 @@ struct AxialFrame {
     double length;
 
     AxialFrame(const Vec3& a, const Vec3& b) : base(a) {
+        // b − a scaled by a power of two (exact) first: its squared length would overflow for
+        // axes longer than 1e154 and underflow below 1e-154. Same bits in between.
         const Vec3 d = b - a;
-        length = glm::length(d);
-        axis = d / length;
+        const double big = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+        const int e = big > 0 && std::isfinite(big) ? std::ilogb(big) : 0;
+        const Vec3 ds(std::ldexp(d.x, -e), std::ldexp(d.y, -e), std::ldexp(d.z, -e));
+        const double scaledLength = glm::length(ds);
+        length = std::ldexp(scaledLength, e);
+        axis = ds / scaledLength;
         orthonormalFrame(axis, e1, e2);
     }
 

@@ -8,6 +8,7 @@
 #include "csg/solids.h"
 
 #include <algorithm>
+#include <climits>
 
 namespace kerf {
 namespace {
@@ -83,12 +84,41 @@ private:
         Vec3 f, dl;
         CapSlab slab;
         if (!mFrame.localRay(ray, f, dl, slab)) return;
+        const double m = std::max({std::fabs(f.x), std::fabs(f.y), std::fabs(f.z), mR1, mFrame.length});
+        const double dm = std::max({std::fabs(dl.x), std::fabs(dl.y), std::fabs(dl.z)});
+        if (m > kSquareSafe || m < 1.0 / kSquareSafe || dm > kSquareSafe || dm < 1.0 / kSquareSafe)
+            return rescaledSpans(f, dl, slab, out);
+        conicSpans(f, dl, mR1, mFrame.length, glm::dot(ray.dir, ray.dir), 0, slab, out);
+    }
+
+    /// Squares of numbers between 1/kSquareSafe and kSquareSafe neither overflow nor lose
+    /// precision to underflow; outside it the ray is rescaled first (as the sphere does).
+    static constexpr double kSquareSafe = 0x1p250;
+
+    /// Cones and rays at extreme scales (1e±300): lengths (origin, r1, axis length) scaled by
+    /// one power of two, the direction by another; the slope is a ratio and stays. Exact.
+    void rescaledSpans(const Vec3& f, const Vec3& dl, const CapSlab& slab, SpanList& out) const {
+        const int kp = std::ilogb(std::max({std::fabs(f.x), std::fabs(f.y), std::fabs(f.z), mR1, mFrame.length}));
+        const int kd = std::ilogb(std::max({std::fabs(dl.x), std::fabs(dl.y), std::fabs(dl.z)}));
+        // An infinite origin or direction (ilogb gives INT_MAX) meets nothing, and kp − kd
+        // would overflow an int.
+        if (kp == FP_ILOGBNAN || kd == FP_ILOGBNAN || kd == FP_ILOGB0 || kp == INT_MAX || kd == INT_MAX) return;
+        const Vec3 fs(std::ldexp(f.x, -kp), std::ldexp(f.y, -kp), std::ldexp(f.z, -kp));
+        const Vec3 ds(std::ldexp(dl.x, -kd), std::ldexp(dl.y, -kd), std::ldexp(dl.z, -kd));
+        conicSpans(fs, ds, std::ldexp(mR1, -kp), std::ldexp(mFrame.length, -kp), glm::dot(ds, ds), kp - kd,
+                   slab, out);
+    }
+
+    /// The frustum along the local ray f + t·dl (|dl|² = dir2), radius r1 at the base and axis
+    /// length `length` in the units of f; roots are scaled by 2^tExp (exact) to the slab's t.
+    void conicSpans(const Vec3& f, const Vec3& dl, double r1, double length, double dir2, int tExp,
+                    const CapSlab& slab, SpanList& out) const {
         const double fx = f.x, fy = f.y, fz = f.z, dx = dl.x, dy = dl.y, dz = dl.z;
         const double tin = slab.tin, tout = slab.tout;
 
         // The quadric along the ray: A·t² + 2B·t + C ≤ 0 inside either nappe, with
         // w0 + w1·t the signed cone radius at the ray's axial position.
-        const double w0 = mR1 + mSlope * fz, w1 = mSlope * dz;
+        const double w0 = r1 + mSlope * fz, w1 = mSlope * dz;
         const double a = dx * dx + dy * dy - w1 * w1;
         const double h = fx * dx + fy * dy - w0 * w1;
         const double c = fx * fx + fy * fy - w0 * w0;
@@ -96,9 +126,9 @@ private:
         // when the origin slides along the ray: evaluate it from the ray's point nearest the
         // middle of the axis, where the terms are small (Haines et al.'s idea for the sphere).
         const double ts =
-            -(fx * dx + fy * dy + (fz - 0.5 * mFrame.length) * dz) / glm::dot(ray.dir, ray.dir);
+            -(fx * dx + fy * dy + (fz - 0.5 * length) * dz) / dir2;
         const double gx = fx + ts * dx, gy = fy + ts * dy, gz = fz + ts * dz;
-        const double v0 = mR1 + mSlope * gz;
+        const double v0 = r1 + mSlope * gz;
         const double ex = v0 * dx - w1 * gx, ey = v0 * dy - w1 * gy, cross = gx * dy - gy * dx;
         const double disc = ex * ex + ey * ey - cross * cross;
 
@@ -107,18 +137,18 @@ private:
         if (a > 0.0) {  // one nappe crossed: inside between the roots
             if (!(disc > 0.0)) return;
             const QuadraticRoots r = solveQuadraticHalf(a, h, c, std::sqrt(disc));
-            pieces[count++] = {r.t0, r.t1, true, true};
+            pieces[count++] = {std::ldexp(r.t0, tExp), std::ldexp(r.t1, tExp), true, true};
         } else if (a < 0.0) {  // steeper than the slant: inside outside the roots
             if (std::isnan(disc)) return;
             if (!(disc > 0.0)) {
                 pieces[count++] = {-kInf, kInf, false, false};  // inside everywhere (touching)
             } else {
                 const QuadraticRoots r = solveQuadraticHalf(a, h, c, std::sqrt(disc));
-                pieces[count++] = {-kInf, r.t0, false, true};
-                pieces[count++] = {r.t1, kInf, true, false};
+                pieces[count++] = {-kInf, std::ldexp(r.t0, tExp), false, true};
+                pieces[count++] = {std::ldexp(r.t1, tExp), kInf, true, false};
             }
         } else if (h != 0.0) {  // parallel to the slant: 2B·t + C ≤ 0 is linear
-            const double t = -c / (2.0 * h);
+            const double t = std::ldexp(-c / (2.0 * h), tExp);
             pieces[count++] = h > 0.0 ? Piece{-kInf, t, false, true} : Piece{t, kInf, true, false};
         } else {
             if (!(c <= 0.0)) return;
@@ -135,8 +165,8 @@ private:
             const double lo = sideIn ? p.lo : tin, hi = sideOut ? p.hi : tout;
             if (!(lo < hi)) continue;
             if (!found)
-                bin = sideIn ? sideBoundary(lo, fx, fy, dx, dy) : capBoundary(lo, slab.capIn);
-            bout = sideOut ? sideBoundary(hi, fx, fy, dx, dy) : capBoundary(hi, slab.capOut);
+                bin = sideIn ? sideBoundary(lo, tExp, fx, fy, dx, dy) : capBoundary(lo, slab.capIn);
+            bout = sideOut ? sideBoundary(hi, tExp, fx, fy, dx, dy) : capBoundary(hi, slab.capOut);
             found = true;
         }
         if (found) out.push_back({bin, bout});
@@ -148,8 +178,10 @@ private:
     }
 
     /// Outward normal of |p⊥| − (r1 + k·z) at the ray's point t: p̂⊥ − k·u, scaled by |p⊥|.
-    Boundary sideBoundary(double t, double fx, double fy, double dx, double dy) const {
-        return boundary(t, sideNormal(fx + t * dx, fy + t * dy));
+    /// t is the slab's; f and d are in the units where t·2^-tExp is the parameter.
+    Boundary sideBoundary(double t, int tExp, double fx, double fy, double dx, double dy) const {
+        const double ts = std::ldexp(t, -tExp);
+        return boundary(t, sideNormal(fx + ts * dx, fy + ts * dy));
     }
     /// p̂⊥ − k·u scaled by |p⊥|, at local (px, py) across the axis (any common scale).
     Vec3 sideNormal(double px, double py) const {

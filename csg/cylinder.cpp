@@ -7,6 +7,7 @@
 #include "csg/solids.h"
 
 #include <algorithm>
+#include <climits>
 
 namespace kerf {
 namespace {
@@ -70,14 +71,41 @@ private:
         Vec3 f, dl;
         CapSlab slab;
         if (!mFrame.localRay(ray, f, dl, slab)) return;
-        const double fx = f.x, fy = f.y, dx = dl.x, dy = dl.y;
-        double tin = slab.tin, tout = slab.tout;
+        const double m = std::max({std::fabs(f.x), std::fabs(f.y), mRadius});
+        const double dm = std::max({std::fabs(dl.x), std::fabs(dl.y), std::fabs(dl.z)});
+        if (m > kSquareSafe || m < 1.0 / kSquareSafe || dm > kSquareSafe || dm < 1.0 / kSquareSafe)
+            return rescaledSpans(f, dl, slab, out);
+        sideSpans(f.x, f.y, dl.x, dl.y, mRadius2, glm::dot(ray.dir, ray.dir), 0, slab, out);
+    }
 
+    /// Squares of numbers between 1/kSquareSafe and kSquareSafe neither overflow nor lose
+    /// precision to underflow; outside it the ray is rescaled first (as the sphere does).
+    static constexpr double kSquareSafe = 0x1p250;
+
+    /// Cylinders and rays at extreme scales (1e±300): the across-axis origin and the radius
+    /// scaled by one power of two, the direction by another; both exact, roots scaled back.
+    void rescaledSpans(const Vec3& f, const Vec3& dl, const CapSlab& slab, SpanList& out) const {
+        const int kp = std::ilogb(std::max({std::fabs(f.x), std::fabs(f.y), mRadius}));
+        const int kd = std::ilogb(std::max({std::fabs(dl.x), std::fabs(dl.y), std::fabs(dl.z)}));
+        // An infinite origin or direction (ilogb gives INT_MAX) meets nothing, and kp − kd
+        // would overflow an int.
+        if (kp == FP_ILOGBNAN || kd == FP_ILOGBNAN || kd == FP_ILOGB0 || kp == INT_MAX || kd == INT_MAX) return;
+        const Vec3 ds(std::ldexp(dl.x, -kd), std::ldexp(dl.y, -kd), std::ldexp(dl.z, -kd));
+        const double rs = std::ldexp(mRadius, -kp);
+        sideSpans(std::ldexp(f.x, -kp), std::ldexp(f.y, -kp), ds.x, ds.y, rs * rs, glm::dot(ds, ds), kp - kd,
+                  slab, out);
+    }
+
+    /// The side |(fx, fy) + t·(dx, dy)|² ≤ r2 clipped to the slab; dir2 is |d|² in the same
+    /// units as dx, dy. Roots are scaled by 2^tExp (exact) back to the slab's units.
+    void sideSpans(double fx, double fy, double dx, double dy, double r2, double dir2, int tExp,
+                   const CapSlab& slab, SpanList& out) const {
+        double tin = slab.tin, tout = slab.tout;
         // Across the axis: |(fx, fy) + t·(dx, dy)|² ≤ r².
         const double a = dx * dx + dy * dy;
         const double h = fx * dx + fy * dy;
-        if (a <= kParallel2 * glm::dot(ray.dir, ray.dir)) {
-            if (fx * fx + fy * fy > mRadius2) return;
+        if (a <= kParallel2 * dir2) {
+            if (fx * fx + fy * fy > r2) return;
             if (!(tin < tout)) return;
             out.push_back({capBoundary(tin, slab.capIn), capBoundary(tout, slab.capOut)});
             return;
@@ -87,15 +115,16 @@ private:
         const double invA = 1.0 / a;
         const double tc = -h * invA;
         const double lx = fx + tc * dx, ly = fy + tc * dy;
-        const double disc = a * (mRadius2 - (lx * lx + ly * ly));
+        const double disc = a * (r2 - (lx * lx + ly * ly));
         if (!(disc > 0.0)) return;
         const double sq = std::sqrt(disc);
-        const double c = fx * fx + fy * fy - mRadius2;
+        const double c = fx * fx + fy * fy - r2;
         const QuadraticRoots r = solveQuadraticHalf(a, h, c, sq);
+        const double t0 = std::ldexp(r.t0, tExp), t1 = std::ldexp(r.t1, tExp);
         const double w = sq * invA;  // the hits lie at l ∓ w·(dx, dy) across the axis
-        const bool sideIn = r.t0 > tin, sideOut = r.t1 < tout;
-        if (sideIn) tin = r.t0;
-        if (sideOut) tout = r.t1;
+        const bool sideIn = t0 > tin, sideOut = t1 < tout;
+        if (sideIn) tin = t0;
+        if (sideOut) tout = t1;
         if (!(tin < tout)) return;
         const Boundary bin = sideIn ? boundary(tin, mFrame.across(lx - w * dx, ly - w * dy))
                                     : capBoundary(tin, slab.capIn);

@@ -5,6 +5,7 @@
 #include "csg/solids.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace kerf {
 namespace {
@@ -51,7 +52,18 @@ inline double dot2(const Vec3& n, const Vec3& v, double extra) {
     const double sum = x + y + z + extra;
     const double magnitude = std::fabs(x) + std::fabs(y) + std::fabs(z) + std::fabs(extra);
     if (std::fabs(sum) >= 0.5 * magnitude) return sum;
-    return dot2Slow(n, v, extra);
+    // The Veltkamp split overflows above ~1e292 and the error terms underflow below ~1e-290:
+    // outside [2^-300, 2^300] the factors are scaled by powers of two first (exact, and the
+    // error-free transformations commute with it), as for a half-space at 1e±300.
+    const double bigN = std::max({std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)});
+    const double bigV = std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z), std::fabs(extra)});
+    const auto safe = [](double m) { return m == 0.0 || (m >= 0x1p-300 && m <= 0x1p300); };
+    if ((safe(bigN) && safe(bigV)) || !std::isfinite(bigN) || !std::isfinite(bigV))
+        return dot2Slow(n, v, extra);
+    const int kn = bigN > 0.0 ? std::ilogb(bigN) : 0, kv = bigV > 0.0 ? std::ilogb(bigV) : 0;
+    const Vec3 ns(std::ldexp(n.x, -kn), std::ldexp(n.y, -kn), std::ldexp(n.z, -kn));
+    const Vec3 vs(std::ldexp(v.x, -kv), std::ldexp(v.y, -kv), std::ldexp(v.z, -kv));
+    return std::ldexp(dot2Slow(ns, vs, std::ldexp(extra, -kn - kv)), kn + kv);
 }
 
 class HalfSpace final : public ClosedFormPrimitive<HalfSpace> {

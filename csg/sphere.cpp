@@ -5,6 +5,7 @@
 #include "csg/solids.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 
 namespace kerf {
@@ -89,7 +90,9 @@ private:
     void rescaledSpans(const Vec3& f, const Vec3& d, SpanList& out) const {
         const int kp = std::ilogb(std::max({std::fabs(f.x), std::fabs(f.y), std::fabs(f.z), mRadius}));
         const int kd = std::ilogb(std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)}));
-        if (kp == FP_ILOGBNAN || kd == FP_ILOGBNAN || kd == FP_ILOGB0) return;
+        // An infinite origin or direction (ilogb gives INT_MAX) meets nothing, and kp − kd
+        // would overflow an int.
+        if (kp == FP_ILOGBNAN || kd == FP_ILOGBNAN || kd == FP_ILOGB0 || kp == INT_MAX || kd == INT_MAX) return;
         const Vec3 fs(std::ldexp(f.x, -kp), std::ldexp(f.y, -kp), std::ldexp(f.z, -kp));
         const Vec3 ds(std::ldexp(d.x, -kd), std::ldexp(d.y, -kd), std::ldexp(d.z, -kd));
         const double rs = std::ldexp(mRadius, -kp);

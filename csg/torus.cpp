@@ -8,6 +8,7 @@
 // h(p) = (ρ − R)² + (y − r)(y + r) (ρ = √(x² + z²)), which has the same sign as the quartic because
 // the quartic is h times (ρ + R)² + y² − r² > 0.
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "csg/comparison_methods.h"
@@ -143,17 +144,28 @@ private:
     /// False when the ray misses the bounds within the range (or has no direction).
     bool setUp(const Ray& ray, double tmin, double tmax, Setup& st) const {
         st.t0 = tmin, st.t1 = tmax;
-        const double dd = glm::dot(ray.dir, ray.dir);
+        // A direction whose squared length would overflow or underflow (a torus scaled by
+        // 1e±300 sees rays of length 1e∓300) is scaled by a power of two first: d = 2^kd·dir,
+        // exact, and tc and len are scaled back. Same bits as before for other rays.
+        Vec3 dir = ray.dir;
+        int kd = 0;
+        if (const double dd0 = glm::dot(dir, dir); !(dd0 >= 0x1p-500 && dd0 <= 0x1p500)) {
+            const double big = std::max({std::fabs(dir.x), std::fabs(dir.y), std::fabs(dir.z)});
+            if (!(big > 0.0) || !std::isfinite(big)) return false;
+            kd = std::ilogb(big);
+            dir = Vec3(std::ldexp(dir.x, -kd), std::ldexp(dir.y, -kd), std::ldexp(dir.z, -kd));
+        }
+        const double dd = glm::dot(dir, dir);
         if (!(dd > 0.0) || !mBounds.clipRay(ray, st.t0, st.t1)) return false;
         st.t0Clip = st.t0 == tmin;
         st.t1Clip = st.t1 == tmax;
 
         // Normalise: lengths by S, the parameter by arc length from the point nearest the centre.
-        const double scale = mR + mr, inv = 1.0 / scale, len = std::sqrt(dd);
-        const double tc = -glm::dot(ray.origin, ray.dir) / dd;
+        const double scale = mR + mr, inv = 1.0 / scale, len = std::ldexp(std::sqrt(dd), kd);
+        const double tc = std::ldexp(-glm::dot(ray.origin, dir) / dd, -kd);
         TorusRay& q = st.q;
         q.p0 = (ray.origin + tc * ray.dir) * inv;
-        q.u = ray.dir / len;
+        q.u = dir / std::sqrt(dd);
         q.R = mR * inv;
         q.rm = mr * inv;
         q.r2 = q.rm * q.rm;

@@ -1,6 +1,8 @@
 // Bounds and affine maps: the small geometric helpers behind every module.
 #include "csg/types.h"
 
+#include "csg/affine_check.h"
+
 #include <algorithm>
 
 namespace kerf {
@@ -82,8 +84,16 @@ bool Bounds3::clipRayDividing(const RayReciprocal& r, const double* lo, const do
 }
 
 Affine Affine::inverse() const {
+    // glm::inverse forms the determinant, a product of three entries: it overflows for a map
+    // scaled by 1e103 and underflows for 1e-103. The equilibrated matrix n has entries near 1,
+    // and linear⁻¹ = 2^-colExp · n⁻¹ · 2^-rowExp. Power-of-two scaling is exact, so in the
+    // normal range this gives the same bits as inverting `linear` directly.
+    int rowExp[3], colExp[3];
+    const Mat3 ni = glm::inverse(equilibrate(linear, rowExp, colExp));
     Affine r;
-    r.linear = glm::inverse(linear);
+    for (int c = 0; c < 3; ++c)
+        for (int row = 0; row < 3; ++row)
+            r.linear[c][row] = std::ldexp(ni[c][row], -colExp[row] - rowExp[c]);
     r.offset = -(r.linear * offset);
     return r;
 }

@@ -95,11 +95,16 @@ private:
     std::optional<Bounds3> boxBounds(const Solid& s, const char* what);
     NodePtr applyModifiers(NodePtr node, const Solid& s);
     std::optional<Affine> modifierTransform(const Modifier& m);
+    /// False, with an error at `m`, when the transforms folded up to `m` are unusable.
+    bool checkFolded(const Affine& folded, const Modifier& m);
+    /// makeTransform, or null with an error at `last` when the result's extent overflows.
+    NodePtr transformed(const NodePtr& node, const Affine& map, const Modifier& last);
     std::optional<int> materialIndex(const std::string& name, const SourceLoc& use);
     NodePtr solidByName(const std::string& name, const SourceLoc& use);
 
     // lower_scene.cpp
     void lowerMaterial(const Statement& s, Material& m);
+    void checkEnergy(const PropertyBlock& b, const Material& m);
     void lowerCamera(const Statement& s, CameraDesc& camera);
     std::optional<Light> lowerLight(const Statement& s);
     void lowerMist(const Statement& s, Mist& mist);

@@ -2,6 +2,7 @@
 // lights, mist, background and render settings, each validated where it is read.
 #include "lang/lower.h"
 
+#include "csg/normalize.h"
 #include "lang/names.h"
 
 #include <cmath>
@@ -11,6 +12,7 @@ namespace kerf {
 namespace {
 
 bool nonNegative(const Vec3& v) { return v.x >= 0 && v.y >= 0 && v.z >= 0; }
+bool finiteVector(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 }  // namespace
 
@@ -48,6 +50,36 @@ void Lowering::lowerMaterial(const Statement& s, Material& m) {
     colour("emit", m.emit);
     if (readNumber(b, "ior", m.ior) && !(m.ior > 0))
         error(b.find("ior")->valueLoc(), "material ior must be positive, got " + formatNumber(m.ior));
+    checkEnergy(b, m);
+}
+
+/// Reflection and refraction may pass on at most the light that arrives: each weight in
+/// [0, 1], their sum ≤ 1, and a transmissive colour (which tints the refracted light) ≤ 1.
+/// Weights above that made each bounce brighter: +inf pixels, and trees of rays that grow
+/// with depth instead of dying out (docs/robustness.md, "Values").
+void Lowering::checkEnergy(const PropertyBlock& b, const Material& m) {
+    bool ok = true;
+    for (const auto& [name, w] : {std::pair<const char*, double>{"reflect", m.reflect}, {"transmit", m.transmit}}) {
+        if (b.find(name) && w > 1) {
+            error(b.find(name)->valueLoc(), std::string("material ") + name + " must be at most 1, got " +
+                                                formatNumber(w),
+                  "reflect and transmit are the fractions of light mirrored and refracted");
+            ok = false;
+        }
+    }
+    if (ok && m.reflect >= 0 && m.transmit >= 0 && m.reflect + m.transmit > 1) {
+        const SourceLoc& r = b.find("reflect")->valueLoc();
+        const SourceLoc& t = b.find("transmit")->valueLoc();
+        const bool reflectFirst = r.line < t.line || (r.line == t.line && r.col < t.col);
+        const Property* later = reflectFirst ? b.find("transmit") : b.find("reflect");
+        error(later->valueLoc(), "material reflect + transmit must be at most 1, got " +
+                                     formatNumber(m.reflect) + " + " + formatNumber(m.transmit),
+              "together they are the fraction of light passed on; lower one of them");
+    }
+    if (m.transmit > 0 && b.find("color") && (m.color.x > 1 || m.color.y > 1 || m.color.z > 1))
+        error(b.find("color")->valueLoc(), "the color of a material that transmits must not exceed 1, got " +
+                                               formatVector(m.color),
+              "its color tints the refracted light, which cannot come out brighter than it went in");
 }
 
 void Lowering::lowerCamera(const Statement& s, CameraDesc& camera) {
@@ -68,17 +100,30 @@ void Lowering::lowerCamera(const Statement& s, CameraDesc& camera) {
         error(at("fov"), "camera fov must be between 0 and 180 degrees (exclusive), got " +
                              formatNumber(camera.fovDegrees),
               "fov is the vertical field of view in degrees, e.g. 40");
+    for (const char* name : {"eye", "look_at", "up"}) {
+        const Vec3& v = name[0] == 'e' ? camera.eye : name[0] == 'l' ? camera.lookAt : camera.up;
+        if (!finiteVector(v)) {
+            error(at(name), std::string("camera ") + name + " is not finite, got " + formatVector(v));
+            return;
+        }
+    }
     const Vec3 view = camera.lookAt - camera.eye;
     if (view == Vec3(0.0)) {
         error(at("look_at"), "camera eye and look_at are the same point " + formatVector(camera.eye),
               "look_at is the point the camera looks toward");
         return;
     }
+    if (!finiteVector(view)) {
+        error(at("look_at"), "camera look_at - eye is not finite (" + formatVector(view) + "): they are too far apart",
+              "eye and look_at must differ by less than about 1.8e308 on each axis");
+        return;
+    }
     if (camera.up == Vec3(0.0)) {
         error(at("up"), "camera up must not be zero", "up is usually <0, 1, 0>");
         return;
     }
-    const double sine = glm::length(glm::cross(glm::normalize(view), glm::normalize(camera.up)));
+    // Both unit vectors are taken overflow-safe, so the test is relative whatever the scale.
+    const double sine = glm::length(glm::cross(normalizeSafe(view), normalizeSafe(camera.up)));
     if (!(sine > 1e-9))
         error(at("up"), "camera up " + formatVector(camera.up) + " is parallel to the view direction " +
                             formatVector(view),

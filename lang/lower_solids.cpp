@@ -3,6 +3,7 @@
 // modifiers wrap the result (consecutive transforms folded into one Affine).
 #include "lang/lower.h"
 
+#include "csg/affine_check.h"
 #include "csg/solids.h"
 #include "csg/tape.h"
 #include "lang/names.h"
@@ -19,10 +20,33 @@ const std::vector<std::string> kPrimitiveKinds = {"sphere", "box", "cylinder", "
                                                   "implicit"};
 const std::vector<std::string> kBooleanKinds = {"union", "intersection", "difference", "xor"};
 
-/// True when |b − a| is zero or below what doubles can resolve at this distance from the origin.
+bool finiteVector(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+double maxAbs(const Vec3& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
+
+/// True when |b − a| is zero or below what doubles can resolve at this distance from the
+/// origin. All three are scaled by one power of two first (exact), so the lengths neither
+/// overflow (|a| ~ 1e308) nor underflow; b − a itself must be finite.
 bool degenerateSegment(const Vec3& a, const Vec3& b) {
-    const double length = glm::length(b - a);
-    return length == 0.0 || length <= 1e-12 * std::max(glm::length(a), glm::length(b));
+    const double big = std::max(maxAbs(a), maxAbs(b));
+    if (big == 0.0) return true;
+    const int e = std::ilogb(big);
+    const auto scaled = [e](const Vec3& v) { return Vec3(std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)); };
+    const double length = glm::length(scaled(b - a));
+    return length == 0.0 || length <= 1e-12 * std::max(glm::length(scaled(a)), glm::length(scaled(b)));
+}
+
+/// The error for an axis `from`–`to` that is not usable, or empty: an endpoint or their
+/// difference not finite, or no length.
+std::string axisProblem(const char* what, const Vec3& from, const Vec3& to) {
+    for (const auto& [name, v] : {std::pair<const char*, Vec3>{"from", from}, {"to", to}})
+        if (!finiteVector(v)) return std::string(what) + " " + name + " is not finite, got " + formatVector(v);
+    if (!finiteVector(to - from))
+        return std::string(what) + " axis to - from is not finite: from " + formatVector(from) + " and to " +
+               formatVector(to) + " are more than about 1.8e308 apart";
+    if (degenerateSegment(from, to))
+        return std::string(what) + " has zero length: from and to are the same point " + formatVector(from);
+    return "";
 }
 
 }  // namespace
@@ -175,8 +199,8 @@ NodePtr Lowering::lowerCylinder(const Solid& s) {
         error(b.find("radius")->valueLoc(), "cylinder radius must be positive, got " + formatNumber(radius));
         return nullptr;
     }
-    if (degenerateSegment(from, to)) {
-        error(s.loc, "cylinder has zero length: from and to are the same point " + formatVector(from));
+    if (const std::string problem = axisProblem("cylinder", from, to); !problem.empty()) {
+        error(s.loc, problem);
         return nullptr;
     }
     return makeCylinder(from, to, radius);
@@ -209,8 +233,8 @@ NodePtr Lowering::lowerCone(const Solid& s) {
         error(s.loc, "cone with both radii 0 has no volume");
         return nullptr;
     }
-    if (degenerateSegment(from, to)) {
-        error(s.loc, "cone has zero length: from and to are the same point " + formatVector(from));
+    if (const std::string problem = axisProblem("cone", from, to); !problem.empty()) {
+        error(s.loc, problem);
         return nullptr;
     }
     return makeCone(from, to, r1, r2);
@@ -289,10 +313,24 @@ NodePtr Lowering::lowerImplicit(const Solid& s) {
     return makeImplicit(Tape::compile(graph, root), *bound);
 }
 
+namespace {
+
+const char* modifierWord(const Modifier& m) {
+    switch (m.kind) {
+        case Modifier::Kind::Translate: return "translate";
+        case Modifier::Kind::Rotate: return "rotate";
+        case Modifier::Kind::Scale: return "scale";
+        case Modifier::Kind::Matrix: return "matrix";
+        default: return "modifier";
+    }
+}
+
+}  // namespace
+
 NodePtr Lowering::applyModifiers(NodePtr node, const Solid& s) {
     bool ok = node != nullptr;
     Affine pending;
-    bool hasPending = false;
+    const Modifier* hasPending = nullptr;  // the last transform modifier folded into pending
     for (const Modifier& m : s.modifiers) {
         if (m.kind == Modifier::Kind::Material) {
             const auto index = materialIndex(m.material, m.materialLoc);
@@ -300,19 +338,57 @@ NodePtr Lowering::applyModifiers(NodePtr node, const Solid& s) {
                 ok = false;
                 continue;
             }
-            if (hasPending) node = makeTransform(node, pending);
+            if (hasPending) node = transformed(node, pending, *hasPending);
+            if (!node) return nullptr;
             pending = Affine{};
-            hasPending = false;
+            hasPending = nullptr;
             node = makeMaterial(node, *index);
         } else if (const auto t = modifierTransform(m)) {
             pending = t->after(pending);  // later modifiers apply after earlier ones
-            hasPending = true;
+            hasPending = &m;
+            if (ok && !checkFolded(pending, m)) ok = false;
         } else {
             ok = false;
         }
     }
     if (!ok) return nullptr;
-    return hasPending ? makeTransform(node, pending) : node;
+    return hasPending ? transformed(node, pending, *hasPending) : node;
+}
+
+NodePtr Lowering::transformed(const NodePtr& node, const Affine& map, const Modifier& last) {
+    // A solid of finite extent moved or scaled past the double range would have hit points
+    // that overflow (a radius 1e300 scaled by 1e10); nested transforms can do this even when
+    // each fold is finite.
+    NodePtr out = makeTransform(node, map);
+    if (node->bounds().finite() && !out->bounds().finite()) {
+        error(last.loc, std::string("the solid's extent is not finite after this ") + modifierWord(last) +
+                            ": it reaches past ±1.8e308",
+              "coordinates must stay within the double range");
+        return nullptr;
+    }
+    return out;
+}
+
+
+bool Lowering::checkFolded(const Affine& folded, const Modifier& m) {
+    const std::string word = modifierWord(m);
+    switch (checkAffine(folded)) {
+        case AffineStatus::Ok: return true;
+        case AffineStatus::NotFinite:
+            error(m.loc, "transform is not finite after this " + word + ": the solid's transforms together overflow",
+                  "coordinates and scales must stay within about ±1.8e308");
+            break;
+        case AffineStatus::Singular:
+            error(m.loc, "transform is singular after this " + word + ": it flattens the solid",
+                  "the transforms together scale some direction to 0");
+            break;
+        case AffineStatus::InverseNotFinite:
+            error(m.loc, "transform is singular after this " + word +
+                             ": it shrinks the solid by more than doubles can undo (its inverse is not finite)",
+                  "scales together must stay above about 1e-308");
+            break;
+    }
+    return false;
 }
 
 std::optional<Affine> Lowering::modifierTransform(const Modifier& m) {
@@ -332,12 +408,16 @@ std::optional<Affine> Lowering::modifierTransform(const Modifier& m) {
         }
         if (!ok) return std::nullopt;
         const Affine a = Affine::fromRowMajor(entries);
-        // Singular relative to the rows' lengths (Hadamard's bound), so scale does not matter.
-        const Vec3 r0(entries[0], entries[1], entries[2]), r1(entries[4], entries[5], entries[6]),
-            r2(entries[8], entries[9], entries[10]);
-        const double det = glm::dot(r0, glm::cross(r1, r2));
-        if (!(std::fabs(det) > 1e-12 * glm::length(r0) * glm::length(r1) * glm::length(r2))) {
-            error(m.loc, "matrix is singular (determinant " + formatNumber(det) + "): it flattens the solid");
+        // Judged relative to the matrix's own scale and without overflow (csg/affine_check.h),
+        // so a matrix scaled by 1e300 or 1e-300 is not singular; the fold checks the rest.
+        const double rel = relativeDeterminant(a.linear);
+        if (std::isnan(rel)) {
+            error(m.loc, "matrix is not finite: it has an entry that is inf or NaN");
+            return std::nullopt;
+        }
+        if (!(rel > kSingularRelativeDeterminant)) {
+            error(m.loc, "matrix is singular (relative determinant " + formatNumber(rel) + "): it flattens the solid",
+                  "its rows (or columns) are nearly linearly dependent");
             return std::nullopt;
         }
         return a;

@@ -2,17 +2,20 @@
 /// @brief Pinhole camera rays.
 #include "render/camera.h"
 
+#include "csg/normalize.h"
+
 #include <glm/gtc/constants.hpp>
 
 namespace kerf {
 
 Camera::Camera(const CameraDesc& desc, int width, int height)
     : mEye(desc.eye),
-      mForward(glm::normalize(desc.lookAt - desc.eye)),
+      mForward(normalizeSafe(desc.lookAt - desc.eye)),
       mTanHalfFov(std::tan(0.5 * desc.fovDegrees * glm::pi<double>() / 180.0)),
       mWidth(width),
       mHeight(height) {
-    mRight = glm::normalize(glm::cross(mForward, desc.up));
+    // Overflow-safe: eye and look_at may be 1e300 apart, and up may be as long.
+    mRight = normalizeSafe(glm::cross(mForward, normalizeSafe(desc.up)));
     mUp = glm::cross(mRight, mForward);
 }
 

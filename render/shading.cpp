@@ -34,6 +34,19 @@ double schlick(double n1, double n2, double cosine) {
 
 }  // namespace
 
+RayBudgetSplit splitRayBudget(uint64_t budget, double reflectWeight, double refractWeight) {
+    const bool reflect = reflectWeight >= kMinRayWeight;  // false for NaN too
+    const bool refract = refractWeight >= kMinRayWeight;
+    if (!reflect && !refract) return {0, 0};
+    if (!refract) return {budget, 0};
+    if (!reflect) return {0, budget};
+    // In proportion to the weights; inf or NaN ratios (weights past the policy) split evenly.
+    double share = reflectWeight / (reflectWeight + refractWeight);
+    if (!(share >= 0.0 && share <= 1.0)) share = 0.5;
+    const uint64_t r = std::min(budget, uint64_t(std::floor(double(budget) * share)));
+    return {r, budget - r};
+}
+
 WhittedIntegrator::WhittedIntegrator(const Scene& scene, const SceneGeometry& geometry,
                                      int maxDepth)
     : mScene(scene), mGeometry(geometry), mMaxDepth(std::max(0, maxDepth)) {
@@ -59,11 +72,11 @@ Vec3 WhittedIntegrator::applyMist(const Vec3& c, double distance) const {
 Vec3 WhittedIntegrator::traceCamera(const Ray& ray, ShadingContext& ctx,
                                     std::optional<Hit>* firstHit) const {
     ++ctx.rays.camera;
-    return trace(ray, ray.origin, 0, Vec3(1.0), ctx, firstHit);
+    return trace(ray, ray.origin, 0, Vec3(1.0), kRayBudget, ctx, firstHit);
 }
 
 Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int depth,
-                              const Vec3& weight, ShadingContext& ctx,
+                              const Vec3& weight, uint64_t budget, ShadingContext& ctx,
                               std::optional<Hit>* firstHit) const {
     const std::optional<Hit> hit = mGeometry.nearestHit(ray, 0.0, kInf, ctx.trace);
     if (firstHit) *firstHit = hit;
@@ -79,7 +92,7 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
     Vec3 c = m.emit + (1.0 - m.transmit) * m.ambient * m.color;
     c += directLight(m, p, n, d, err, ctx);
 
-    if (depth < mMaxDepth) {
+    if (depth < mMaxDepth && budget > 0) {
         const double cosIn = -glm::dot(d, n);  // ≥ 0 with the face-forward normal
         Vec3 reflectWeight(m.reflect);
         Vec3 refractWeight(0.0);
@@ -100,16 +113,18 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
             }
         }
         const Vec3 wReflect = weight * reflectWeight;
-        if (maxComponent(wReflect) >= kMinRayWeight) {
+        const Vec3 wRefract = weight * refractWeight;
+        const RayBudgetSplit split =
+            splitRayBudget(budget, maxComponent(wReflect), maxComponent(wRefract));
+        if (split.reflect > 0) {
             ++ctx.rays.reflection;
             const Ray r{offsetRayOrigin(p, n, err), d + 2.0 * cosIn * n};
-            c += reflectWeight * trace(r, p, depth + 1, wReflect, ctx, nullptr);
+            c += reflectWeight * trace(r, p, depth + 1, wReflect, split.reflect - 1, ctx, nullptr);
         }
-        const Vec3 wRefract = weight * refractWeight;
-        if (maxComponent(wRefract) >= kMinRayWeight) {
+        if (split.refract > 0) {
             ++ctx.rays.refraction;
             const Ray r{offsetRayOrigin(p, -n, err), refractDir};
-            c += refractWeight * trace(r, p, depth + 1, wRefract, ctx, nullptr);
+            c += refractWeight * trace(r, p, depth + 1, wRefract, split.refract - 1, ctx, nullptr);
         }
     }
 

@@ -20,7 +20,13 @@
 ///  - mist: every segment of length d blends c → mist + (c − mist)·exp(−d/distance); a miss
 ///    takes the mist colour.
 ///  - recursion stops at maxDepth bounces or when a ray's weight is below kMinRayWeight in
-///    every channel.
+///    every channel, and a camera ray's whole tree holds at most kRayBudget secondary rays:
+///    each hit shares what is left of its budget between its reflected and refracted rays in
+///    proportion to their weights (splitRayBudget), so the work per camera ray is bounded
+///    whatever the weights and depth, and the cut is deterministic. With weights the language
+///    accepts (reflect + transmit ≤ 1, color ≤ 1) a ray of weight w gets a budget of about
+///    w·kRayBudget ≥ 65, so the budget never cuts a ray of weight ≥ kMinRayWeight in scenes
+///    of ordinary depth.
 #pragma once
 
 #include "scene/scene.h"
@@ -49,6 +55,20 @@ struct ShadingContext {
 /// Secondary rays whose weight is below this in every channel are not traced.
 constexpr double kMinRayWeight = 1e-3;
 
+/// The most secondary (reflection and refraction) rays one camera ray may lead to.
+constexpr uint64_t kRayBudget = uint64_t(1) << 16;
+
+/// How a hit's remaining budget is shared: each child ray costs one and passes on the rest.
+struct RayBudgetSplit {
+    uint64_t reflect = 0;  ///< 0: not traced
+    uint64_t refract = 0;
+};
+
+/// Splits `budget` between the reflected and refracted rays of path weights (largest
+/// channel) reflectWeight and refractWeight, in proportion to them; a ray below
+/// kMinRayWeight gets nothing. The two parts never sum to more than `budget`.
+RayBudgetSplit splitRayBudget(uint64_t budget, double reflectWeight, double refractWeight);
+
 class WhittedIntegrator {
 public:
     /// The scene and geometry must outlive the integrator. maxDepth bounds the number of
@@ -62,9 +82,10 @@ public:
 
 private:
     /// Radiance arriving along `ray`, whose segment starts at `segmentStart` (the un-offset
-    /// point the ray left, for lengths), after `depth` bounces, with path weight `weight`.
+    /// point the ray left, for lengths), after `depth` bounces, with path weight `weight`,
+    /// allowed to spawn at most `budget` secondary rays below it.
     Vec3 trace(const Ray& ray, const Vec3& segmentStart, int depth, const Vec3& weight,
-               ShadingContext& ctx, std::optional<Hit>* firstHit) const;
+               uint64_t budget, ShadingContext& ctx, std::optional<Hit>* firstHit) const;
     /// Direct light at p (normal n toward the viewer, unit view direction d).
     Vec3 directLight(const Material& m, const Vec3& p, const Vec3& n, const Vec3& d,
                      double errorBound, ShadingContext& ctx) const;
