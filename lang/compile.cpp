@@ -61,6 +61,13 @@ private:
             return;
         }
         if (mRead.count(id)) return;  // each file is read once
+        // The include recursion is as deep as the chain of files: bound it before going deeper.
+        if (mStack.size() >= static_cast<size_t>(kMaxIncludeDepth)) {
+            mSink.error(s.loc, "includes nested too deeply (more than " + std::to_string(kMaxIncludeDepth) +
+                                   " files, from " + mStack.front().second + ")",
+                        "include the parts from one file instead of from each other");
+            return;
+        }
         std::string why;
         auto bytes = readFileBytes(name, why);
         if (!bytes) {
