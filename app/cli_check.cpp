@@ -3,6 +3,7 @@
 
 #include "app/exit_codes.h"
 #include "app/model_loader.h"
+#include "csg/format.h"
 #include "csg/tree_stats.h"
 
 #include <CLI/CLI.hpp>
@@ -18,9 +19,7 @@ namespace {
 
 std::string number(double v) {
     if (std::isinf(v)) return v < 0 ? "-unbounded" : "unbounded";
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.6g", v);
-    return buffer;
+    return formatDouble("%.6g", v);
 }
 
 /// One axis of a box: "[lo, hi]", "unbounded" when both ends are infinite, and "unbounded"

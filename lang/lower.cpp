@@ -1,6 +1,7 @@
 // Lowering, part 1: the definitions (lets, solids, materials) and the statement loop.
 #include "lang/lower.h"
 
+#include "csg/format.h"
 #include "lang/definition_order.h"
 
 #include <algorithm>
@@ -8,11 +9,7 @@
 
 namespace kerf {
 
-std::string formatNumber(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
+std::string formatNumber(double v) { return formatDouble("%g", v); }
 
 std::string formatVector(const Vec3& v) {
     return "<" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + ">";
