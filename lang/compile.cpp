@@ -34,7 +34,8 @@ public:
         mRead.insert(id);
         mSink.rememberSource(source.name, source.text);
         if (!checkSourceText(source, mSink)) return;
-        Program program = parse(tokenize(source, mSink), mSink);
+        TokenStream tokens(source, mSink);
+        Program program = parse(tokens, mSink);
         mStack.push_back({id, *source.name});
         for (Statement& s : program.statements) {
             if (s.kind == Statement::Kind::Include)

@@ -15,6 +15,8 @@ namespace kerf {
 /// Parses the tokens of one file (the last must be End). Syntax errors go to `sink`; the
 /// statements that parsed are returned either way.
 Program parse(const std::vector<Token>& tokens, DiagnosticSink& sink);
+/// The same, lexing as it goes and keeping only the current statement's tokens.
+Program parse(TokenStream& tokens, DiagnosticSink& sink);
 
 /// True for words that cannot name a let, solid or material (keywords of the language).
 bool isReservedWord(const std::string& word);
