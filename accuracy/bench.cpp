@@ -3,6 +3,7 @@
 #include "accuracy/bench.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
@@ -14,7 +15,8 @@ namespace {
 std::string formatProgress(const AccuracyRow& row) {
     char line[200];
     std::snprintf(line, sizeof line, "  %-13s tol %-9.3g %9.1f ns/ray  max rel %.2e  mismatches %d",
-                  traceMethodName(row.method), row.tolerance, row.m.nsPerRay, row.m.maxRelError,
+                  traceMethodName(row.method), row.tolerance, row.m.nsPerRay,
+                  std::isnan(row.m.maxRelError) ? std::fabs(row.m.maxRelError) : row.m.maxRelError,
                   row.m.hitMissMismatches);
     return line;
 }

@@ -2,6 +2,8 @@
 /// @brief CSV and Markdown tables of the accuracy benchmark.
 #include "accuracy/report.h"
 
+#include "csg/format.h"
+
 #include "io/csv.h"
 
 #include <cstdio>
@@ -9,11 +11,7 @@
 namespace kerf {
 namespace {
 
-std::string format(const char* pattern, double value) {
-    char text[64];
-    std::snprintf(text, sizeof text, pattern, value);
-    return text;
-}
+std::string format(const char* pattern, double value) { return formatDouble(pattern, value); }
 
 std::string sci(double value) { return format("%.2e", value); }
 

@@ -3,6 +3,8 @@
 
 #include "app/exit_codes.h"
 #include "app/model_loader.h"
+#include "csg/format.h"
+#include "csg/tree_stats.h"
 
 #include <CLI/CLI.hpp>
 
@@ -17,9 +19,7 @@ namespace {
 
 std::string number(double v) {
     if (std::isinf(v)) return v < 0 ? "-unbounded" : "unbounded";
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.6g", v);
-    return buffer;
+    return formatDouble("%.6g", v);
 }
 
 /// One axis of a box: "[lo, hi]", "unbounded" when both ends are infinite, and "unbounded"
@@ -45,14 +45,11 @@ CLI::App* addCheckCommand(CLI::App& parent, CheckCommandLine& line) {
 }
 
 void printSceneSummary(const std::string& model, const Scene& scene, std::ostream& out) {
-    long primitives = 0;
-    int depth = 0;
+    // One memoised walk over all objects: shared subtrees are visited once, however often
+    // they are used (a subtree doubled 31 times used to take 2^31 visits and overflow an int).
+    const TreeStats trees = treeStats(scene.objects);
     Bounds3 bounds;  // empty until the first object
-    for (const NodePtr& object : scene.objects) {
-        primitives += object->primitiveCount();
-        depth = std::max(depth, object->depth());
-        bounds = Bounds3::hull(bounds, object->bounds());
-    }
+    for (const NodePtr& object : scene.objects) bounds = Bounds3::hull(bounds, object->bounds());
     // materials[0] is the built-in default; the others are the model's own.
     const size_t declaredMaterials = scene.materials.empty() ? 0 : scene.materials.size() - 1;
     const RenderSettings& r = scene.settings;
@@ -61,8 +58,10 @@ void printSceneSummary(const std::string& model, const Scene& scene, std::ostrea
     out << "  objects:     " << scene.objects.size() << "\n";
     out << "  materials:   " << declaredMaterials << " (plus the default)\n";
     out << "  lights:      " << scene.lights.size() << "\n";
-    out << "  primitives:  " << primitives << "\n";
-    out << "  csg depth:   " << depth << "\n";
+    // Instanced first: what a ray may meet, as the tree would be written out in full.
+    out << "  primitives:  " << (trees.instancesSaturated ? "more than " : "") << trees.instances << " ("
+        << trees.primitives << " unique)\n";
+    out << "  csg depth:   " << trees.depth << "\n";
     out << "  bounds:      " << describeBounds(bounds) << "\n";
     out << "  mist:        " << (scene.mist.enabled ? "yes" : "no") << "\n";
     out << "  render:      " << r.width << " x " << r.height << ", spp " << r.spp

@@ -8,6 +8,7 @@
 #include "app/stats_report.h"
 #include "io/image.h"
 #include "render/render.h"
+#include "scene/limits.h"
 
 #include <CLI/CLI.hpp>
 
@@ -36,11 +37,22 @@ void requireAtLeast(const CLI::Option* option, int value, int minimum) {
     }
 }
 
+/// The same upper limits as a model's render { } block (scene/limits.h).
+void requireAtMost(const CLI::Option* option, int value, int maximum) {
+    if (option->count() > 0 && value > maximum) {
+        throw UsageError(option->get_name() + " must be at most " + std::to_string(maximum) +
+                         " (got " + std::to_string(value) + ")");
+    }
+}
+
 /// Range checks of the numeric flags; each message names its flag.
 void checkNumbers(const RenderCommandLine& line) {
     requireAtLeast(line.widthOption, line.width, 1);
     requireAtLeast(line.heightOption, line.height, 1);
     requireAtLeast(line.sppOption, line.spp, 1);
+    requireAtMost(line.widthOption, line.width, kMaxImageSide);
+    requireAtMost(line.heightOption, line.height, kMaxImageSide);
+    requireAtMost(line.sppOption, line.spp, kMaxSamplesPerPixel);
     requireAtLeast(line.threadsOption, line.threads, 0);
     if (line.toleranceOption->count() > 0 && !(line.tolerance > 0 && line.tolerance < 1)) {
         throw UsageError("--tolerance must be between 0 and 1, exclusive (got " +

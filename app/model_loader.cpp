@@ -3,27 +3,25 @@
 
 #include "lang/compile.h"
 #include "lang/diagnostic.h"
+#include "lang/source.h"
 
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <ostream>
-#include <system_error>
+
+#include <unistd.h>
 
 namespace kerf::app {
 
 namespace {
 
 /// Why `path` cannot be read as a model, or an empty string when it can. Checked here so the
-/// message names the file even before the compiler sees it.
+/// message names the file even before the compiler sees it; by stat() alone, so a FIFO
+/// or a device is refused without being opened.
 std::string unreadableReason(const std::string& path) {
-    std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    if (ec || !std::filesystem::exists(status)) return "no such file";
-    if (std::filesystem::is_directory(status)) return "it is a directory";
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::strerror(errno);
+    std::string reason = sourceFileProblem(path);
+    if (!reason.empty()) return reason;
+    if (::access(path.c_str(), R_OK) != 0) return std::strerror(errno);
     return {};
 }
 

@@ -1,6 +1,8 @@
 /// @file app/stats_report.cpp
 #include "app/stats_report.h"
 
+#include "csg/format.h"
+
 #include <cinttypes>
 #include <cstdio>
 #include <ostream>
@@ -18,18 +20,13 @@ std::string line(const char* label, const std::string& value) {
 
 std::string count(uint64_t n) { return std::to_string(n); }
 
-std::string seconds(double s) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.3f s", s);
-    return buffer;
-}
+std::string seconds(double s) { return formatDouble("%.3f s", s); }
 
 }  // namespace
 
 void printStats(const RunReport& report, std::ostream& out) {
     const RenderStats& s = report.render;
     const uint64_t rays = s.cameraRays + s.shadowRays + s.reflectionRays + s.refractionRays;
-    char buffer[64];
 
     out << "kerf statistics\n";
     out << line("image", std::to_string(report.width) + " x " + std::to_string(report.height));
@@ -39,8 +36,7 @@ void printStats(const RunReport& report, std::ostream& out) {
         samples += " (requested " + std::to_string(report.spp) + ")";
     out << line("samples per pixel", samples);
     out << line("threads", std::to_string(report.threads));
-    std::snprintf(buffer, sizeof buffer, "%.3g (relative)", s.tolerance);
-    out << line("tolerance", buffer);
+    out << line("tolerance", formatDouble("%.3g (relative)", s.tolerance));
     out << line("camera rays", count(s.cameraRays));
     out << line("shadow rays", count(s.shadowRays));
     out << line("reflection rays", count(s.reflectionRays));
@@ -57,8 +53,7 @@ void printStats(const RunReport& report, std::ostream& out) {
     const double total = report.secondsCompile + s.secondsSetup + s.secondsTrace + report.secondsWrite;
     out << line("total", seconds(total));
     if (s.secondsTrace > 0) {
-        std::snprintf(buffer, sizeof buffer, "%.4g", double(rays) / s.secondsTrace);
-        out << line("rays per second", buffer);
+        out << line("rays per second", formatDouble("%.4g", double(rays) / s.secondsTrace));
     }
 }
 

@@ -75,18 +75,6 @@ public:
         return combinedValue<Interval>([&](const Node& c) { return c.valueInterval(box); });
     }
 
-    int primitiveCount() const override {
-        int n = 0;
-        for (const NodePtr& c : mChildren) n += c->primitiveCount();
-        return n;
-    }
-
-    int depth() const override {
-        int d = 0;
-        for (const NodePtr& c : mChildren) d = std::max(d, c->depth());
-        return d + 1;
-    }
-
     NodeKind kind() const override { return booleanKind(mOp); }
     NodeParams params() const override { return BooleanParams{mOp}; }
     NodeSpan children() const override { return {mChildren.data(), mChildren.size()}; }

@@ -51,10 +51,11 @@ public:
     /// accuracy is measured against.
     virtual long double valueExtended(const LVec3& p) const = 0;
 
-    /// For `kerf check`: how many primitive leaves (shared subtrees counted per use) and how
-    /// deep the tree is (a leaf has depth 1).
-    virtual int primitiveCount() const = 0;
-    virtual int depth() const = 0;
+    /// How many primitive leaves (shared subtrees counted per use) and how deep the tree is
+    /// (a leaf has depth 1; every node counts): treeStats (csg/tree_stats.h), one memoised
+    /// walk, for one tree. Summaries of many trees call treeStats once for all.
+    int64_t primitiveCount() const;
+    int depth() const;
 
     // The open tree: enough for code outside csg/ to walk, print and rebuild trees.
 

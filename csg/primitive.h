@@ -16,8 +16,6 @@ uint32_t nextPrimitiveId();
 class Primitive : public Node {
 public:
     uint32_t id() const { return mId; }
-    int primitiveCount() const override { return 1; }
-    int depth() const override { return 1; }
 
     /// The implicit form f over the coordinates x, y, z of this primitive's space, built into
     /// g: the solid is {f ≤ 0} ∩ bounds(). It is value() itself, except for an implicit, whose

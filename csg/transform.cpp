@@ -65,8 +65,6 @@ public:
         return mChild->valueInterval({out[0], out[1], out[2]});
     }
 
-    int primitiveCount() const override { return mChild->primitiveCount(); }
-    int depth() const override { return mChild->depth(); }
 
     NodeKind kind() const override { return NodeKind::Transform; }
     NodeParams params() const override { return TransformParams{mWorldFromLocal}; }
@@ -111,8 +109,6 @@ public:
     Interval valueInterval(const IntervalVec3& box) const override {
         return mChild->valueInterval(box);
     }
-    int primitiveCount() const override { return mChild->primitiveCount(); }
-    int depth() const override { return mChild->depth(); }
 
     NodeKind kind() const override { return NodeKind::Material; }
     NodeParams params() const override { return MaterialParams{mMaterial}; }

@@ -1,6 +1,7 @@
 /// @file io/csv.cpp
 #include "io/csv.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace kerf {
@@ -45,6 +46,7 @@ std::string CsvTable::quote(const std::string& field) {
 std::string CsvTable::number(const char* pattern, double value) {
     // snprintf follows LC_NUMERIC, which kerf never changes from "C".
     char text[64];
+    if (std::isnan(value)) value = std::fabs(value);  // "nan", never glibc's "-nan"
     std::snprintf(text, sizeof text, pattern, value);
     return text;
 }

@@ -2,6 +2,7 @@
 /// @brief SVG text, written as it is added.
 #include "io/svg.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace kerf {
@@ -13,6 +14,7 @@ SvgWriter::SvgWriter(double width, double height) {
 
 std::string SvgWriter::number(double value) {
     char text[32];
+    if (std::isnan(value)) value = std::fabs(value);  // "nan", never glibc's "-nan"
     std::snprintf(text, sizeof text, "%.2f", value);
     return text;
 }
@@ -66,7 +68,7 @@ void SvgWriter::line(double x1, double y1, double x2, double y2, const SvgAttrib
 
 void SvgWriter::circle(double cx, double cy, double r, const SvgAttributes& extra) {
     char radius[32];
-    std::snprintf(radius, sizeof radius, "%g", r);
+    std::snprintf(radius, sizeof radius, "%g", std::isnan(r) ? std::fabs(r) : r);
     SvgAttributes attributes = {{"cx", number(cx)}, {"cy", number(cy)}, {"r", radius}};
     attributes.insert(attributes.end(), extra.begin(), extra.end());
     element("circle", attributes);

@@ -5,6 +5,7 @@
 
 #include "lang/diagnostic.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,7 +17,7 @@ using ExprPtr = std::unique_ptr<Expr>;
 
 /// An arithmetic expression.
 struct Expr {
-    enum class Kind {
+    enum class Kind : uint8_t {
         Number,  ///< `number`
         Vector,  ///< `<args[0], args[1], args[2]>`
         Name,    ///< `name`: a let, pi, or x/y/z inside an implicit function
@@ -24,14 +25,15 @@ struct Expr {
         Binary,  ///< `args[0] op args[1]`, op one of + - * / ^
         Call,    ///< `name(args…)`
     };
+    // The small fields first: a model holds millions of these (memory per byte of model).
     Kind kind = Kind::Number;
+    char op = 0;
+    int depth = 1;  ///< height of this subtree, bounded by the parser
+    double number = 0.0;
     SourceLoc loc;    ///< the literal, the name, the operator, or the function name
     SourceLoc start;  ///< the first token of the whole expression
-    double number = 0.0;
     std::string name;
-    char op = 0;
     std::vector<ExprPtr> args;
-    int depth = 1;  ///< height of this subtree, bounded by the parser
 };
 
 struct Solid;

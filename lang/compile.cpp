@@ -34,7 +34,8 @@ public:
         mRead.insert(id);
         mSink.rememberSource(source.name, source.text);
         if (!checkSourceText(source, mSink)) return;
-        Program program = parse(tokenize(source, mSink), mSink);
+        TokenStream tokens(source, mSink);
+        Program program = parse(tokens, mSink);
         mStack.push_back({id, *source.name});
         for (Statement& s : program.statements) {
             if (s.kind == Statement::Kind::Include)
@@ -61,6 +62,13 @@ private:
             return;
         }
         if (mRead.count(id)) return;  // each file is read once
+        // The include recursion is as deep as the chain of files: bound it before going deeper.
+        if (mStack.size() >= static_cast<size_t>(kMaxIncludeDepth)) {
+            mSink.error(s.loc, "includes nested too deeply (more than " + std::to_string(kMaxIncludeDepth) +
+                                   " files, from " + mStack.front().second + ")",
+                        "include the parts from one file instead of from each other");
+            return;
+        }
         std::string why;
         auto bytes = readFileBytes(name, why);
         if (!bytes) {

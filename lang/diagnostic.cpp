@@ -79,6 +79,31 @@ std::string caretLine(const std::string& lineText, int col) {
     return caret + '^';
 }
 
+/// Source lines longer than this many bytes are shown clipped around the column…
+constexpr size_t kMaxShownLine = 160;
+/// …to this many bytes either side of it, each clipped side marked with an ellipsis.
+constexpr size_t kShownAround = 60;
+
+bool isContinuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
+
+/// A long line cut to a window around byte column `col` (1-based), on UTF-8 character
+/// boundaries; `col` becomes the column of the same character in the window. A 4 MB line
+/// used to be echoed whole.
+std::string clipAround(const std::string& line, int& col) {
+    if (line.size() <= kMaxShownLine) return line;
+    const size_t at = std::min(static_cast<size_t>(std::max(col, 1) - 1), line.size());
+    size_t start = at > kShownAround ? at - kShownAround : 0;
+    while (start < at && isContinuation(line[start])) ++start;
+    size_t end = std::min(line.size(), at + kShownAround);
+    while (end < line.size() && isContinuation(line[end])) ++end;
+    const std::string ellipsis = "\u2026";  // one cell wide: caretLine skips its continuation bytes
+    std::string shown = start > 0 ? ellipsis : std::string();
+    col = static_cast<int>(at - start + shown.size()) + 1;
+    shown += line.substr(start, end - start);
+    if (end < line.size()) shown += ellipsis;
+    return shown;
+}
+
 }  // namespace
 
 std::string DiagnosticSink::format() const {
@@ -92,8 +117,11 @@ std::string DiagnosticSink::format() const {
             for (const auto& [file, text] : mSources) {
                 if (!file || !text || *file != *d.loc.file) continue;
                 std::string lineText;
-                if (sourceLine(*text, d.loc.line, lineText))
-                    out += lineText + '\n' + caretLine(lineText, d.loc.col) + '\n';
+                if (sourceLine(*text, d.loc.line, lineText)) {
+                    int col = d.loc.col;
+                    lineText = clipAround(lineText, col);
+                    out += lineText + '\n' + caretLine(lineText, col) + '\n';
+                }
                 break;
             }
         }

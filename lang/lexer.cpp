@@ -74,38 +74,44 @@ double parseNumber(const std::string& text) {
     return magnitude > 0 ? std::numeric_limits<double>::infinity() : 0.0;
 }
 
+}  // namespace
+
 class Lexer {
 public:
     Lexer(const SourceText& source, DiagnosticSink& sink)
-        : mSource(source), mText(*source.text), mSink(sink) {}
-
-    std::vector<Token> run() {
-        std::vector<Token> tokens;
+        : mSource(source), mText(*source.text), mSink(sink) {
         if (mText.compare(0, 3, "\xEF\xBB\xBF") == 0) advance(3);  // UTF-8 byte order mark
-        while (true) {
+    }
+
+    /// The next token; after the last one, End (again and again).
+    Token next() {
+        if (!mDone) {
             const SourceLoc commentStart = loc();
             skipBlanksAndComments();
             if (mCommentError) {  // the rest of the file was an unterminated comment
+                mDone = true;
+                mAny = true;
                 Token bad;
                 bad.kind = TokenKind::Error;
                 bad.loc = commentStart;
-                tokens.push_back(bad);
-                break;
+                return bad;
             }
-            if (mPos >= mText.size()) break;
-            Token t;
-            t.firstOnLine = !mLineHasToken;
-            if (!lexToken(t)) t.kind = TokenKind::Error;
-            mLineHasToken = true;
-            mLastEnd = loc();
-            tokens.push_back(std::move(t));
+            if (mPos < mText.size()) {
+                Token t;
+                t.firstOnLine = !mLineHasToken;
+                if (!lexToken(t)) t.kind = TokenKind::Error;
+                mLineHasToken = true;
+                mLastEnd = loc();
+                mAny = true;
+                return t;
+            }
+            mDone = true;
         }
         Token end;
         end.kind = TokenKind::End;
-        end.loc = tokens.empty() ? loc() : mLastEnd;
+        end.loc = mAny ? mLastEnd : loc();
         end.firstOnLine = true;
-        tokens.push_back(end);
-        return tokens;
+        return end;
     }
 
 private:
@@ -269,13 +275,22 @@ private:
     int mCol = 1;
     bool mLineHasToken = false;
     bool mCommentError = false;  // an unterminated comment ran to the end: leave an Error token
+    bool mDone = false;          // at the end: only End from now on
+    bool mAny = false;           // a token other than End was returned
     SourceLoc mLastEnd;
 };
 
-}  // namespace
+TokenStream::TokenStream(const SourceText& source, DiagnosticSink& sink)
+    : mLexer(std::make_unique<Lexer>(source, sink)) {}
+TokenStream::~TokenStream() = default;
+Token TokenStream::next() { return mLexer->next(); }
 
 std::vector<Token> tokenize(const SourceText& source, DiagnosticSink& sink) {
-    return Lexer(source, sink).run();
+    TokenStream stream(source, sink);
+    std::vector<Token> tokens;
+    do tokens.push_back(stream.next());
+    while (tokens.back().kind != TokenKind::End);
+    return tokens;
 }
 
 }  // namespace kerf

@@ -1,15 +1,15 @@
 // Lowering, part 1: the definitions (lets, solids, materials) and the statement loop.
 #include "lang/lower.h"
 
+#include "csg/format.h"
+#include "lang/definition_order.h"
+
+#include <algorithm>
 #include <cstdio>
 
 namespace kerf {
 
-std::string formatNumber(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
+std::string formatNumber(double v) { return formatDouble("%g", v); }
 
 std::string formatVector(const Vec3& v) {
     return "<" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + ">";
@@ -43,6 +43,7 @@ std::optional<Scene> Lowering::lower(const Program& program) {
     const int errorsBefore = mSink.errorCount();
     Scene scene;
     collectDefinitions(program, scene);
+    lowerDefinitions();
     for (const Statement& s : program.statements) lowerStatement(s, scene);
     if (mSink.errorCount() > errorsBefore) return std::nullopt;
     return scene;
@@ -78,6 +79,34 @@ void Lowering::collectDefinitions(const Program& program, Scene& scene) {
                 break;
             default: break;
         }
+    }
+}
+
+void Lowering::lowerDefinitions() {
+    std::map<std::string, const Statement*> lets, solids;
+    for (const auto& [name, entry] : mLets) lets[name] = entry.def;
+    for (const auto& [name, entry] : mSolids) solids[name] = entry.def;
+    const auto state = [&](const Statement* def) {
+        return def->kind == Statement::Kind::Let ? mLets[def->name].state : mSolids[def->name].state;
+    };
+    for (const OrderedDefinition& d : definitionOrder(lets, solids)) {
+        const bool isLet = d.def->kind == Statement::Kind::Let;
+        if (d.level <= kMaxNameDepth) {
+            if (isLet)
+                letValue(d.def->name, d.def->nameLoc);
+            else
+                solidByName(d.def->name, d.def->nameLoc);
+            continue;
+        }
+        (isLet ? mLets[d.def->name].state : mSolids[d.def->name].state) = State::Failed;
+        // One report, at the first definition too deep, unless what it uses failed already.
+        const bool usesOk = std::all_of(d.uses.begin(), d.uses.end(),
+                                        [&](const Statement* u) { return state(u) == State::Done; });
+        if (d.firstTooDeep && usesOk)
+            error(d.tooDeepAt, std::string(isLet ? "let '" : "solid '") + d.def->name +
+                                   "' is nested too deeply through named solids or lets (more than " +
+                                   std::to_string(kMaxNameDepth) + " levels)",
+                  "a definition may build on others at most " + std::to_string(kMaxNameDepth) + " levels deep");
     }
 }
 

@@ -14,17 +14,16 @@
 #include "lang/ast.h"
 #include "lang/properties.h"
 #include "lang/value.h"
+#include "scene/limits.h"
 
 #include <map>
 #include <optional>
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace kerf {
-
-/// How deep lowering may recurse through named solids and lets, so a chain of 100,000 names
-/// is an error instead of a stack overflow.
-constexpr int kMaxLoweringDepth = 2000;
 
 class Lowering {
 public:
@@ -56,6 +55,9 @@ private:
 
     // lower.cpp
     void collectDefinitions(const Program& program, Scene& scene);
+    /// Lowers the lets and solids each after those it uses (lang/definition_order.h), so
+    /// no chain of names recurses; a chain deeper than kMaxNameDepth is an error.
+    void lowerDefinitions();
     void lowerStatement(const Statement& s, Scene& scene);
     bool onlyOnce(const Statement& s, const Statement*& first, const char* what);
     std::string cycleMessage(const char* what, const std::vector<std::string>& busy,
@@ -101,6 +103,10 @@ private:
     NodePtr transformed(const NodePtr& node, const Affine& map, const Modifier& last);
     std::optional<int> materialIndex(const std::string& name, const SourceLoc& use);
     NodePtr solidByName(const std::string& name, const SourceLoc& use);
+    /// The height of a tree made while lowering (a leaf is 1), memoised on node identity.
+    int heightOf(const NodePtr& node);
+    /// `node`, or null with an error at `at` if its tree is deeper than kMaxCsgDepth.
+    NodePtr limitDepth(NodePtr node, const SourceLoc& at);
 
     // lower_scene.cpp
     void lowerMaterial(const Statement& s, Material& m);
@@ -118,6 +124,8 @@ private:
     std::vector<std::string> mBusyLets;    ///< lets being evaluated, innermost last
     std::vector<std::string> mBusySolids;  ///< solids being lowered, innermost last
     int mDepth = 0;  ///< current recursion depth of lowering
+    /// heightOf's memo; holding the NodePtr keeps the key's address from being reused.
+    std::unordered_map<const Node*, std::pair<NodePtr, int>> mHeights;
     bool mTooDeepReported = false;
     const Statement* mCamera = nullptr;
     const Statement* mMist = nullptr;

@@ -194,9 +194,9 @@ void Lowering::lowerRender(const Statement& s, RenderSettings& settings) {
                            {"spp", PropertyType::Number},
                            {"max_depth", PropertyType::Number}},
                           "render", s.loc, mSink);
-    readInteger(b, "width", 1, 32768, settings.width);
-    readInteger(b, "height", 1, 32768, settings.height);
-    readInteger(b, "spp", 1, 65536, settings.spp);
+    readInteger(b, "width", 1, kMaxImageSide, settings.width);
+    readInteger(b, "height", 1, kMaxImageSide, settings.height);
+    readInteger(b, "spp", 1, kMaxSamplesPerPixel, settings.spp);
     readInteger(b, "max_depth", 0, 1000, settings.maxDepth);
 }
 

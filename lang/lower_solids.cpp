@@ -129,7 +129,26 @@ NodePtr Lowering::lowerBoolean(const Solid& s) {
                       : s.name == "intersection" ? BoolOp::Intersection
                       : s.name == "difference"   ? BoolOp::Difference
                                                  : BoolOp::Xor;
-    return makeBoolean(op, std::move(children));
+    return limitDepth(makeBoolean(op, std::move(children)), s.loc);
+}
+
+int Lowering::heightOf(const NodePtr& node) {
+    const auto it = mHeights.find(node.get());
+    if (it != mHeights.end()) return it->second.second;
+    // Only nodes made since the last call are not memoised yet: a few levels at most.
+    int height = 1;
+    for (const NodePtr& child : node->children()) height = std::max(height, heightOf(child) + 1);
+    mHeights.emplace(node.get(), std::make_pair(node, height));
+    return height;
+}
+
+NodePtr Lowering::limitDepth(NodePtr node, const SourceLoc& at) {
+    if (heightOf(node) <= kMaxCsgDepth) return node;
+    error(at, "solid nested too deeply: its tree would be more than " + std::to_string(kMaxCsgDepth) +
+                  " levels deep, counting named solids as written out",
+          "each Boolean, transform or material over a solid is one level; a wide union { … } of many "
+          "solids is one level");
+    return nullptr;
 }
 
 NodePtr Lowering::lowerPrimitive(const Solid& s) {
@@ -342,7 +361,8 @@ NodePtr Lowering::applyModifiers(NodePtr node, const Solid& s) {
             if (!node) return nullptr;
             pending = Affine{};
             hasPending = nullptr;
-            node = makeMaterial(node, *index);
+            node = limitDepth(makeMaterial(node, *index), m.loc);
+            ok = node != nullptr;
         } else if (const auto t = modifierTransform(m)) {
             pending = t->after(pending);  // later modifiers apply after earlier ones
             hasPending = &m;
@@ -352,7 +372,9 @@ NodePtr Lowering::applyModifiers(NodePtr node, const Solid& s) {
         }
     }
     if (!ok) return nullptr;
-    return hasPending ? transformed(node, pending, *hasPending) : node;
+    if (!hasPending) return node;
+    NodePtr out = transformed(node, pending, *hasPending);
+    return out ? limitDepth(out, s.loc) : nullptr;
 }
 
 NodePtr Lowering::transformed(const NodePtr& node, const Affine& map, const Modifier& last) {

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
+#include <functional>
 
 namespace kerf {
 
@@ -21,13 +23,40 @@ bool contains(const std::array<const char*, N>& words, const std::string& w) {
 
 struct SyntaxError {};
 
+/// The tokens the parser may still look at, lexed on demand. A deque, so that references to
+/// tokens stay valid while more are lexed; the tokens before a statement are dropped.
+class TokenWindow {
+public:
+    explicit TokenWindow(std::function<Token()> source) : mSource(std::move(source)) {}
+
+    /// Token i of the file (absolute index, not dropped yet); End past the end.
+    const Token& at(size_t i) {
+        while (mBase + mTokens.size() <= i && (mTokens.empty() || mTokens.back().kind != TokenKind::End))
+            mTokens.push_back(mSource());
+        return i - mBase < mTokens.size() ? mTokens[i - mBase] : mTokens.back();
+    }
+    /// Forgets the tokens before index i.
+    void dropBefore(size_t i) {
+        while (mBase < i && mTokens.size() > 1) {
+            mTokens.pop_front();
+            ++mBase;
+        }
+    }
+
+private:
+    std::function<Token()> mSource;
+    std::deque<Token> mTokens;
+    size_t mBase = 0;  // index of mTokens.front()
+};
+
 class Parser {
 public:
-    Parser(const std::vector<Token>& tokens, DiagnosticSink& sink) : mTokens(tokens), mSink(sink) {}
+    Parser(std::function<Token()> source, DiagnosticSink& sink) : mTokens(std::move(source)), mSink(sink) {}
 
     Program run() {
         Program program;
         while (peek().kind != TokenKind::End) {
+            mTokens.dropBefore(mPos > 0 ? mPos - 1 : 0);  // keep the previous token: afterPrevious()
             if (accept(TokenKind::Semicolon)) continue;  // an empty statement
             const size_t before = mPos;
             try {
@@ -43,16 +72,14 @@ public:
 
 private:
     // ---- token access ----
-    const Token& peek(size_t ahead = 0) const {
-        return mTokens[std::min(mPos + ahead, mTokens.size() - 1)];
-    }
-    bool check(TokenKind k) const { return peek().kind == k; }
-    bool checkWord(const char* w) const { return check(TokenKind::Identifier) && peek().text == w; }
+    const Token& peek(size_t ahead = 0) { return mTokens.at(mPos + ahead); }
+    bool check(TokenKind k) { return peek().kind == k; }
+    bool checkWord(const char* w) { return check(TokenKind::Identifier) && peek().text == w; }
     const Token& next() {
-        const Token& t = mTokens[mPos];
+        const Token& t = mTokens.at(mPos);
         if (t.kind == TokenKind::LBrace) ++mBraceDepth;
         if (t.kind == TokenKind::RBrace) --mBraceDepth;
-        if (mPos + 1 < mTokens.size()) ++mPos;
+        if (t.kind != TokenKind::End) ++mPos;
         return t;
     }
     bool accept(TokenKind k) {
@@ -67,10 +94,11 @@ private:
         throw SyntaxError{};
     }
     /// Just after the previous token: where a missing ';' belongs.
-    SourceLoc afterPrevious() const {
+    SourceLoc afterPrevious() {
         if (mPos == 0) return peek().loc;
-        SourceLoc at = mTokens[mPos - 1].loc;
-        at.col += mTokens[mPos - 1].length;
+        const Token& previous = mTokens.at(mPos - 1);
+        SourceLoc at = previous.loc;
+        at.col += previous.length;
         return at;
     }
     const Token& expect(TokenKind k, const std::string& context) {
@@ -94,7 +122,7 @@ private:
         ~NestingGuard() { --p.mNesting; }
     };
 
-    bool startsStatement() const {
+    bool startsStatement() {
         if (!check(TokenKind::Identifier) || !contains(kStatementWords, peek().text)) return false;
         if (peek().text == "material")  // `material m {` defines; `material m` alone is a modifier
             return peek(1).kind == TokenKind::Identifier && peek(2).kind == TokenKind::LBrace;
@@ -298,10 +326,10 @@ private:
         }
     }
 
-    bool bracketHasCommas() const {
+    bool bracketHasCommas() {
         int depth = 0;
-        for (size_t i = mPos; i < mTokens.size(); ++i) {
-            switch (mTokens[i].kind) {
+        for (size_t i = mPos;; ++i) {
+            switch (mTokens.at(i).kind) {
                 case TokenKind::LParen: case TokenKind::LBracket: case TokenKind::Less: ++depth; break;
                 case TokenKind::RParen: case TokenKind::Greater: --depth; break;
                 case TokenKind::RBracket: if (depth-- == 0) return false; break;
@@ -408,7 +436,7 @@ private:
         return e;
     }
 
-    const std::vector<Token>& mTokens;
+    TokenWindow mTokens;
     DiagnosticSink& mSink;
     size_t mPos = 0;
     int mNesting = 0;
@@ -425,7 +453,12 @@ bool isReservedWord(const std::string& word) {
 }
 
 Program parse(const std::vector<Token>& tokens, DiagnosticSink& sink) {
-    return Parser(tokens, sink).run();
+    size_t i = 0;
+    return Parser([&]() { return tokens[std::min(i++, tokens.size() - 1)]; }, sink).run();
+}
+
+Program parse(TokenStream& tokens, DiagnosticSink& sink) {
+    return Parser([&]() { return tokens.next(); }, sink).run();
 }
 
 }  // namespace kerf

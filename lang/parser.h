@@ -6,19 +6,17 @@
 
 #include "lang/ast.h"
 #include "lang/lexer.h"
+#include "scene/limits.h"  // kMaxNesting, kMaxExpressionDepth
 
 #include <vector>
 
 namespace kerf {
 
-/// How deeply parentheses, vectors, unary minus, powers and solids may nest.
-constexpr int kMaxNesting = 200;
-/// The largest height of an expression tree (long chains like 1+1+…+1 count too).
-constexpr int kMaxExpressionDepth = 1000;
-
 /// Parses the tokens of one file (the last must be End). Syntax errors go to `sink`; the
 /// statements that parsed are returned either way.
 Program parse(const std::vector<Token>& tokens, DiagnosticSink& sink);
+/// The same, lexing as it goes and keeping only the current statement's tokens.
+Program parse(TokenStream& tokens, DiagnosticSink& sink);
 
 /// True for words that cannot name a let, solid or material (keywords of the language).
 bool isReservedWord(const std::string& word);

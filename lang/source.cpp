@@ -1,10 +1,13 @@
 // Reading model files and rejecting anything that is not UTF-8 text, at the first bad byte.
 #include "lang/source.h"
 
+#include <cerrno>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <cstring>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace kerf {
 
@@ -88,29 +91,68 @@ bool checkSourceText(const SourceText& source, DiagnosticSink& sink) {
     return true;
 }
 
-std::optional<std::string> readFileBytes(const std::string& path, std::string& why) {
-    std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    if (ec || !std::filesystem::exists(status)) {
-        why = "no such file";
+namespace {
+
+std::string tooLarge(int64_t maxBytes) {
+    return "it is larger than " + std::to_string(maxBytes >> 20) + " MB (" + std::to_string(maxBytes) +
+           " bytes), the limit for a model file";
+}
+
+/// The reason to refuse a file with this status, or an empty string.
+std::string statusProblem(const struct stat& st, int64_t maxBytes) {
+    if (S_ISDIR(st.st_mode)) return "it is a directory";
+    if (!S_ISREG(st.st_mode)) return "it is not a regular file (a device, FIFO or socket)";
+    if (st.st_size > maxBytes) return tooLarge(maxBytes);
+    return {};
+}
+
+}  // namespace
+
+std::string sourceFileProblem(const std::string& path, int64_t maxBytes) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) return errno == ENOENT || errno == ENOTDIR ? "no such file" : std::strerror(errno);
+    return statusProblem(st, maxBytes);
+}
+
+std::optional<std::string> readFileBytes(const std::string& path, std::string& why, int64_t maxBytes) {
+    why = sourceFileProblem(path, maxBytes);  // stat first: never open a FIFO or a device
+    if (!why.empty()) return std::nullopt;
+    // O_NONBLOCK so that a FIFO swapped in since the stat cannot block the open; fstat then
+    // checks the file actually opened.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        why = std::strerror(errno);
         return std::nullopt;
     }
-    if (std::filesystem::is_directory(status)) {
-        why = "it is a directory";
+    struct Closer {
+        int fd;
+        ~Closer() { ::close(fd); }
+    } closer{fd};
+    struct stat st {};
+    if (::fstat(fd, &st) != 0) {
+        why = std::strerror(errno);
         return std::nullopt;
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        why = "cannot be opened";
-        return std::nullopt;
+    why = statusProblem(st, maxBytes);
+    if (!why.empty()) return std::nullopt;
+    std::string bytes;
+    bytes.reserve(static_cast<size_t>(st.st_size));
+    char buffer[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n == 0) break;
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            why = std::string("read error: ") + std::strerror(errno);
+            return std::nullopt;
+        }
+        if (static_cast<int64_t>(bytes.size()) + n > maxBytes) {  // grew while being read
+            why = tooLarge(maxBytes);
+            return std::nullopt;
+        }
+        bytes.append(buffer, static_cast<size_t>(n));
     }
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    if (in.bad()) {
-        why = "read error";
-        return std::nullopt;
-    }
-    return bytes.str();
+    return bytes;
 }
 
 }  // namespace kerf

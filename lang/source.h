@@ -4,7 +4,9 @@
 #pragma once
 
 #include "lang/diagnostic.h"
+#include "scene/limits.h"
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,8 +27,14 @@ SourceLoc locationOf(const SourceText& source, size_t offset);
 /// `sink` (one diagnostic) and returns false if there is one.
 bool checkSourceText(const SourceText& source, DiagnosticSink& sink);
 
-/// Reads the file's bytes; nullopt if it cannot be opened or is not a regular file, with the
-/// reason in `why`.
-std::optional<std::string> readFileBytes(const std::string& path, std::string& why);
+/// Reads the file's bytes; nullopt with the reason in `why` if it cannot be opened, is not a
+/// regular file (a folder, device, FIFO or socket: /dev/zero would never end, a FIFO would
+/// block) or is larger than `maxBytes` (kMaxSourceBytes; tests pass less).
+std::optional<std::string> readFileBytes(const std::string& path, std::string& why,
+                                         int64_t maxBytes = kMaxSourceBytes);
+
+/// Why readFileBytes would refuse `path` by what stat() says of it (missing, not a regular
+/// file, too large), or an empty string. Does not open the file, so it never blocks.
+std::string sourceFileProblem(const std::string& path, int64_t maxBytes = kMaxSourceBytes);
 
 }  // namespace kerf

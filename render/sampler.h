@@ -6,6 +6,9 @@
 /// image is the same bit for bit whatever the thread count.
 #pragma once
 
+#include "scene/limits.h"
+
+#include <algorithm>
 #include <cstdint>
 
 namespace kerf {
@@ -36,14 +39,16 @@ struct SubPixel {
 /// With one sample the ray goes exactly through the pixel centre.
 class PixelSampler {
 public:
-    explicit PixelSampler(int spp) : mSide(gridSide(spp)) {}
+    /// spp is capped at kMaxSamplesPerPixel (the model and the command line refuse more), so
+    /// sampleCount() stays far inside an int.
+    explicit PixelSampler(int spp) : mSide(gridSide(std::min(spp, kMaxSamplesPerPixel))) {}
 
     /// The smallest n with n·n ≥ spp (1 for spp ≤ 1), in integers so that no rounding of
     /// sqrt can make it off by one.
     static int gridSide(int spp) {
-        int n = 1;
+        int64_t n = 1;  // 64-bit: n·n for spp near INT_MAX would overflow an int
         while (n * n < spp) ++n;
-        return n;
+        return static_cast<int>(n);
     }
 
     int side() const { return mSide; }

@@ -56,3 +56,21 @@ TEST_CASE("kerf check: bounds of a bounded scene") {
     // Hull of [0.5,1.5]×[1.5,2.5]×[2.5,3.5] and [-2,0]×[0,1]×[10,11].
     CHECK(run.out.find("bounds:      x [-2, 1.5]  y [0, 2.5]  z [2.5, 11]") != std::string::npos);
 }
+
+TEST_CASE("kerf check: shared subtrees are counted once, their uses in 64 bits") {
+    // s<i> is two copies of s<i-1>: 2^32 spheres written out. A walk per use took minutes at
+    // 31 levels and printed -2147483648; a memoised walk visits each definition once.
+    TempDir dir;
+    std::string text = "solid s0 = sphere { radius 0.4 };\n";
+    for (int i = 1; i <= 32; ++i)
+        text += "solid s" + std::to_string(i) + " = union { s" + std::to_string(i - 1) + " s" +
+                std::to_string(i - 1) + " translate <" + std::to_string(1L << (i - 1)) + ", 0, 0> };\n";
+    text += "object s32;\n";
+    dir.write("doubled.kerf", text);
+    const KerfRun run = runKerf(dir, {"check", "doubled.kerf"});
+    INFO("stdout:\n" << run.out << "\nstderr:\n" << run.err);
+    REQUIRE(run.exitCode == 0);
+    CHECK(run.out.find("primitives:  4294967296 (1 unique)\n") != std::string::npos);
+    // A union and a transform per level over the sphere.
+    CHECK(summaryNumber(run.out, "csg depth") == 1 + 2 * 32);
+}

@@ -1,0 +1,41 @@
+/// @file scene/limits.h
+/// @brief Every limit kerf puts on its input, in one place (docs/robustness.md, "Limits").
+/// lang/ checks them while reading and lowering a model, app/ checks the command line against
+/// the same numbers, so a value accepted in a model is accepted as a flag and the other way
+/// round. Depth limits exist because the code that walks that depth recurses: each is far
+/// above what real models need and far below what overflows a thread's stack.
+#pragma once
+
+#include <cstdint>
+
+namespace kerf {
+
+// ---- files ----
+/// Bytes read from one model or included file; larger files are refused before reading.
+constexpr int64_t kMaxSourceBytes = int64_t(256) << 20;  // 256 MB
+/// How deep includes may nest (a file including a file including …).
+constexpr int kMaxIncludeDepth = 200;
+
+// ---- depth ----
+/// How deeply parentheses, vectors, unary minus, powers and solids may nest in one statement.
+constexpr int kMaxNesting = 200;
+/// The largest height of an expression tree (long chains like 1+1+…+1 count too).
+constexpr int kMaxExpressionDepth = 1000;
+/// How many named solids and lets may build on each other: a definition that uses only
+/// literals is at level 1, one that uses a level-n name is at level n + 1. Counted on the
+/// definitions, so it does not depend on the order they are written in.
+constexpr int kMaxNameDepth = 1000;
+/// The height of a compiled solid tree (Boolean, transform and material nodes over a
+/// primitive, named solids counted as if written out): tracing recurses once per level.
+constexpr int kMaxCsgDepth = 1000;
+/// A backstop on the lowering recursion itself (solids, expressions and names together),
+/// which the limits above keep it under except along a cycle of names.
+constexpr int kMaxLoweringDepth = 2000;
+
+// ---- images ----
+/// Image width and height in pixels, in a model's `render { }` and on the command line.
+constexpr int kMaxImageSide = 32768;
+/// Samples per pixel, in a model and on the command line.
+constexpr int kMaxSamplesPerPixel = 65536;
+
+}  // namespace kerf
