@@ -24,6 +24,11 @@ namespace kerf {
 void comparisonSpans(const Primitive& p, const Ray& ray, double tmin, double tmax,
                      TraceContext& ctx, SpanList& out);
 
+/// Node::firstSurface of `p` by ctx.method, which is Interval or SphereTrace: the first
+/// surface boundary comparisonSpans would give, the interval search stopping once it is decided.
+bool comparisonFirstSurface(const Primitive& p, const Ray& ray, double tmin, double tmax,
+                            TraceContext& ctx, Boundary& hit, bool& entering);
+
 /// p's implicit form compiled: an implicit's own tape; for other primitives compiled once per
 /// thread on first use and kept by primitive id, so primitives carry nothing for these methods.
 const Tape& implicitTape(const Primitive& p);
