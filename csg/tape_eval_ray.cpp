@@ -554,8 +554,10 @@ void TapeRayProgram::eval(const Interval& t, Interval& f, Interval& dfdt) {
                 }
             }
         }
-        // A function that cannot be negative: rounding below 0 is only rounding.
-        if (in.nonNegative && r.v.lo < 0.0 && r.v.hi >= 0.0) r.v.lo = 0.0;
+        // A function that cannot be negative: rounding below 0 is only rounding. Not where a
+        // NaN may come out: min and max pass their other operand on for it, so the enclosure
+        // must stay as the plain evaluator makes it.
+        if (in.nonNegative && !r.v.maybeNan && r.v.lo < 0.0 && r.v.hi >= 0.0) r.v.lo = 0.0;
         r.zeroSlope = isExactZero(r.d);
     }
     f = s[n - 1].v;
