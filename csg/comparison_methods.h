@@ -5,8 +5,9 @@
 /// gets both comparison methods for free.
 ///
 /// - Interval: the implicit primitive's own machinery (csg/implicit.cpp: interval root
-///   isolation of the tape along the ray with Tape::evalIntervalAlongRay, clipped to the
-///   bounds) run on a stand-in implicit over the primitive's form, bounds and id. An infinite
+///   isolation along the ray, clipped to the bounds) run on a stand-in implicit over the
+///   primitive's form, bounds and id, whose enclosures come from the tape specialised to the
+///   ray (csg/tape_ray_program.h: quadratics along the ray get their exact range). An infinite
 ///   end of the range (half-spaces) is first moved to a finite one beyond which interval
 ///   evaluation proves the state cannot change.
 /// - SphereTrace: Hart's march (csg/sphere_trace.h) on value() with the primitive's Lipschitz
