@@ -23,6 +23,13 @@ public:
         ++ctx.stats.primitiveTests;
         static_cast<const Derived&>(*this).closedSpans(ray, out);
     }
+
+    bool firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx, Boundary& hit,
+                      bool& entering) const override {
+        if (ctx.method != TraceMethod::Closed)
+            return comparisonFirstSurface(*this, ray, tmin, tmax, ctx, hit, entering);
+        return Node::firstSurface(ray, tmin, tmax, ctx, hit, entering);
+    }
 };
 
 }  // namespace kerf

@@ -69,25 +69,35 @@ double finiteEnd(const Tape& f, const Ray& ray, double base, bool up) {
     }
 }
 
-void intervalSpans(const Primitive& p, const Ray& ray, double tmin, double tmax, TraceContext& ctx,
-                   SpanList& out) {
-    const Node& node = standIn(p);
+/// The stand-in and the finite range [a, b] it searches for p over [tmin, tmax]; false when
+/// the ray misses p's bounds there.
+bool intervalRange(const Primitive& p, const Ray& ray, double tmin, double tmax, const Node*& node,
+                   double& a, double& b) {
+    node = &standIn(p);
     double c0 = tmin, c1 = tmax;
-    if (!node.bounds().clipRay(ray, c0, c1)) {
-        out.clear();
-        ++ctx.stats.primitiveTests;
-        return;
-    }
+    if (!node->bounds().clipRay(ray, c0, c1)) return false;
     // Root isolation needs a finite range: infinite ends the bounds leave open become
     // finite ones beyond which the state is proven constant, and clips there go back out.
-    double a = tmin, b = tmax;
+    a = tmin, b = tmax;
     if (!(std::isfinite(c0) && std::isfinite(c1))) {
         const Tape& f = implicitTape(p);
         const double base = std::isfinite(c0) ? c0 : std::isfinite(c1) ? c1 : 0.0;
         if (!std::isfinite(c0)) a = finiteEnd(f, ray, std::min(base, c1), false);
         if (!std::isfinite(c1)) b = finiteEnd(f, ray, std::max(base, a), true);
     }
-    node.spans(ray, a, b, ctx, out);
+    return true;
+}
+
+void intervalSpans(const Primitive& p, const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                   SpanList& out) {
+    const Node* node;
+    double a, b;
+    if (!intervalRange(p, ray, tmin, tmax, node, a, b)) {
+        out.clear();
+        ++ctx.stats.primitiveTests;
+        return;
+    }
+    node->spans(ray, a, b, ctx, out);
     for (Span& s : out) {
         if (!s.in.isSurface() && s.in.t == a) s.in.t = tmin;
         if (!s.out.isSurface() && s.out.t == b) s.out.t = tmax;
@@ -163,6 +173,21 @@ void comparisonSpans(const Primitive& p, const Ray& ray, double tmin, double tma
     if (ctx.method == TraceMethod::SphereTrace)
         return sphereTraceSpans(p, ray, tmin, tmax, ctx, out);
     intervalSpans(p, ray, tmin, tmax, ctx, out);
+}
+
+bool comparisonFirstSurface(const Primitive& p, const Ray& ray, double tmin, double tmax,
+                            TraceContext& ctx, Boundary& hit, bool& entering) {
+    if (ctx.method == TraceMethod::SphereTrace)
+        return p.Node::firstSurface(ray, tmin, tmax, ctx, hit, entering);
+    // The stand-in's own first-surface search: it stops once the first surface is decided.
+    // Only surface boundaries come out, so the finite range needs no clips put back.
+    const Node* node;
+    double a, b;
+    if (!intervalRange(p, ray, tmin, tmax, node, a, b)) {
+        ++ctx.stats.primitiveTests;
+        return false;
+    }
+    return node->firstSurface(ray, a, b, ctx, hit, entering);
 }
 
 }  // namespace kerf

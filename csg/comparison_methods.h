@@ -5,8 +5,9 @@
 /// gets both comparison methods for free.
 ///
 /// - Interval: the implicit primitive's own machinery (csg/implicit.cpp: interval root
-///   isolation of the tape along the ray with Tape::evalIntervalAlongRay, clipped to the
-///   bounds) run on a stand-in implicit over the primitive's form, bounds and id. An infinite
+///   isolation along the ray, clipped to the bounds) run on a stand-in implicit over the
+///   primitive's form, bounds and id, whose enclosures come from the tape specialised to the
+///   ray (csg/tape_ray_program.h: quadratics along the ray get their exact range). An infinite
 ///   end of the range (half-spaces) is first moved to a finite one beyond which interval
 ///   evaluation proves the state cannot change.
 /// - SphereTrace: Hart's march (csg/sphere_trace.h) on value() with the primitive's Lipschitz
@@ -23,6 +24,11 @@ namespace kerf {
 /// Node::spans of `p` by ctx.method, which is Interval or SphereTrace.
 void comparisonSpans(const Primitive& p, const Ray& ray, double tmin, double tmax,
                      TraceContext& ctx, SpanList& out);
+
+/// Node::firstSurface of `p` by ctx.method, which is Interval or SphereTrace: the first
+/// surface boundary comparisonSpans would give, the interval search stopping once it is decided.
+bool comparisonFirstSurface(const Primitive& p, const Ray& ray, double tmin, double tmax,
+                            TraceContext& ctx, Boundary& hit, bool& entering);
 
 /// p's implicit form compiled: an implicit's own tape; for other primitives compiled once per
 /// thread on first use and kept by primitive id, so primitives carry nothing for these methods.

@@ -27,7 +27,9 @@ NodePtr makeImplicit(std::shared_ptr<const Tape> f, const Bounds3& bound);
 /// same bound and primitive id, so where f equals the old function the two are one surface.
 NodePtr withImplicitFunction(const Node& original, std::shared_ptr<const Tape> f);
 /// An implicit {f ≤ 0} ∩ bound whose boundaries carry another primitive's id: the stand-in
-/// through which csg/comparison_methods.h traces that primitive's implicit form.
+/// through which csg/comparison_methods.h traces that primitive's implicit form. Its root
+/// isolation runs on csg/tape_ray_program.h (enclosures, point values and slopes of the tape
+/// specialised to each ray) instead of Tape::evalIntervalAlongRay.
 NodePtr makeImplicitStandIn(std::shared_ptr<const Tape> f, const Bounds3& bound, uint32_t id);
 
 /// The child seen through worldFromLocal (maps the child's space into this node's space).
