@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "csg/clip_ray.h"
 #include "csg/comparison_methods.h"
 #include "csg/implicit_expr.h"
 #include "csg/root_isolation.h"
@@ -144,7 +145,7 @@ private:
     bool setUp(const Ray& ray, double tmin, double tmax, Setup& st) const {
         st.t0 = tmin, st.t1 = tmax;
         const double dd = glm::dot(ray.dir, ray.dir);
-        if (!(dd > 0.0) || !mBounds.clipRay(ray, st.t0, st.t1)) return false;
+        if (!(dd > 0.0) || !clipRayExact(mBounds, ray, st.t0, st.t1)) return false;
         st.t0Clip = st.t0 == tmin;
         st.t1Clip = st.t1 == tmax;
 
