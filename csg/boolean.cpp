@@ -2,6 +2,7 @@
 // current parameter range are skipped by their bounds; wide unions and the cutters of a
 // difference are found through a BVH, so a box minus 1000 spheres tests a handful of spheres.
 #include "csg/bvh.h"
+#include "csg/clip_ray.h"
 #include "csg/solids.h"
 
 #include <algorithm>
@@ -109,7 +110,7 @@ private:
         double t0 = tmin, t1 = tmax;
         ++ctx.stats.boundsTests;
         const Bounds3& box = mChildren[i]->bounds();
-        if (!(rec ? box.clipRayConservative(*rec, t0, t1) : box.clipRay(ray, t0, t1))) {
+        if (!(rec ? box.clipRayConservative(*rec, t0, t1) : clipRayExact(box, ray, t0, t1))) {
             s.clear();
             return false;
         }

@@ -107,6 +107,32 @@ public:
         return e.mul(e.sub(e.dot(mNormal, x, y, z), e.c(mOffset)), e.c(mInvLength));
     }
 
+    /// The first surface of the one span closedSpans() makes, without making it: every ray
+    /// meets the floor of a scene, camera and shadow rays alike, so the span list, the generic
+    /// search and their copies were most of a half-space's cost. Same boundary, same count.
+    bool firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx, Boundary& hit,
+                      bool& entering) const override {
+        if (ctx.method != TraceMethod::Closed)
+            return Node::firstSurface(ray, tmin, tmax, ctx, hit, entering);
+        ++ctx.stats.primitiveTests;
+        const double nd = dot2(mNormal, ray.dir, 0.0);
+        const double g0 = dot2(mNormal, ray.origin, -mOffset);
+        if (nd == 0.0) return false;  // no span, or one between two clips: no surface
+        const double t = -g0 / nd;
+        if (nd > 0.0) {
+            // The span (−inf, t): its exit, as firstSurfaceOf takes it.
+            if (!(-kInf < t) || !(t > tmin && t <= tmax)) return false;
+            hit = boundary(t, mNormal);
+            entering = false;
+            return true;
+        }
+        // The span (t, +inf) (nd < 0 or NaN): its entry; the clip at +inf is no surface.
+        if (t > tmax || !(t < kInf) || !(t > tmin)) return false;
+        hit = boundary(t, mNormal);
+        entering = true;
+        return true;
+    }
+
 private:
     friend class ClosedFormPrimitive<HalfSpace>;
 

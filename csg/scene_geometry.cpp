@@ -15,11 +15,24 @@ std::vector<Bounds3> objectBounds(const std::vector<NodePtr>& objects) {
     return boxes;
 }
 
+/// What the coincidence test needs of a ray, computed once per search: |d|.
+struct RayScale {
+    double dirLength;
+};
+
+/// What it needs of a hit besides its relError (which merging widens): the rounding term of
+/// its error bound, which depends only on where the hit is.
+struct HitScale {
+    double rounding;
+};
+
 /// How far along the ray (in t) another surface may be computed and still coincide with the
 /// hit h: within h's error bound at this size, counting h's own relError or only rounding.
-double coincidenceWindow(const Ray& ray, const Hit& h, bool withRelError) {
+/// The same value as hitErrorBound(ray, h.t, ray.at(h.t), rel) / |ray.dir|.
+double coincidenceWindow(const RayScale& rs, const Hit& h, const HitScale& hs,
+                         bool withRelError) {
     const double rel = withRelError ? h.relError : 0.0;
-    return hitErrorBound(ray, h.t, ray.at(h.t), rel) / glm::length(ray.dir);
+    return hitErrorBound(hs.rounding, h.t, rel, rs.dirLength) / rs.dirLength;
 }
 
 /// Whether the new hit h replaces the best so far. Surfaces of two objects at one place are
@@ -31,11 +44,12 @@ double coincidenceWindow(const Ray& ray, const Hit& h, bool withRelError) {
 ///    Within a root finder's error the nearer estimate still wins, as before.
 /// The winner's relError is widened to reach the other surface, so rays leaving it start past
 /// both.
-bool preferOrMerge(const Ray& ray, Hit& h, Hit& best) {
+bool preferOrMerge(const RayScale& rs, Hit& h, const HitScale& hs, Hit& best,
+                   const HitScale& bests) {
     const double gap = h.t - best.t;
     const bool passing = h.entering != best.entering;
-    const double window = std::max(coincidenceWindow(ray, h, passing),
-                                   coincidenceWindow(ray, best, passing));
+    const double window = std::max(coincidenceWindow(rs, h, hs, passing),
+                                   coincidenceWindow(rs, best, bests, passing));
     if (gap < -window) return true;
     if (gap > window) return false;
     const bool takeNew = passing ? h.entering : h.object < best.object;
@@ -54,6 +68,8 @@ SceneGeometry::SceneGeometry(std::vector<NodePtr> objects)
 std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double tmax,
                                              TraceContext& ctx) const {
     std::optional<Hit> best;
+    HitScale bestScale{0.0};
+    RayScale rayScale{0.0};
     double nearest = tmax;  // shrinks as hits are found: farther objects cannot win
     mBvh.traverse(ray, tmin, tmax, ctx.stats, [&](int index, double tEnter) {
         if (tEnter > nearest) return nearest;
@@ -69,10 +85,13 @@ std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double
         h.primitive = bd.primitive;
         h.relError = bd.relError;
         h.object = index;
-        if (best && !preferOrMerge(ray, h, *best)) return nearest;
+        if (!best) rayScale.dirLength = glm::length(ray.dir);
+        const HitScale scale{hitRoundingBound(ray, ray.at(h.t))};
+        if (best && !preferOrMerge(rayScale, h, scale, *best, bestScale)) return nearest;
         best = h;
+        bestScale = scale;
         // Farther objects cannot win, but one whose surface coincides with this one can.
-        nearest = std::min(nearest, h.t + coincidenceWindow(ray, h, true));
+        nearest = std::min(nearest, h.t + coincidenceWindow(rayScale, h, scale, true));
         return nearest;
     });
     return best;

@@ -29,15 +29,32 @@ struct Hit {
 /// explains the bound).
 constexpr double kHitRoundingOps = 16.0;
 
+/// The rounding term of hitErrorBound alone (the part that depends on the point, not on the
+/// tolerance), for searches that weigh one hit against several tolerances.
+inline double hitRoundingBound(const Ray& ray, const Vec3& p) {
+    const Vec3 ap = glm::abs(p);
+    const Vec3 ao = glm::abs(ray.origin);
+    // The largest of the six as std::max({…}) picks it (the first of equals, NaN as it does),
+    // without the initializer list's loop.
+    double magnitude = ap.x;
+    if (magnitude < ap.y) magnitude = ap.y;
+    if (magnitude < ap.z) magnitude = ap.z;
+    if (magnitude < ao.x) magnitude = ao.x;
+    if (magnitude < ao.y) magnitude = ao.y;
+    if (magnitude < ao.z) magnitude = ao.z;
+    return kHitRoundingOps * magnitude * 0x1.0p-52;
+}
+
+/// hitErrorBound from its rounding term (hitRoundingBound) and |ray.dir|, computed once.
+inline double hitErrorBound(double rounding, double t, double relTolerance, double dirLength) {
+    return rounding + relTolerance * std::abs(t) * dirLength;
+}
+
 /// An upper bound on the distance between the computed hit point `p` = ray.at(t) and the true
 /// surface, for a hit whose distance is within relative error `relTolerance` (Hit::relError):
 /// rounding of coordinates of this size, plus the root finder's error along the ray.
 inline double hitErrorBound(const Ray& ray, double t, const Vec3& p, double relTolerance) {
-    const Vec3 ap = glm::abs(p);
-    const Vec3 ao = glm::abs(ray.origin);
-    const double magnitude = std::max({ap.x, ap.y, ap.z, ao.x, ao.y, ao.z});
-    const double rounding = kHitRoundingOps * magnitude * 0x1.0p-52;
-    return rounding + relTolerance * std::abs(t) * glm::length(ray.dir);
+    return hitErrorBound(hitRoundingBound(ray, p), t, relTolerance, glm::length(ray.dir));
 }
 
 class SceneGeometry {

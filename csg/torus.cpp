@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 
+#include "csg/clip_ray.h"
 #include "csg/comparison_methods.h"
 #include "csg/implicit_expr.h"
 #include "csg/root_isolation.h"
@@ -156,7 +157,7 @@ private:
             dir = Vec3(std::ldexp(dir.x, -kd), std::ldexp(dir.y, -kd), std::ldexp(dir.z, -kd));
         }
         const double dd = glm::dot(dir, dir);
-        if (!(dd > 0.0) || !mBounds.clipRay(ray, st.t0, st.t1)) return false;
+        if (!(dd > 0.0) || !clipRayExact(mBounds, ray, st.t0, st.t1)) return false;
         st.t0Clip = st.t0 == tmin;
         st.t1Clip = st.t1 == tmax;
 

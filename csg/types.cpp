@@ -2,6 +2,7 @@
 #include "csg/types.h"
 
 #include "csg/affine_check.h"
+#include "csg/clip_ray.h"
 
 #include <algorithm>
 
@@ -28,21 +29,7 @@ bool Bounds3::contains(const Vec3& p) const {
 }
 
 bool Bounds3::clipRay(const Ray& ray, double& tmin, double& tmax) const {
-    for (int a = 0; a < 3; ++a) {
-        const double o = ray.origin[a], d = ray.dir[a];
-        if (d == 0.0) {  // also -0: the ray runs parallel to this slab
-            if (o < lo[a] || o > hi[a]) return false;
-            continue;
-        }
-        const double inv = 1.0 / d;
-        double t0 = (lo[a] - o) * inv, t1 = (hi[a] - o) * inv;
-        if (t0 > t1) std::swap(t0, t1);
-        // (±inf - o)·inv is ±inf, never NaN, because inv is finite and nonzero here.
-        if (t0 > tmin) tmin = t0;
-        if (t1 < tmax) tmax = t1;
-        if (tmin > tmax) return false;
-    }
-    return true;
+    return clipRayExact(*this, ray, tmin, tmax);
 }
 
 namespace {

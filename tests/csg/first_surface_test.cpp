@@ -214,3 +214,44 @@ TEST_CASE("Tape::evalIntervalAlongRay with sin and cos of shared operands") {
     INFO(firstMiss);
     REQUIRE(misses == 0);
 }
+
+TEST_CASE("HalfSpace::firstSurface") {
+    // The override skips the span list; it must give the default's boundary bit for bit,
+    // including rays parallel to the plane (±0 dot products), rays starting on the plane,
+    // ranges that end before or start after the crossing, and tilted planes whose dot
+    // products cancel (the compensated path).
+    Comparison c;
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const NodePtr planes[] = {
+        makeHalfSpace(Vec3(0.0, 1.0, 0.0), 0.0), makeHalfSpace(Vec3(0.0, -2.0, 0.0), 0.5),
+        makeHalfSpace(Vec3(1.0, 1e-9, -3.0), 2.0), makeHalfSpace(Vec3(0.3, 0.4, 0.5), -1e6)};
+    for (const NodePtr& plane : planes) {
+        for (int i = 0; i < 4000; ++i) {
+            Vec3 origin(unit(rng), unit(rng), unit(rng));
+            Vec3 dir(unit(rng), unit(rng), unit(rng));
+            if (i % 5 == 1) dir.y = (i % 2 ? 0.0 : -0.0);  // parallel to the axis planes
+            if (i % 7 == 2) origin.y = 0.0;                 // on the floor
+            if (i % 11 == 3) origin *= 1e7;                 // far away: cancelling dots
+            const double tmin = i % 3 == 1 ? std::fabs(unit(rng)) : 0.0;
+            const double tmax = i % 4 == 2 ? tmin + std::fabs(unit(rng)) : kInf;
+            compareOne(*plane, {origin, dir}, tmin, tmax, 1e-9, c);
+        }
+        // Straight at the plane, along it, and from on it.
+        compareOne(*plane, {Vec3(0.0, 1.0, 0.0), Vec3(0.0, -1.0, 0.0)}, 0.0, kInf, 1e-9, c);
+        compareOne(*plane, {Vec3(0.0, 1.0, 0.0), Vec3(1.0, 0.0, 0.0)}, 0.0, kInf, 1e-9, c);
+        compareOne(*plane, {Vec3(0.0, 0.0, 0.0), Vec3(0.0, 1.0, 0.0)}, 0.0, kInf, 1e-9, c);
+        compareOne(*plane, {Vec3(0.0, 0.0, 0.0), Vec3(0.0, -1.0, 0.0)}, 0.0, kInf, 1e-9, c);
+    }
+    // Under a transform and a material, as the objects of a scene are.
+    const NodePtr wrapped = makeMaterial(
+        makeTransform(planes[2], Affine::rotateDegrees(Vec3(20.0, 0.0, 45.0))), 4);
+    for (int i = 0; i < 2000; ++i)
+        compareOne(*wrapped, {Vec3(unit(rng), unit(rng), unit(rng)) * 3.0,
+                              Vec3(unit(rng), unit(rng), unit(rng))},
+                   0.0, kInf, 1e-9, c);
+    INFO(c.firstMismatch);
+    REQUIRE(c.mismatches == 0);
+    REQUIRE(c.hits > c.rays / 4);
+    REQUIRE(c.early.primitiveTests == c.full.primitiveTests);  // the same work counted
+}
