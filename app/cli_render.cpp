@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <future>
 #include <iostream>
 #include <memory>
 #include <thread>
@@ -131,8 +130,6 @@ int runRender(const RenderCommandLine& line) {
     const double secondsCompile = secondsSince(compileStart);
 
     RenderOptions options = renderOptions(line, plan);
-    // OpenImageIO loads (a few hundred libraries) on another thread while the image is traced.
-    const std::future<void> imageSupport = preloadImageSupport();
     std::unique_ptr<ProgressBar> bar;
     if (!line.quiet && stderrIsTerminal()) {
         bar = std::make_unique<ProgressBar>(stderr);

@@ -8,7 +8,6 @@
 
 #include "io/atomic_file.h"
 
-#include <future>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -52,11 +51,5 @@ Image readImage(const std::string& path);
 /// before the first image is read or written; later calls have no effect.
 void setImagePluginPath(const std::string& path);
 std::string imagePluginPath();
-
-/// Starts loading the plug-in on a background thread, so that its latency hides behind work
-/// the caller does meanwhile (tracing). The returned future completes when loading is done;
-/// its destructor waits for that. A failure is not reported here but by the first
-/// writeImage/readImage.
-std::future<void> preloadImageSupport();
 
 }  // namespace kerf

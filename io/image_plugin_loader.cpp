@@ -74,14 +74,4 @@ const KerfImagePlugin& imagePlugin() {
     return *s.plugin;
 }
 
-std::future<void> preloadImageSupport() {
-    return std::async(std::launch::async, [] {
-        try {
-            imagePlugin();
-        } catch (const ImageSupportError&) {
-            // Reported by the first read or write, where the caller handles errors.
-        }
-    });
-}
-
 }  // namespace kerf

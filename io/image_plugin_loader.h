@@ -1,6 +1,6 @@
 /// @file io/image_plugin_loader.h
 /// @brief Loading the image plug-in once per process, on first use (io/image.h declares the
-/// public side: setImagePluginPath, preloadImageSupport).
+/// public side: setImagePluginPath).
 #pragma once
 
 #include "io/image_plugin.h"
