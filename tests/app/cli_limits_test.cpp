@@ -40,7 +40,7 @@ TEST_CASE("kerf check/render: a model that is not a regular file is refused unre
     TempDir dir;
     REQUIRE(::mkfifo(dir.file("pipe.kerf").c_str(), 0600) == 0);
     for (const char* command : {"check", "render"}) {
-        for (const std::string model : {std::string("/dev/zero"), std::string("pipe.kerf")}) {
+        for (const std::string& model : {std::string("/dev/zero"), std::string("pipe.kerf")}) {
             std::vector<std::string> args{command, model};
             if (std::string(command) == "render") args.insert(args.end(), {"-o", "x.png"});
             const KerfRun run = runKerf(dir, args);

@@ -18,6 +18,12 @@
 
 namespace kerf::test {
 
+/// A unit sphere at 16 × 12: the smallest model that renders, for tests about outputs.
+inline const char* kTinySphereModel = R"(object sphere { center <0, 0, 0> radius 1 };
+camera { eye <0, 0, -5> look_at <0, 0, 0> up <0, 1, 0> fov 40 }
+render { width 16 height 12 spp 1 }
+)";
+
 namespace fs = std::filesystem;
 
 /// A fresh directory under the system temp folder, removed with everything in it on scope exit.

@@ -9,11 +9,6 @@ using namespace kerf::test;
 
 namespace {
 
-const char* kTinyModel = R"(object sphere { center <0, 0, 0> radius 1 };
-camera { eye <0, 0, -5> look_at <0, 0, 0> up <0, 1, 0> fov 40 }
-render { width 16 height 12 spp 1 }
-)";
-
 // A model with an error: if it were compiled, its diagnostic (exit 2) would come first. An
 // output error instead shows the outputs were checked before the model was even read.
 const char* kBrokenModel = "object sphere { radius -1 };\n";
@@ -22,7 +17,7 @@ const char* kBrokenModel = "object sphere { radius -1 };\n";
 
 TEST_CASE("kerf render checks every output before any work") {
     TempDir dir;
-    dir.write("tiny.kerf", kTinyModel);
+    dir.write("tiny.kerf", kTinySphereModel);
     dir.write("broken.kerf", kBrokenModel);
     dir.write("notes.txt", "a file, not a folder\n");
 
@@ -62,7 +57,7 @@ TEST_CASE("kerf render checks every output before any work") {
 
 TEST_CASE("kerf render: an output name that is only an extension") {
     TempDir dir;
-    dir.write("tiny.kerf", kTinyModel);
+    dir.write("tiny.kerf", kTinySphereModel);
     SECTION("-o .png") {
         const KerfRun run = runKerf(dir, {"render", "tiny.kerf", "-o", ".png"});
         CHECK(run.exitCode == 2);

@@ -6,18 +6,9 @@
 
 using namespace kerf::test;
 
-namespace {
-
-const char* kTinyModel = R"(object sphere { center <0, 0, 0> radius 1 };
-camera { eye <0, 0, -5> look_at <0, 0, 0> up <0, 1, 0> fov 40 }
-render { width 16 height 12 spp 1 }
-)";
-
-}  // namespace
-
 TEST_CASE("kerf render: an output that cannot be written") {
     TempDir dir;
-    dir.write("tiny.kerf", kTinyModel);
+    dir.write("tiny.kerf", kTinySphereModel);
 
     SECTION("into a folder that does not exist") {
         const KerfRun run = runKerf(dir, {"render", "tiny.kerf", "-o", "nowhere/out.png"});
@@ -47,7 +38,7 @@ TEST_CASE("kerf render: an output that cannot be written") {
 
 TEST_CASE("kerf render: a failed run leaves an earlier output alone") {
     TempDir dir;
-    dir.write("tiny.kerf", kTinyModel);
+    dir.write("tiny.kerf", kTinySphereModel);
     const std::string earlier = dir.write("out.png", "an earlier image");
     dir.write("bad.kerf", "object sphere { radius -1 };\n");
     const KerfRun run = runKerf(dir, {"render", "bad.kerf", "-o", "out.png"});

@@ -12,11 +12,6 @@ using namespace kerf::test;
 
 namespace {
 
-const char* kTinyModel = R"(object sphere { center <0, 0, 0> radius 1 };
-camera { eye <0, 0, -5> look_at <0, 0, 0> up <0, 1, 0> fov 40 }
-render { width 16 height 12 spp 1 }
-)";
-
 /// Renders `output` once without faults: the earlier good file a failed run must keep.
 std::string renderEarlier(const TempDir& dir, const std::vector<std::string>& extraArgs) {
     std::vector<std::string> args = {"render", "tiny.kerf", "-q"};
@@ -33,7 +28,7 @@ TEST_CASE("kerf render on a full disk keeps the earlier image, for every format"
     for (const std::string ext : {"png", "jpg", "exr", "tif"}) {
         DYNAMIC_SECTION(ext) {
             TempDir dir;
-            dir.write("tiny.kerf", kTinyModel);
+            dir.write("tiny.kerf", kTinySphereModel);
             const std::string name = "out." + ext;
             renderEarlier(dir, {"-o", name});
             const std::string earlier = readFile(dir.file(name));
@@ -56,7 +51,7 @@ TEST_CASE("kerf render on a full disk keeps the earlier image, for every format"
 
 TEST_CASE("kerf render on a full disk: an AOV keeps its earlier file") {
     TempDir dir;
-    dir.write("tiny.kerf", kTinyModel);
+    dir.write("tiny.kerf", kTinySphereModel);
     renderEarlier(dir, {"-o", "out.png", "--aov", "depth=depth.exr"});
     const std::string earlier = readFile(dir.file("depth.exr"));
 
@@ -81,7 +76,7 @@ TEST_CASE("failures the write calls do not show: at fsync, or bytes lost") {
     for (const auto& [variable, message] : cases) {
         DYNAMIC_SECTION(variable) {
             TempDir dir;
-            dir.write("tiny.kerf", kTinyModel);
+            dir.write("tiny.kerf", kTinySphereModel);
             renderEarlier(dir, {"-o", "out.png"});
             const std::string earlier = readFile(dir.file("out.png"));
 
@@ -129,7 +124,7 @@ TEST_CASE("a signal during the write removes the temporary and keeps the earlier
         DYNAMIC_SECTION((sig == SIGTERM ? "SIGTERM" : "SIGINT")) {
             TempDir dir;
             TempDir side;  // the shim's marker lives apart, out of the listing
-            dir.write("tiny.kerf", kTinyModel);
+            dir.write("tiny.kerf", kTinySphereModel);
             renderEarlier(dir, {"-o", "out.png"});
             const std::string earlier = readFile(dir.file("out.png"));
 
