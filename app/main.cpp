@@ -8,6 +8,7 @@
 #include "io/image.h"
 
 #include <CLI/CLI.hpp>
+#include <tbb/global_control.h>
 
 #include <exception>
 #include <iostream>
@@ -60,7 +61,9 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+int runReportingErrors(int argc, char** argv) {
     try {
         return run(argc, argv);
     } catch (const std::bad_alloc&) {
@@ -71,4 +74,16 @@ int main(int argc, char** argv) {
         std::cerr << "kerf: error: unknown failure\n";
     }
     return kExitFailure;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // The process ends only after TBB's worker threads have: workers still tearing down while
+    // exit handlers run crashed LeakSanitizer's exit-time scan (sanitizer build, a render with
+    // two threads), and nothing should outlive main anyway.
+    tbb::task_scheduler_handle workers{tbb::attach{}};
+    const int code = runReportingErrors(argc, argv);
+    tbb::finalize(workers, std::nothrow);
+    return code;
 }

