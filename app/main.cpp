@@ -79,9 +79,8 @@ int runReportingErrors(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    // The process ends only after TBB's worker threads have: workers still tearing down while
-    // exit handlers run crashed LeakSanitizer's exit-time scan (sanitizer build, a render with
-    // two threads), and nothing should outlive main anyway.
+    // The process ends only after TBB's worker threads have, so no worker still runs while exit
+    // handlers and the sanitizers' exit-time checks do.
     tbb::task_scheduler_handle workers{tbb::attach{}};
     const int code = runReportingErrors(argc, argv);
     tbb::finalize(workers, std::nothrow);
