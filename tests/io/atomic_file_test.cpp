@@ -4,6 +4,8 @@
 /// kerf executable with a fault-injection shim: tests/app/write_fault_test.cpp.)
 #include "io/atomic_file.h"
 
+#include "util/scratch_folder.h"
+
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
@@ -12,37 +14,11 @@
 #include <sstream>
 
 using namespace kerf;
+using namespace kerf::test;
 namespace fs = std::filesystem;
 
-namespace {
-
-struct Folder {
-    fs::path path;
-    Folder() {
-        std::string pattern = (fs::temp_directory_path() / "kerf-atomic-XXXXXX").string();
-        REQUIRE(mkdtemp(pattern.data()) != nullptr);
-        path = pattern;
-    }
-    ~Folder() { fs::remove_all(path); }
-    std::string file(const std::string& name) const { return (path / name).string(); }
-    int entries() const {
-        int n = 0;
-        for ([[maybe_unused]] const auto& e : fs::directory_iterator(path)) ++n;
-        return n;
-    }
-};
-
-std::string slurp(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-}  // namespace
-
 TEST_CASE("replaceFile writes exactly the bytes and leaves no temporary") {
-    Folder dir;
+    ScratchFolder dir;
     const std::string file = dir.file("data.bin");
     const std::string bytes("a\0b\nc", 5);
     CHECK(replaceFile(file, ".bin", bytes.data(), bytes.size()) == "");
@@ -53,7 +29,7 @@ TEST_CASE("replaceFile writes exactly the bytes and leaves no temporary") {
 }
 
 TEST_CASE("outputProblem names what is wrong") {
-    Folder dir;
+    ScratchFolder dir;
     std::ofstream(dir.file("plain.txt")) << "x";
     fs::create_directory(dir.path / "sub");
     CHECK(outputProblem(dir.file("ok.png"), true) == "");
@@ -72,7 +48,7 @@ TEST_CASE("outputProblem names what is wrong") {
 }
 
 TEST_CASE("replaceFile refuses a folder in the way and keeps it") {
-    Folder dir;
+    ScratchFolder dir;
     fs::create_directory(dir.path / "taken");
     CHECK(replaceFile(dir.file("taken"), "", "x", 1) == "it is a folder");
     CHECK(fs::is_directory(dir.path / "taken"));

@@ -4,6 +4,8 @@
 #include "io/image.h"
 #include "io/srgb.h"
 
+#include "util/scratch_folder.h"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -16,33 +18,10 @@
 #include <sys/stat.h>
 
 using namespace kerf;
+using namespace kerf::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-/// A fresh empty directory, removed with its contents at the end of the test.
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        std::string pattern = (fs::temp_directory_path() / "kerf-image-io-XXXXXX").string();
-        REQUIRE(mkdtemp(pattern.data()) != nullptr);
-        path = pattern;
-    }
-    ~TempDir() { fs::remove_all(path); }
-    std::string file(const std::string& name) const { return (path / name).string(); }
-    int entries() const {
-        int n = 0;
-        for ([[maybe_unused]] const auto& e : fs::directory_iterator(path)) ++n;
-        return n;
-    }
-};
-
-std::string slurp(const std::string& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 /// A test pattern: a ramp over [−0.25, 1.25] so clamping shows, with a NaN.
 Image pattern(int w, int h, int c) {
@@ -76,7 +55,7 @@ TEST_CASE("srgbEncode / srgbDecode") {
 }
 
 TEST_CASE("writeImage / readImage round trips") {
-    TempDir dir;
+    ScratchFolder dir;
 
     SECTION("PNG: 8-bit sRGB codes, clamped and rounded") {
         const Image image = pattern(5, 3, 3);
@@ -133,7 +112,7 @@ TEST_CASE("writeImage / readImage round trips") {
 
 TEST_CASE("writeImage permissions") {
     // The temporary file is created private; the result must look like any new file.
-    TempDir dir;
+    ScratchFolder dir;
     const mode_t mask = umask(022);
     umask(mask);
     const std::string file = dir.file("fresh.png");
@@ -147,7 +126,7 @@ TEST_CASE("writeImage permissions") {
 }
 
 TEST_CASE("writeImage failures") {
-    TempDir dir;
+    ScratchFolder dir;
     const Image image = pattern(4, 4, 3);
 
     SECTION("an unknown extension throws, naming the file, and writes nothing") {
