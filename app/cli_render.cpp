@@ -82,6 +82,15 @@ RenderOptions renderOptions(const RenderCommandLine& line, const OutputPlan& pla
         throw UsageError("--method must be closed, interval or sphere-trace (got '" + line.method +
                          "')");
     options.method = *method;
+    const std::optional<Accel> accel = parseAccel(line.accel);
+    if (!accel)
+        throw UsageError("--accel must be auto, none, bvh or octree (got '" + line.accel + "')");
+    options.accel = *accel;
+    if (line.accelDepth < 0 || line.accelDepth > kMaxOctreeDepth)
+        throw UsageError("--accel-depth must be 0 (from the pixel footprint) to " +
+                         std::to_string(kMaxOctreeDepth) + " (got " +
+                         std::to_string(line.accelDepth) + ")");
+    options.accelDepth = line.accelDepth;
     for (const AovRequest& aov : plan.aovs) {
         if (aov.kind == AovRequest::Kind::Depth) options.wantDepth = true;
         if (aov.kind == AovRequest::Kind::Normal) options.wantNormal = true;
@@ -111,6 +120,14 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
                     "default), interval (interval root isolation everywhere) or sphere-trace "
                     "(Lipschitz marching, for comparison: can miss thin features)")
         ->type_name("closed|interval|sphere-trace");
+    cmd->add_option("--accel", line.accel,
+                    "Acceleration: auto (the default: an octree for objects with an implicit "
+                    "part, a BVH over objects), none (no BVH over objects, no octree), bvh, or "
+                    "octree (an octree for every bounded object)")
+        ->type_name("auto|none|bvh|octree");
+    cmd->add_option("--accel-depth", line.accelDepth,
+                    "The octree's finest level: 2^N cells along an object's longest side "
+                    "(1-10); 0, the default, derives it from the pixel footprint");
     cmd->add_option("--aov", line.aovs,
                     "Also write an output variable: depth=FILE.exr (eye-to-hit distance) or "
                     "normal=FILE.exr (world normal); may be repeated")

@@ -24,6 +24,8 @@ struct RenderCommandLine {
     int threads = 0;
     double tolerance = 0;
     std::string method = "closed";
+    std::string accel = "auto";
+    int accelDepth = 0;
     std::vector<std::string> aovs;
     bool stats = false;
     bool quiet = false;

@@ -3,6 +3,7 @@
 
 #include "csg/format.h"
 
+#include <algorithm>
 #include <cinttypes>
 #include <cstdio>
 #include <ostream>
@@ -46,6 +47,28 @@ void printStats(const RunReport& report, std::ostream& out) {
     out << line("bounds tests", count(s.trace.boundsTests));
     out << line("root-finder steps", count(s.trace.rootSteps));
     out << line("interval evaluations", count(s.trace.intervalEvals));
+    if (s.octree.objects > 0) {
+        const OctreeStats& o = s.octree;
+        out << line("octree objects", count(uint64_t(o.objects)) + ", finest level " +
+                                          std::to_string(o.maxDepth) +
+                                          formatDouble(", finest cell %.3g", o.finestCell));
+        out << line("octree cells", count(o.boundaryCells) + " boundary, " + count(o.fullBlocks) +
+                                        " full blocks, " + count(o.cellsClassified) +
+                                        " classified");
+        out << line("octree memory", formatDouble("%.3g MB", double(o.memoryBytes) / 1e6) +
+                                         " (" + count(o.distinctNodes) + " distinct pruned trees)");
+        if (o.fullTapeOps > 0)
+            out << line("pruned tape length",
+                        formatDouble("%.3g", double(o.prunedTapeOps) / double(o.boundaryCells)) +
+                            formatDouble(" of %.3g ops per cell",
+                                         double(o.fullTapeOps) / double(o.boundaryCells)));
+        out << line("cells visited / ray", formatDouble("%.3g", double(s.trace.cellsVisited) /
+                                                                      double(std::max<uint64_t>(rays, 1))));
+        out << line("octree build", seconds(s.secondsAccel));
+    }
+    if (rays > 0)
+        out << line("interval evals / ray",
+                    formatDouble("%.3g", double(s.trace.intervalEvals) / double(rays)));
     out << line("parse + compile", seconds(report.secondsCompile));
     out << line("setup", seconds(s.secondsSetup));
     out << line("trace", seconds(s.secondsTrace));

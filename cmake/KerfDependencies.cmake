@@ -7,3 +7,6 @@ find_package(PkgConfig REQUIRED)
 # installed, so it is linked through its pkg-config file instead.
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 find_package(Catch2 REQUIRED)
+# OpenVDB ships its find module (not a config file) in its own folder.
+list(APPEND CMAKE_MODULE_PATH /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/OpenVDB)
+find_package(OpenVDB REQUIRED)

@@ -2,6 +2,7 @@
 // node is rebuilt over the ones that do (Node::withChildren), bottom up.
 #include "csg/prune.h"
 
+#include <algorithm>
 #include <cmath>
 #include <variant>
 
@@ -52,10 +53,19 @@ Bounds3 localBox(const Affine& worldFromLocal, const Bounds3& box) {
 Pruned prunedImplicit(const NodePtr& node, const Bounds3& box) {
     const ImplicitParams p = std::get<ImplicitParams>(node->params());
     // Outside the bound the node is outside whatever the tape says: only the overlap matters.
-    const IntervalVec3 region = asIntervals(Bounds3::overlap(box, p.bound));
+    const Bounds3 overlap = Bounds3::overlap(box, p.bound);
+    if (overlap.empty()) return empty();
+    const IntervalVec3 region = asIntervals(overlap);
     std::vector<Choice> choices;
     const Interval f = p.tape->evalInterval(region.x, region.y, region.z, choices);
-    if (f.classify() == Classification::Empty) return empty();
+    const Classification c = f.classify();
+    if (c == Classification::Empty) return empty();
+    // Full only where the whole box is within the bound (beyond it the node is outside).
+    const bool withinBound = overlap.lo == box.lo && overlap.hi == box.hi;
+    if (c == Classification::Filled && withinBound) return full();
+    // Most cells decide no min or max: then there is nothing to simplify, and no new tape.
+    if (std::all_of(choices.begin(), choices.end(), [](Choice x) { return x == Choice::Both; }))
+        return partial(node);
     std::shared_ptr<const Tape> shorter = p.tape->simplified(choices);
     if (shorter->size() == p.tape->size()) return partial(node);
     return partial(withImplicitFunction(*node, std::move(shorter)));
@@ -120,14 +130,10 @@ Pruned prunedBoolean(const NodePtr& node, const Bounds3& box) {
 
 Pruned pruned(const NodePtr& node, const Bounds3& box) {
     if (Bounds3::overlap(node->bounds(), box).empty()) return empty();
-    switch (node->valueInterval(asIntervals(box)).classify()) {
-        case Classification::Empty:
-            return empty();
-        case Classification::Filled:
-            return full();
-        case Classification::Ambiguous:
-            break;
-    }
+    // Each node is evaluated over the box once: implicit leaves and closed primitives by
+    // their own enclosure, transforms, materials and Booleans through their children, whose
+    // states decide theirs (the same classification as the node's own combined interval,
+    // which would evaluate every child a second time).
     switch (node->kind()) {
         case NodeKind::Implicit:
             return prunedImplicit(node, box);
@@ -148,8 +154,17 @@ Pruned pruned(const NodePtr& node, const Bounds3& box) {
         case NodeKind::Xor:
             return prunedBoolean(node, box);
         default:
-            return partial(node);  // closed-form primitives: nothing to simplify
+            break;  // closed-form primitives: nothing to simplify
     }
+    switch (node->valueInterval(asIntervals(box)).classify()) {
+        case Classification::Empty:
+            return empty();
+        case Classification::Filled:
+            return full();
+        case Classification::Ambiguous:
+            break;
+    }
+    return partial(node);
 }
 
 }  // namespace kerf

@@ -62,8 +62,10 @@ bool preferOrMerge(const RayScale& rs, Hit& h, const HitScale& hs, Hit& best,
 
 }  // namespace
 
-SceneGeometry::SceneGeometry(std::vector<NodePtr> objects)
-    : mObjects(std::move(objects)), mBvh(objectBounds(mObjects), Bvh::Split::Median) {}
+SceneGeometry::SceneGeometry(std::vector<NodePtr> objects, bool objectBvh)
+    : mObjects(std::move(objects)), mUseBvh(objectBvh) {
+    if (mUseBvh) mBvh = Bvh(objectBounds(mObjects), Bvh::Split::Median);
+}
 
 std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double tmax,
                                              TraceContext& ctx) const {
@@ -71,7 +73,7 @@ std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double
     HitScale bestScale{0.0};
     RayScale rayScale{0.0};
     double nearest = tmax;  // shrinks as hits are found: farther objects cannot win
-    mBvh.traverse(ray, tmin, tmax, ctx.stats, [&](int index, double tEnter) {
+    traverse(ray, tmin, tmax, ctx, [&](int index, double tEnter) {
         if (tEnter > nearest) return nearest;
         Boundary bd;
         bool entering = true;
@@ -99,7 +101,7 @@ std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double
 
 bool SceneGeometry::occluded(const Ray& ray, double tmin, double tmax, TraceContext& ctx) const {
     bool blocked = false;
-    mBvh.traverse(ray, tmin, tmax, ctx.stats, [&](int index, double) {
+    traverse(ray, tmin, tmax, ctx, [&](int index, double) {
         if (blocked) return -kInf;  // an empty range: the walk ends without more tests
         Boundary bd;
         bool entering = true;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "csg/bvh.h"
+#include "csg/clip_ray.h"
 #include "csg/node.h"
 
 #include <algorithm>
@@ -59,7 +60,9 @@ inline double hitErrorBound(const Ray& ray, double t, const Vec3& p, double relT
 
 class SceneGeometry {
 public:
-    explicit SceneGeometry(std::vector<NodePtr> objects);
+    /// objectBvh false: objects are tested one after the other, in order, with no BVH over
+    /// them (`--accel none`, for measuring what the BVH and the octree save).
+    explicit SceneGeometry(std::vector<NodePtr> objects, bool objectBvh = true);
 
     /// The first surface crossing with tmin < t ≤ tmax, over all objects. Crossings of
     /// several objects that coincide within their error (hitErrorBound) are one place, decided
@@ -83,15 +86,34 @@ public:
     Bounds3 bounds() const;
 
 private:
+    /// mBvh.traverse, or every object in order when there is no BVH: visit(index, tEnter)
+    /// returns the new end of the range.
+    template <class Visit>
+    void traverse(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                  Visit&& visit) const;
+
     std::vector<NodePtr> mObjects;
+    bool mUseBvh = true;
     Bvh mBvh;
 };
+
+template <class Visit>
+void SceneGeometry::traverse(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                             Visit&& visit) const {
+    if (mUseBvh) return mBvh.traverse(ray, tmin, tmax, ctx.stats, visit);
+    for (size_t i = 0; i < mObjects.size() && tmin <= tmax; ++i) {
+        double t0 = tmin, t1 = tmax;
+        ++ctx.stats.boundsTests;
+        if (!clipRayExact(mObjects[i]->bounds(), ray, t0, t1)) continue;
+        tmax = std::min(tmax, visit(int(i), t0));
+    }
+}
 
 template <class Visit>
 void SceneGeometry::forEachObjectSpans(const Ray& ray, double tmin, double tmax,
                                        TraceContext& ctx, Visit&& visit) const {
     SpanList spans;
-    mBvh.traverse(ray, tmin, tmax, ctx.stats, [&](int index, double) {
+    traverse(ray, tmin, tmax, ctx, [&](int index, double) {
         mObjects[index]->spans(ray, tmin, tmax, ctx, spans);
         if (!spans.empty()) {
             fillMaterial(spans, 0);

@@ -19,12 +19,14 @@ struct TraceStats {
     uint64_t boundsTests = 0;      ///< ray–box tests of node bounds and BVH nodes
     uint64_t rootSteps = 0;        ///< interval subdivisions and polish iterations
     uint64_t intervalEvals = 0;    ///< interval evaluations of implicit functions
+    uint64_t cellsVisited = 0;     ///< octree cells and skipped blocks a ray walked through
 
     TraceStats& operator+=(const TraceStats& o) {
         primitiveTests += o.primitiveTests;
         boundsTests += o.boundsTests;
         rootSteps += o.rootSteps;
         intervalEvals += o.intervalEvals;
+        cellsVisited += o.cellsVisited;
         return *this;
     }
 };

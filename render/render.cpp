@@ -149,8 +149,22 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     if (options.wantDepth) result.depth = Image(width, height, 1);
     if (options.wantNormal) result.normal = Image(width, height, 3);
 
-    const SceneGeometry geometry(scene.objects);
     const Camera camera(scene.camera, width, height);
+    tbb::task_arena arena(options.threads > 0 ? options.threads
+                                              : int(tbb::task_arena::automatic));
+    const auto accelStart = Clock::now();
+    OctreeOptions octreeOptions;
+    octreeOptions.depth = options.accelDepth;
+    octreeOptions.eye = scene.camera.eye;
+    octreeOptions.footprintPerDistance =
+        2.0 * std::tan(0.5 * scene.camera.fovDegrees * glm::pi<double>() / 180.0) / height;
+    AcceleratedObjects accelerated;
+    arena.execute([&] {
+        accelerated = accelerate(scene.objects, options.accel, octreeOptions);
+    });
+    result.stats.octree = accelerated.octree;
+    result.stats.secondsAccel = secondsSince(accelStart);
+    const SceneGeometry geometry(std::move(accelerated.objects), accelerated.objectBvh);
     const PixelSampler sampler(spp);
     result.stats.samplesPerPixel = sampler.sampleCount();
     const WhittedIntegrator integrator(scene, geometry, scene.settings.maxDepth);
@@ -170,8 +184,6 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     const int tileCount = ((width + kTileSize - 1) / kTileSize) *
                           ((height + kTileSize - 1) / kTileSize);
     ProgressReporter progress(options.progress, tileCount);
-    tbb::task_arena arena(options.threads > 0 ? options.threads
-                                              : int(tbb::task_arena::automatic));
     arena.execute([&] {
         // One tile per task: tiles are already coarse, and the simple partitioner keeps the
         // split independent of timing (the image never depends on it, the load balance does).

@@ -5,6 +5,7 @@
 #include "scene/scene.h"
 #include "csg/trace_context.h"
 #include "io/image.h"
+#include "volume/accelerate.h"
 
 #include <functional>
 
@@ -17,6 +18,8 @@ struct RenderOptions {
     int threads = 0;      ///< 0: all hardware threads
     double tolerance = 0; ///< relative hit-distance tolerance; 0: derived from the pixel footprint
     TraceMethod method = TraceMethod::Closed;  ///< how primitives find crossings
+    Accel accel = Accel::Auto;  ///< acceleration structures (volume/accelerate.h)
+    int accelDepth = 0;         ///< the octree's finest level; 0: from the pixel footprint
     bool wantDepth = false;   ///< fill RenderResult::depth
     bool wantNormal = false;  ///< fill RenderResult::normal
     /// Called now and then with the fraction done (0..1); may be empty.
@@ -29,7 +32,9 @@ struct RenderStats {
     uint64_t reflectionRays = 0;
     uint64_t refractionRays = 0;
     TraceStats trace;
-    double secondsSetup = 0;
+    OctreeStats octree;       ///< what the octrees cost and hold (none: all zero)
+    double secondsSetup = 0;  ///< parse excluded: camera, acceleration structures
+    double secondsAccel = 0;  ///< of secondsSetup, building the octrees
     double secondsTrace = 0;
     double tolerance = 0;  ///< the relative tolerance in force
     int samplesPerPixel = 0;  ///< traced per pixel: the requested spp rounded up to n×n

@@ -1,0 +1,242 @@
+// The octree node: a ray walks the object's cell grid and searches for crossings only in the
+// runs of boundary cells, each with the tree pruned to its cells.
+#include "volume/octree.h"
+
+#include "csg/clip_ray.h"
+#include "csg/node_kind.h"
+#include "csg/tape.h"
+#include "volume/cell_grid.h"
+#include "volume/octree_build.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <variant>
+
+namespace kerf {
+
+OctreeStats& OctreeStats::operator+=(const OctreeStats& o) {
+    objects += o.objects;
+    cellsClassified += o.cellsClassified;
+    boundaryCells += o.boundaryCells;
+    fullBlocks += o.fullBlocks;
+    distinctNodes += o.distinctNodes;
+    memoryBytes += o.memoryBytes;
+    prunedTapeOps += o.prunedTapeOps;
+    fullTapeOps += o.fullTapeOps;
+    maxDepth = std::max(maxDepth, o.maxDepth);
+    if (o.finestCell > 0.0 && (finestCell == 0.0 || o.finestCell < finestCell))
+        finestCell = o.finestCell;
+    return *this;
+}
+
+namespace {
+
+/// Calls f on every distinct node of the tree once.
+template <class F>
+void forEachDistinct(const NodePtr& root, F&& f) {
+    std::vector<const Node*> stack{root.get()};
+    std::unordered_map<const Node*, bool> seen;
+    while (!stack.empty()) {
+        const Node* n = stack.back();
+        stack.pop_back();
+        if (!seen.emplace(n, true).second) continue;
+        f(*n);
+        for (const NodePtr& c : n->children()) stack.push_back(c.get());
+    }
+}
+
+uint64_t implicitTapeOps(const NodePtr& node) {
+    uint64_t ops = 0;
+    forEachDistinct(node, [&](const Node& n) {
+        if (n.kind() == NodeKind::Implicit)
+            ops += uint64_t(std::get<ImplicitParams>(n.params()).tape->size());
+    });
+    return ops;
+}
+
+/// The grid for an object's bounds: a cube of 2^depth cells holding them.
+GridFrame frameFor(const Bounds3& b, const OctreeOptions& options) {
+    const Vec3 e = b.extent();
+    const double longest = std::max({e.x, e.y, e.z});
+    int depth = options.depth;
+    if (depth <= 0) {
+        // The finest cell spans kCellsPerFootprint pixels where the object is nearest.
+        const Vec3 nearest = glm::clamp(options.eye, b.lo, b.hi);
+        const double distance = std::max(glm::length(nearest - options.eye), 1e-3 * longest);
+        const double cell = kCellsPerFootprint * options.footprintPerDistance * distance;
+        depth = cell > 0.0 ? int(std::ceil(std::log2(longest / cell))) : kMaxOctreeDepth;
+    }
+    depth = std::clamp(depth, kMinOctreeDepth, kMaxOctreeDepth);
+    GridFrame f;
+    f.n = int32_t(1) << depth;
+    f.origin = b.lo;
+    // Rounded up so that origin + n·h reaches past the bounds on every axis.
+    f.h = std::nextafter(longest / double(f.n), kInf) * (1.0 + 1e-12);
+    return f;
+}
+
+class OctreeNode final : public Node {
+public:
+    OctreeNode(NodePtr object, const GridFrame& frame, OctreeCells cells, OctreeStats& stats)
+        : mObject(std::move(object)) {
+        mBounds = mObject->bounds();
+        std::unordered_map<const Node*, int32_t> index;
+        std::vector<std::pair<CellCoord, int32_t>> boundary;
+        boundary.reserve(cells.boundary.size());
+        std::unordered_map<const Node*, uint64_t> tapeOps;
+        for (auto& [c, node] : cells.boundary) {
+            auto [it, added] = index.emplace(node.get(), int32_t(mCellNodes.size()));
+            if (added) {
+                mCellNodes.push_back(node);
+                tapeOps[node.get()] = implicitTapeOps(node);
+            }
+            stats.prunedTapeOps += tapeOps[node.get()];
+            boundary.push_back({c, it->second});
+        }
+        mGrid = std::make_unique<CellGrid>(frame, boundary, cells.full);
+        stats.objects += 1;
+        stats.cellsClassified += cells.classified;
+        stats.boundaryCells += boundary.size();
+        stats.fullBlocks += cells.full.size();
+        stats.distinctNodes += mCellNodes.size();
+        stats.fullTapeOps += implicitTapeOps(mObject) * boundary.size();
+        stats.memoryBytes += mGrid->memoryBytes() + mCellNodes.capacity() * sizeof(NodePtr);
+        stats.maxDepth = std::max(stats.maxDepth, int(std::log2(double(frame.n)) + 0.5));
+        OctreeStats local;
+        local.finestCell = frame.h;
+        stats += local;
+        // Rounding slack of a segment end: a few ulps of the coordinates involved, in t.
+        double magnitude = 0.0;
+        for (int a = 0; a < 3; ++a)
+            magnitude = std::max({magnitude, std::fabs(frame.origin[a]),
+                                  std::fabs(frame.origin[a] + frame.n * frame.h)});
+        mCoordinateSlack = 64.0 * 0x1p-52 * magnitude;
+    }
+
+    bool firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx, Boundary& hit,
+                      bool& entering) const override {
+        double t0 = tmin, t1 = tmax;
+        if (!clipRayExact(mBounds, ray, t0, t1)) return false;
+        FirstSearch s{this, &ray, &ctx, tmin, tmax, slackFor(ray), &hit, &entering};
+        uint64_t steps = 0;
+        const bool complete = mGrid->walk(ray, t0, t1, &FirstSearch::visit, &s, steps);
+        ctx.stats.cellsVisited += steps;
+        if (s.found) return true;
+        if (s.flush()) return true;
+        if (!complete) {  // the walk gave up (rounding): search the rest with the whole tree
+            const double from = std::max(tmin, s.resumeFrom - s.slack);
+            return mObject->firstSurface(ray, from, tmax, ctx, hit, entering);
+        }
+        return false;
+    }
+
+    void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+               SpanList& out) const override {
+        mObject->spans(ray, tmin, tmax, ctx, out);
+    }
+    double value(const Vec3& p) const override { return mObject->value(p); }
+    Interval valueInterval(const IntervalVec3& box) const override {
+        return mObject->valueInterval(box);
+    }
+    long double valueExtended(const LVec3& p) const override { return mObject->valueExtended(p); }
+
+    // To tree walkers it is the object itself.
+    NodeKind kind() const override { return mObject->kind(); }
+    NodeParams params() const override { return mObject->params(); }
+    NodeSpan children() const override { return mObject->children(); }
+    NodePtr withChildren(std::vector<NodePtr> children) const override {
+        return mObject->withChildren(std::move(children));
+    }
+
+private:
+    /// The state of one first-surface search along the walk: consecutive segments of the same
+    /// boundary cell tree form a run, searched as one range.
+    struct FirstSearch {
+        const OctreeNode* node;
+        const Ray* ray;
+        TraceContext* ctx;
+        double tmin, tmax, slack;
+        Boundary* hit;
+        bool* entering;
+        int32_t runCell = kNoCell;
+        double runStart = -kInf, runEnd = -kInf;
+        bool found = false;
+
+        double resumeFrom = -kInf;  ///< where a search of the rest would have to start
+
+        /// Searches the pending run; true if it holds the first surface. The search reaches
+        /// a margin past both ends so that a span cut by the run's end is judged thin or not
+        /// (dropThinSpans) on its real extent, as the whole tree's search would judge it;
+        /// crossings found in the margins belong to the neighbouring runs and are passed over.
+        bool flush() {
+            if (runCell == kNoCell) return false;
+            const int32_t cell = runCell;
+            runCell = kNoCell;
+            resumeFrom = runEnd;
+            const double margin =
+                4.0 * ctx->relTolerance * std::max(std::fabs(runStart), std::fabs(runEnd)) +
+                slack;
+            const double first = runStart - slack, last = runEnd + slack;
+            const double hi = std::min(tmax, runEnd + margin);
+            double from = std::max(tmin, runStart - margin);
+            const Node& tree = *node->mCellNodes[size_t(cell)];
+            while (from < hi) {
+                if (!tree.firstSurface(*ray, from, hi, *ctx, *hit, *entering)) return false;
+                if (hit->t > last) return false;  // the next run's: it decides there
+                if (hit->t > first) return found = true;
+                from = hit->t;  // the previous run's: look on past it
+            }
+            return false;
+        }
+
+        static bool visit(void* context, const GridSegment& seg) {
+            auto& s = *static_cast<FirstSearch*>(context);
+            if (seg.cell != kNoCell && seg.cell == s.runCell) {
+                s.runEnd = seg.t1;
+                return true;
+            }
+            if (s.flush()) return false;
+            if (seg.cell == kNoCell) {
+                s.resumeFrom = seg.t1;
+                return true;
+            }
+            s.runCell = seg.cell;
+            s.runStart = seg.t0;
+            s.runEnd = seg.t1;
+            return true;
+        }
+    };
+
+    /// Slack in t for segment ends: coordinate rounding over the ray's speed, plus t's own.
+    double slackFor(const Ray& ray) const {
+        const double speed = std::max({std::fabs(ray.dir.x), std::fabs(ray.dir.y),
+                                       std::fabs(ray.dir.z)});
+        double o = std::max({std::fabs(ray.origin.x), std::fabs(ray.origin.y),
+                             std::fabs(ray.origin.z)});
+        return (mCoordinateSlack + 64.0 * 0x1p-52 * o) / speed;
+    }
+
+    NodePtr mObject;
+    std::vector<NodePtr> mCellNodes;
+    std::unique_ptr<CellGrid> mGrid;
+    double mCoordinateSlack = 0.0;
+};
+
+}  // namespace
+
+bool hasImplicitLeaf(const NodePtr& node) {
+    bool found = false;
+    forEachDistinct(node, [&](const Node& n) { found = found || n.kind() == NodeKind::Implicit; });
+    return found;
+}
+
+NodePtr withOctree(const NodePtr& object, const OctreeOptions& options, OctreeStats& stats) {
+    const Bounds3& b = object->bounds();
+    if (b.empty() || !b.finite()) return object;
+    const GridFrame frame = frameFor(b, options);
+    OctreeCells cells = classifyCells(object, frame);
+    return std::make_shared<OctreeNode>(object, frame, std::move(cells), stats);
+}
+
+}  // namespace kerf

@@ -1,0 +1,52 @@
+/// @file volume/octree.h
+/// @brief An object's solid under an octree of interval-classified cells (issue 8 §3): cells
+/// where the object is provably all outside or all inside are skipped by rays; each boundary
+/// cell keeps the object's tree pruned to that cell (csg/prune.h), so a ray searches only the
+/// short stretches where the surface may be, with only the operands that matter there.
+#pragma once
+
+#include "csg/node.h"
+
+#include <cstdint>
+
+namespace kerf {
+
+struct OctreeOptions {
+    /// Finest level: 2^depth cells along the longest side of the object's bounds. 0 derives
+    /// it from the pixel footprint (below), clamped to [kMinOctreeDepth, kMaxOctreeDepth].
+    int depth = 0;
+    /// Where the camera is and the world-space size of a pixel per unit of distance: the
+    /// finest cell is kCellsPerFootprint pixels wide at the object's nearest distance.
+    Vec3 eye{0.0};
+    double footprintPerDistance = 0.0;
+};
+
+constexpr int kMinOctreeDepth = 2;
+constexpr int kMaxOctreeDepth = 10;
+constexpr double kCellsPerFootprint = 8.0;
+
+/// What building the octrees cost and holds, summed over objects (`--stats`).
+struct OctreeStats {
+    int objects = 0;                ///< objects given an octree
+    uint64_t cellsClassified = 0;   ///< interval classifications (pruned() calls)
+    uint64_t boundaryCells = 0;     ///< finest cells the surface may cross
+    uint64_t fullBlocks = 0;        ///< octree cells classified all inside
+    uint64_t distinctNodes = 0;     ///< distinct pruned trees kept by boundary cells
+    uint64_t memoryBytes = 0;       ///< OpenVDB trees and cell tables
+    /// Implicit tape instructions per boundary cell, summed: pruned against the full tree.
+    uint64_t prunedTapeOps = 0, fullTapeOps = 0;
+    int maxDepth = 0;
+    double finestCell = 0.0;        ///< the smallest finest-cell side over objects
+
+    OctreeStats& operator+=(const OctreeStats& o);
+};
+
+/// Whether `node` holds an implicit leaf (the rule for the default acceleration).
+bool hasImplicitLeaf(const NodePtr& node);
+
+/// `object` (finite bounds) under an octree; the result answers spans, firstSurface and the
+/// values exactly as the object does, within the root finder's tolerance. Builds in parallel
+/// in the calling TBB arena.
+NodePtr withOctree(const NodePtr& object, const OctreeOptions& options, OctreeStats& stats);
+
+}  // namespace kerf
