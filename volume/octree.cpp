@@ -70,9 +70,11 @@ GridFrame frameFor(const Bounds3& b, const OctreeOptions& options) {
     depth = std::clamp(depth, kMinOctreeDepth, kMaxOctreeDepth);
     GridFrame f;
     f.n = int32_t(1) << depth;
-    f.origin = b.lo;
+    // One cell of margin on every side: where the bounds' face is itself a surface (an
+    // implicit's bound box), the cell beyond it is a boundary cell that rays must visit.
     // Rounded up so that origin + n·h reaches past the bounds on every axis.
-    f.h = std::nextafter(longest / double(f.n), kInf) * (1.0 + 1e-12);
+    f.h = std::nextafter(longest / double(f.n - 2), kInf) * (1.0 + 1e-12);
+    f.origin = b.lo - Vec3(f.h);
     return f;
 }
 
@@ -95,6 +97,7 @@ public:
             boundary.push_back({c, it->second});
         }
         mGrid = std::make_unique<CellGrid>(frame, boundary, cells.full);
+        mCube = frame.cellBox({0, 0, 0}, frame.n);
         stats.objects += 1;
         stats.cellsClassified += cells.classified;
         stats.boundaryCells += boundary.size();
@@ -117,7 +120,7 @@ public:
     bool firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx, Boundary& hit,
                       bool& entering) const override {
         double t0 = tmin, t1 = tmax;
-        if (!clipRayExact(mBounds, ray, t0, t1)) return false;
+        if (!clipRayExact(mCube, ray, t0, t1)) return false;
         FirstSearch s{this, &ray, &ctx, tmin, tmax, slackFor(ray), &hit, &entering};
         uint64_t steps = 0;
         const bool complete = mGrid->walk(ray, t0, t1, &FirstSearch::visit, &s, steps);
@@ -133,7 +136,24 @@ public:
 
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                SpanList& out) const override {
-        mObject->spans(ray, tmin, tmax, ctx, out);
+        out.clear();
+        double t0 = tmin, t1 = tmax;
+        if (!clipRayExact(mCube, ray, t0, t1)) return;
+        ScratchSpans runSpans(ctx.scratch);
+        SpanSearch s{this, &ray, &ctx, t0, t1, slackFor(ray), &*runSpans, &out};
+        uint64_t steps = 0;
+        const bool complete = mGrid->walk(ray, t0, t1, &SpanSearch::visit, &s, steps);
+        ctx.stats.cellsVisited += steps;
+        s.flush();
+        if (!complete) return mObject->spans(ray, tmin, tmax, ctx, out);  // rounding: as is
+        s.close();
+        // No boundary cell on the way: the ray is all outside, or all inside full cells.
+        if (!s.anyRun && mGrid->fullAt(ray.at(0.5 * t0 + 0.5 * t1))) {
+            Boundary a, b;
+            a.t = t0, b.t = t1;
+            out.push_back({a, b});
+        }
+        dropThinSpans(out, ctx.relTolerance);
     }
     double value(const Vec3& p) const override { return mObject->value(p); }
     Interval valueInterval(const IntervalVec3& box) const override {
@@ -208,6 +228,101 @@ private:
         }
     };
 
+    /// The state of one spans() walk: each run's spans, from its tree over the run and
+    /// margins past both ends (so that thinness is judged on real extents), cut at the run's
+    /// ends and joined to the previous run's where the ray stays inside across the cut.
+    struct SpanSearch {
+        const OctreeNode* node;
+        const Ray* ray;
+        TraceContext* ctx;
+        double tmin, tmax, slack;
+        SpanList* runSpans;
+        SpanList* out;
+        int32_t runCell = kNoCell;
+        double runStart = 0.0, runEnd = 0.0;
+        bool anyRun = false;
+        /// The last output span ends at a cut (the ray was inside at the run's end); `realEnd`
+        /// is where that run's tree ended it (a surface in the margin, or a clip).
+        bool openAtCut = false;
+        Boundary realEnd;
+
+        static Boundary cutAt(const Boundary& real, double t) {
+            Boundary b = real;  // keeps the material and normal, but is no surface
+            b.t = t;
+            b.primitive = 0;
+            return b;
+        }
+
+        void flush() {
+            if (runCell == kNoCell) return;
+            const int32_t cell = runCell;
+            runCell = kNoCell;
+            const double margin =
+                4.0 * ctx->relTolerance * std::max(std::fabs(runStart), std::fabs(runEnd)) +
+                slack;
+            const double lo = std::max(tmin, runStart - margin);
+            const double hi = std::min(tmax, runEnd + margin);
+            node->mCellNodes[size_t(cell)]->spans(*ray, lo, hi, *ctx, *runSpans);
+            const bool firstRun = !anyRun;
+            anyRun = true;
+            const bool wasOpen = openAtCut;  // the previous run ended inside, at its cut
+            bool first = true;
+            for (const Span& sp : *runSpans) {
+                if (!(sp.out.t > runStart) || !(sp.in.t < runEnd)) continue;  // the neighbours'
+                Span piece = sp;
+                const bool startsBefore = sp.in.t <= runStart;
+                // An end exactly at the run's end is this run's (ranges are closed above).
+                const bool endsAfter = sp.out.t > runEnd;
+                if (endsAfter) piece.out = cutAt(sp.out, runEnd);
+                if (first && wasOpen && startsBefore) {  // inside across the cut: one span
+                    out->back().out = piece.out;
+                } else {
+                    if (first && wasOpen) closeOpen();
+                    // Inside from the start through full cells (a clip at the search's start),
+                    // or entered in the margin (its real entry).
+                    if (startsBefore && firstRun && !sp.in.isSurface())
+                        piece.in = cutAt(sp.in, tmin);
+                    out->push_back(piece);
+                }
+                first = false;
+                openAtCut = endsAfter;
+                realEnd = sp.out;
+            }
+            if (first && wasOpen) closeOpen();
+        }
+
+        /// A span left open at a cut that the next run does not continue ends where its own
+        /// tree ended it.
+        void closeOpen() {
+            out->back().out = realEnd;
+            openAtCut = false;
+        }
+
+        /// After the walk: a span open at the last cut ends where its tree ended it, or runs
+        /// on through full cells to the end of the range.
+        void close() {
+            if (!openAtCut) return;
+            out->back().out = realEnd.isSurface() && realEnd.t <= tmax ? realEnd
+                                                                       : cutAt(realEnd, tmax);
+            openAtCut = false;
+        }
+
+        static bool visit(void* context, const GridSegment& seg) {
+            auto& s = *static_cast<SpanSearch*>(context);
+            if (seg.cell != kNoCell && seg.cell == s.runCell) {
+                s.runEnd = seg.t1;
+                return true;
+            }
+            s.flush();
+            if (seg.cell != kNoCell) {
+                s.runCell = seg.cell;
+                s.runStart = seg.t0;
+                s.runEnd = seg.t1;
+            }
+            return true;
+        }
+    };
+
     /// Slack in t for segment ends: coordinate rounding over the ray's speed, plus t's own.
     double slackFor(const Ray& ray) const {
         const double speed = std::max({std::fabs(ray.dir.x), std::fabs(ray.dir.y),
@@ -220,6 +335,7 @@ private:
     NodePtr mObject;
     std::vector<NodePtr> mCellNodes;
     std::unique_ptr<CellGrid> mGrid;
+    Bounds3 mCube;  ///< the grid's cube: the bounds and a margin of one cell
     double mCoordinateSlack = 0.0;
 };
 
