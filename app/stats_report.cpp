@@ -52,11 +52,14 @@ void printStats(const RunReport& report, std::ostream& out) {
         out << line("octree objects", count(uint64_t(o.objects)) + ", finest level " +
                                           std::to_string(o.maxDepth) +
                                           formatDouble(", finest cell %.3g", o.finestCell));
+        out << line("octree bricks", count(o.bricksBuilt) + " of " + count(o.bricks) +
+                                         " built (8³ cells each, on first use)");
         out << line("octree cells", count(o.boundaryCells) + " boundary, " + count(o.fullBlocks) +
                                         " full blocks, " + count(o.cellsClassified) +
                                         " classified");
         out << line("octree memory", formatDouble("%.3g MB", double(o.memoryBytes) / 1e6) +
-                                         " (" + count(o.distinctNodes) + " distinct pruned trees)");
+                                         " in grid and cells, besides " + count(o.distinctNodes) +
+                                         " distinct pruned trees");
         if (o.fullTapeOps > 0)
             out << line("pruned tape length",
                         formatDouble("%.3g", double(o.prunedTapeOps) / double(o.boundaryCells)) +
@@ -64,7 +67,7 @@ void printStats(const RunReport& report, std::ostream& out) {
                                          double(o.fullTapeOps) / double(o.boundaryCells)));
         out << line("cells visited / ray", formatDouble("%.3g", double(s.trace.cellsVisited) /
                                                                       double(std::max<uint64_t>(rays, 1))));
-        out << line("octree build", seconds(s.secondsAccel));
+        out << line("octree build", seconds(s.secondsAccel) + " (coarse levels; bricks during trace)");
     }
     if (rays > 0)
         out << line("interval evals / ray",

@@ -162,7 +162,6 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     arena.execute([&] {
         accelerated = accelerate(scene.objects, options.accel, octreeOptions);
     });
-    result.stats.octree = accelerated.octree;
     result.stats.secondsAccel = secondsSince(accelStart);
     const SceneGeometry geometry(std::move(accelerated.objects), accelerated.objectBvh);
     const PixelSampler sampler(spp);
@@ -208,6 +207,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         result.stats.trace += ctx.trace.stats;
     }
     result.stats.secondsTrace = secondsSince(traceStart);
+    result.stats.octree = octreeStats(geometry.objects());
     return result;
 }
 

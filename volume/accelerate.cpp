@@ -26,7 +26,7 @@ AcceleratedObjects accelerate(const std::vector<NodePtr>& objects, Accel accel,
     out.objects.reserve(objects.size());
     for (const NodePtr& o : objects) {
         const bool octree = accel == Accel::Octree || (accel == Accel::Auto && hasImplicitLeaf(o));
-        out.objects.push_back(octree ? withOctree(o, options, out.octree) : o);
+        out.objects.push_back(octree ? withOctree(o, options) : o);
     }
     return out;
 }

@@ -29,7 +29,6 @@ std::optional<Accel> parseAccel(const std::string& name);
 struct AcceleratedObjects {
     std::vector<NodePtr> objects;  ///< the scene's objects, some under an octree
     bool objectBvh = true;         ///< whether SceneGeometry puts a BVH over them
-    OctreeStats octree;
 };
 
 /// The objects as `accel` says, built in parallel in the calling TBB arena.

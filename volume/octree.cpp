@@ -9,6 +9,7 @@
 #include "volume/octree_build.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <unordered_map>
 #include <variant>
@@ -18,6 +19,8 @@ namespace kerf {
 OctreeStats& OctreeStats::operator+=(const OctreeStats& o) {
     objects += o.objects;
     cellsClassified += o.cellsClassified;
+    bricks += o.bricks;
+    bricksBuilt += o.bricksBuilt;
     boundaryCells += o.boundaryCells;
     fullBlocks += o.fullBlocks;
     distinctNodes += o.distinctNodes;
@@ -80,41 +83,49 @@ GridFrame frameFor(const Bounds3& b, const OctreeOptions& options) {
 
 class OctreeNode final : public Node {
 public:
-    OctreeNode(NodePtr object, const GridFrame& frame, OctreeCells cells, OctreeStats& stats)
-        : mObject(std::move(object)) {
+    OctreeNode(NodePtr object, const GridFrame& frame) : mObject(std::move(object)) {
         mBounds = mObject->bounds();
-        std::unordered_map<const Node*, int32_t> index;
-        std::vector<std::pair<CellCoord, int32_t>> boundary;
-        boundary.reserve(cells.boundary.size());
-        std::unordered_map<const Node*, uint64_t> tapeOps;
-        for (auto& [c, node] : cells.boundary) {
-            auto [it, added] = index.emplace(node.get(), int32_t(mCellNodes.size()));
-            if (added) {
-                mCellNodes.push_back(node);
-                tapeOps[node.get()] = implicitTapeOps(node);
-            }
-            stats.prunedTapeOps += tapeOps[node.get()];
-            boundary.push_back({c, it->second});
-        }
-        mGrid = std::make_unique<CellGrid>(frame, boundary, cells.full);
+        mFullTapeOps = implicitTapeOps(mObject);
+        CoarseCells coarse = classifyCoarse(mObject, frame);
+        mCoarseClassified = coarse.classified;
+        mFullBlocks = coarse.full.size();
+        mGrid = std::make_unique<CellGrid>(
+            frame, std::move(coarse.bricks), coarse.full,
+            [this, frame](const CellCoord& corner, const NodePtr& node, BrickContent& out) {
+                classifyBrick(frame, corner, node, out);
+                std::vector<uint64_t> nodeOps;
+                for (const NodePtr& n : out.nodes) nodeOps.push_back(implicitTapeOps(n));
+                uint64_t ops = 0;
+                for (uint16_t c : out.cell)
+                    if (c) ops += nodeOps[c - 1u];
+                mPrunedTapeOps.fetch_add(ops, std::memory_order_relaxed);
+            });
         mCube = frame.cellBox({0, 0, 0}, frame.n);
-        stats.objects += 1;
-        stats.cellsClassified += cells.classified;
-        stats.boundaryCells += boundary.size();
-        stats.fullBlocks += cells.full.size();
-        stats.distinctNodes += mCellNodes.size();
-        stats.fullTapeOps += implicitTapeOps(mObject) * boundary.size();
-        stats.memoryBytes += mGrid->memoryBytes() + mCellNodes.capacity() * sizeof(NodePtr);
-        stats.maxDepth = std::max(stats.maxDepth, int(std::log2(double(frame.n)) + 0.5));
-        OctreeStats local;
-        local.finestCell = frame.h;
-        stats += local;
         // Rounding slack of a segment end: a few ulps of the coordinates involved, in t.
         double magnitude = 0.0;
         for (int a = 0; a < 3; ++a)
             magnitude = std::max({magnitude, std::fabs(frame.origin[a]),
                                   std::fabs(frame.origin[a] + frame.n * frame.h)});
         mCoordinateSlack = 64.0 * 0x1p-52 * magnitude;
+    }
+
+    /// What this octree has built so far.
+    OctreeStats stats() const {
+        const CellGrid::Counts c = mGrid->counts();
+        OctreeStats s;
+        s.objects = 1;
+        s.cellsClassified = mCoarseClassified + c.classified;
+        s.bricks = c.bricks;
+        s.bricksBuilt = c.bricksBuilt;
+        s.boundaryCells = c.boundaryCells;
+        s.fullBlocks = mFullBlocks;
+        s.distinctNodes = c.distinctNodes;
+        s.memoryBytes = c.memoryBytes + c.bricksBuilt * sizeof(BrickContent);
+        s.prunedTapeOps = mPrunedTapeOps.load();
+        s.fullTapeOps = mFullTapeOps * c.boundaryCells;
+        s.maxDepth = int(std::log2(double(mGrid->frame().n)) + 0.5);
+        s.finestCell = mGrid->frame().h;
+        return s;
     }
 
     bool firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx, Boundary& hit,
@@ -179,7 +190,7 @@ private:
         double tmin, tmax, slack;
         Boundary* hit;
         bool* entering;
-        int32_t runCell = kNoCell;
+        const Node* runNode = nullptr;
         double runStart = -kInf, runEnd = -kInf;
         bool found = false;
 
@@ -190,9 +201,9 @@ private:
         /// (dropThinSpans) on its real extent, as the whole tree's search would judge it;
         /// crossings found in the margins belong to the neighbouring runs and are passed over.
         bool flush() {
-            if (runCell == kNoCell) return false;
-            const int32_t cell = runCell;
-            runCell = kNoCell;
+            if (!runNode) return false;
+            const Node& tree = *runNode;
+            runNode = nullptr;
             resumeFrom = runEnd;
             const double margin =
                 4.0 * ctx->relTolerance * std::max(std::fabs(runStart), std::fabs(runEnd)) +
@@ -200,7 +211,6 @@ private:
             const double first = runStart - slack, last = runEnd + slack;
             const double hi = std::min(tmax, runEnd + margin);
             double from = std::max(tmin, runStart - margin);
-            const Node& tree = *node->mCellNodes[size_t(cell)];
             while (from < hi) {
                 if (!tree.firstSurface(*ray, from, hi, *ctx, *hit, *entering)) return false;
                 if (hit->t > last) return false;  // the next run's: it decides there
@@ -212,16 +222,16 @@ private:
 
         static bool visit(void* context, const GridSegment& seg) {
             auto& s = *static_cast<FirstSearch*>(context);
-            if (seg.cell != kNoCell && seg.cell == s.runCell) {
+            if (seg.node && seg.node == s.runNode) {
                 s.runEnd = seg.t1;
                 return true;
             }
             if (s.flush()) return false;
-            if (seg.cell == kNoCell) {
+            if (!seg.node) {
                 s.resumeFrom = seg.t1;
                 return true;
             }
-            s.runCell = seg.cell;
+            s.runNode = seg.node;
             s.runStart = seg.t0;
             s.runEnd = seg.t1;
             return true;
@@ -238,7 +248,7 @@ private:
         double tmin, tmax, slack;
         SpanList* runSpans;
         SpanList* out;
-        int32_t runCell = kNoCell;
+        const Node* runNode = nullptr;
         double runStart = 0.0, runEnd = 0.0;
         bool anyRun = false;
         /// The last output span ends at a cut (the ray was inside at the run's end); `realEnd`
@@ -254,15 +264,15 @@ private:
         }
 
         void flush() {
-            if (runCell == kNoCell) return;
-            const int32_t cell = runCell;
-            runCell = kNoCell;
+            if (!runNode) return;
+            const Node& tree = *runNode;
+            runNode = nullptr;
             const double margin =
                 4.0 * ctx->relTolerance * std::max(std::fabs(runStart), std::fabs(runEnd)) +
                 slack;
             const double lo = std::max(tmin, runStart - margin);
             const double hi = std::min(tmax, runEnd + margin);
-            node->mCellNodes[size_t(cell)]->spans(*ray, lo, hi, *ctx, *runSpans);
+            tree.spans(*ray, lo, hi, *ctx, *runSpans);
             const bool firstRun = !anyRun;
             anyRun = true;
             const bool wasOpen = openAtCut;  // the previous run ended inside, at its cut
@@ -309,13 +319,13 @@ private:
 
         static bool visit(void* context, const GridSegment& seg) {
             auto& s = *static_cast<SpanSearch*>(context);
-            if (seg.cell != kNoCell && seg.cell == s.runCell) {
+            if (seg.node && seg.node == s.runNode) {
                 s.runEnd = seg.t1;
                 return true;
             }
             s.flush();
-            if (seg.cell != kNoCell) {
-                s.runCell = seg.cell;
+            if (seg.node) {
+                s.runNode = seg.node;
                 s.runStart = seg.t0;
                 s.runEnd = seg.t1;
             }
@@ -333,8 +343,9 @@ private:
     }
 
     NodePtr mObject;
-    std::vector<NodePtr> mCellNodes;
     std::unique_ptr<CellGrid> mGrid;
+    uint64_t mCoarseClassified = 0, mFullBlocks = 0, mFullTapeOps = 0;
+    std::atomic<uint64_t> mPrunedTapeOps{0};
     Bounds3 mCube;  ///< the grid's cube: the bounds and a margin of one cell
     double mCoordinateSlack = 0.0;
 };
@@ -347,12 +358,17 @@ bool hasImplicitLeaf(const NodePtr& node) {
     return found;
 }
 
-NodePtr withOctree(const NodePtr& object, const OctreeOptions& options, OctreeStats& stats) {
+NodePtr withOctree(const NodePtr& object, const OctreeOptions& options) {
     const Bounds3& b = object->bounds();
     if (b.empty() || !b.finite()) return object;
-    const GridFrame frame = frameFor(b, options);
-    OctreeCells cells = classifyCells(object, frame);
-    return std::make_shared<OctreeNode>(object, frame, std::move(cells), stats);
+    return std::make_shared<OctreeNode>(object, frameFor(b, options));
+}
+
+OctreeStats octreeStats(const std::vector<NodePtr>& objects) {
+    OctreeStats total;
+    for (const NodePtr& o : objects)
+        if (const auto* tree = dynamic_cast<const OctreeNode*>(o.get())) total += tree->stats();
+    return total;
 }
 
 }  // namespace kerf

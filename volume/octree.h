@@ -8,6 +8,7 @@
 #include "csg/node.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace kerf {
 
@@ -21,7 +22,7 @@ struct OctreeOptions {
     double footprintPerDistance = 0.0;
 };
 
-constexpr int kMinOctreeDepth = 2;
+constexpr int kMinOctreeDepth = 3;  ///< one brick of 8³ cells
 constexpr int kMaxOctreeDepth = 10;
 constexpr double kCellsPerFootprint = 8.0;
 
@@ -29,8 +30,10 @@ constexpr double kCellsPerFootprint = 8.0;
 struct OctreeStats {
     int objects = 0;                ///< objects given an octree
     uint64_t cellsClassified = 0;   ///< interval classifications (pruned() calls)
-    uint64_t boundaryCells = 0;     ///< finest cells the surface may cross
-    uint64_t fullBlocks = 0;        ///< octree cells classified all inside
+    uint64_t bricks = 0;            ///< bricks of 8³ finest cells the surface may cross
+    uint64_t bricksBuilt = 0;       ///< of those, the ones rays reached (classified lazily)
+    uint64_t boundaryCells = 0;     ///< finest cells the surface may cross, in built bricks
+    uint64_t fullBlocks = 0;        ///< coarse octree cells classified all inside
     uint64_t distinctNodes = 0;     ///< distinct pruned trees kept by boundary cells
     uint64_t memoryBytes = 0;       ///< OpenVDB trees and cell tables
     /// Implicit tape instructions per boundary cell, summed: pruned against the full tree.
@@ -45,8 +48,12 @@ struct OctreeStats {
 bool hasImplicitLeaf(const NodePtr& node);
 
 /// `object` (finite bounds) under an octree; the result answers spans, firstSurface and the
-/// values exactly as the object does, within the root finder's tolerance. Builds in parallel
-/// in the calling TBB arena.
-NodePtr withOctree(const NodePtr& object, const OctreeOptions& options, OctreeStats& stats);
+/// values exactly as the object does, within the root finder's tolerance. The coarse levels
+/// are built now, in parallel in the calling TBB arena; each brick's cells when a ray first
+/// reaches it.
+NodePtr withOctree(const NodePtr& object, const OctreeOptions& options);
+
+/// What the octrees among `objects` have built so far, summed.
+OctreeStats octreeStats(const std::vector<NodePtr>& objects);
 
 }  // namespace kerf

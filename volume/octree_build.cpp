@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace kerf {
 
@@ -18,72 +19,94 @@ struct Pending {
     NodePtr node;  ///< the parent's pruned tree: equal to the object inside this cell
 };
 
-/// Classifies one cell and, if the surface may cross it, its children (depth first).
-void classify(const GridFrame& frame, const Pending& cell, OctreeCells& out) {
-    const Pruned r = pruned(cell.node, frame.cellBox(cell.corner, cell.size));
-    ++out.classified;
-    if (r.state == PruneState::Empty) return;
-    if (r.state == PruneState::Full) {
-        out.full.push_back({cell.corner, cell.size});
-        return;
-    }
-    if (cell.size == 1) {
-        out.boundary.push_back({cell.corner, r.node});
-        return;
-    }
-    const int32_t half = cell.size / 2;
-    for (int i = 0; i < 8; ++i) {
-        const CellCoord c{cell.corner[0] + ((i & 1) ? half : 0),
-                          cell.corner[1] + ((i & 2) ? half : 0),
-                          cell.corner[2] + ((i & 4) ? half : 0)};
-        classify(frame, {c, half, r.node}, out);
-    }
+CellCoord childCorner(const CellCoord& c, int32_t half, int i) {
+    return {c[0] + ((i & 1) ? half : 0), c[1] + ((i & 2) ? half : 0),
+            c[2] + ((i & 4) ? half : 0)};
 }
 
-/// Splits the cube into the cells of a coarse level (classifying on the way) so that the
-/// rest can run in parallel, one coarse cell a task.
-void splitCoarse(const GridFrame& frame, const Pending& cell, int32_t stopSize,
-                 std::vector<Pending>& tasks, OctreeCells& out) {
-    if (cell.size <= stopSize) {
-        tasks.push_back(cell);
-        return;
-    }
+/// Classifies one cell and, while it is larger than `stopSize` and the surface may cross it,
+/// its children (depth first). Cells of stopSize the surface may cross go to `reached`.
+template <class Reached, class Full>
+void classify(const GridFrame& frame, const Pending& cell, int32_t stopSize, uint64_t& classified,
+              Reached&& reached, Full&& full) {
     const Pruned r = pruned(cell.node, frame.cellBox(cell.corner, cell.size));
-    ++out.classified;
+    ++classified;
     if (r.state == PruneState::Empty) return;
-    if (r.state == PruneState::Full) {
-        out.full.push_back({cell.corner, cell.size});
-        return;
-    }
+    if (r.state == PruneState::Full) return full(cell.corner, cell.size);
+    if (cell.size == stopSize) return reached(cell.corner, r.node);
     const int32_t half = cell.size / 2;
-    for (int i = 0; i < 8; ++i) {
-        const CellCoord c{cell.corner[0] + ((i & 1) ? half : 0),
-                          cell.corner[1] + ((i & 2) ? half : 0),
-                          cell.corner[2] + ((i & 4) ? half : 0)};
-        splitCoarse(frame, {c, half, r.node}, stopSize, tasks, out);
-    }
+    for (int i = 0; i < 8; ++i)
+        classify(frame, {childCorner(cell.corner, half, i), half, r.node}, stopSize, classified,
+                 reached, full);
 }
 
 }  // namespace
 
-OctreeCells classifyCells(const NodePtr& object, const GridFrame& frame) {
-    OctreeCells result;
+CoarseCells classifyCoarse(const NodePtr& object, const GridFrame& frame) {
+    CoarseCells result;
+    // Down to cells of a quarter of the cube serially (at most 73 classifications), then one
+    // task per such cell: up to 64 tasks, enough to balance two to eight threads.
     std::vector<Pending> tasks;
-    // Two levels below the root give up to 64 tasks: enough to balance two to eight threads.
-    splitCoarse(frame, {{0, 0, 0}, frame.n, object}, std::max(1, frame.n / 4), tasks, result);
-    tbb::enumerable_thread_specific<OctreeCells> parts;
-    tbb::parallel_for(size_t(0), tasks.size(), [&](size_t i) { classify(frame, tasks[i], parts.local()); });
-    for (OctreeCells& p : parts) {
-        result.classified += p.classified;
-        result.boundary.insert(result.boundary.end(), std::make_move_iterator(p.boundary.begin()),
-                               std::make_move_iterator(p.boundary.end()));
-        result.full.insert(result.full.end(), p.full.begin(), p.full.end());
+    const int32_t taskSize = std::max(kBrickCells, frame.n / 4);
+    auto addFull = [&](const CellCoord& c, int32_t size) { result.full.push_back({c, size}); };
+    classify(
+        frame, {{0, 0, 0}, frame.n, object}, taskSize, result.classified,
+        [&](const CellCoord& c, const NodePtr& n) { tasks.push_back({c, taskSize, n}); }, addFull);
+    struct Part {
+        CoarseCells cells;
+    };
+    tbb::enumerable_thread_specific<Part> parts;
+    tbb::parallel_for(size_t(0), tasks.size(), [&](size_t i) {
+        CoarseCells& out = parts.local().cells;
+        const Pending& t = tasks[i];
+        if (t.size == kBrickCells) {  // the task is a brick already
+            out.bricks.push_back({t.corner, t.node});
+            return;
+        }
+        // The task's own cell was classified above; its children from here.
+        const int32_t half = t.size / 2;
+        for (int k = 0; k < 8; ++k)
+            classify(
+                frame, {childCorner(t.corner, half, k), half, t.node}, kBrickCells,
+                out.classified,
+                [&](const CellCoord& c, const NodePtr& n) { out.bricks.push_back({c, n}); },
+                [&](const CellCoord& c, int32_t size) { out.full.push_back({c, size}); });
+    });
+    for (Part& p : parts) {
+        result.classified += p.cells.classified;
+        result.bricks.insert(result.bricks.end(), std::make_move_iterator(p.cells.bricks.begin()),
+                             std::make_move_iterator(p.cells.bricks.end()));
+        result.full.insert(result.full.end(), p.cells.full.begin(), p.cells.full.end());
     }
-    // Sorted, so the cell indices (and so everything after) do not depend on the threads.
-    std::sort(result.boundary.begin(), result.boundary.end(),
+    // Sorted, so brick indices (and so everything after) do not depend on the threads.
+    std::sort(result.bricks.begin(), result.bricks.end(),
               [](const auto& a, const auto& b) { return a.first < b.first; });
     std::sort(result.full.begin(), result.full.end());
     return result;
+}
+
+void classifyBrick(const GridFrame& frame, const CellCoord& corner, const NodePtr& node,
+                   BrickContent& out) {
+    std::unordered_map<const Node*, uint16_t> slot;  // 1 + index in out.nodes
+    const int32_t half = kBrickCells / 2;
+    auto local = [&](const CellCoord& c, int a) { return c[a] - corner[a]; };
+    for (int k = 0; k < 8; ++k)
+        classify(
+            frame, {childCorner(corner, half, k), half, node}, 1, out.classified,
+            [&](const CellCoord& c, const NodePtr& n) {
+                auto [it, added] = slot.emplace(n.get(), uint16_t(out.nodes.size() + 1));
+                if (added) out.nodes.push_back(n);
+                out.cell[size_t(BrickContent::index(local(c, 0), local(c, 1), local(c, 2)))] =
+                    it->second;
+                ++out.boundaryCells;
+            },
+            [&](const CellCoord& c, int32_t size) {
+                for (int x = 0; x < size; ++x)
+                    for (int y = 0; y < size; ++y)
+                        for (int z = 0; z < size; ++z)
+                            out.full[size_t(BrickContent::index(local(c, 0) + x, local(c, 1) + y,
+                                                                local(c, 2) + z))] = true;
+            });
 }
 
 }  // namespace kerf

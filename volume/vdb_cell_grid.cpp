@@ -1,14 +1,16 @@
-// The octree's finest cells in an OpenVDB Int32 tree, and the ray walk over it. The walk uses
-// OpenVDB's node hierarchy for its skips (a 128³ or 8³ node without boundary cells is crossed
-// in one step) but computes every segment end from the block's own planes, so the segments a
-// ray is given are exact up to one rounded division each.
+// The octree's coarse levels in an OpenVDB Int32 tree of tiles, bricks refined on first use,
+// and the ray walk over both. The walk uses OpenVDB's node hierarchy for its skips (a 128³ or
+// 8³ tile without surface is crossed in one step) but computes every segment end from the
+// block's own planes, so the segments are exact up to one rounded division each.
 #include "volume/cell_grid.h"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tree/ValueAccessor.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <mutex>
 
 namespace kerf {
 
@@ -19,6 +21,7 @@ constexpr int32_t kFullValue = -2;   // inactive, inside the solid
 
 using Tree = openvdb::Int32Tree;
 using Accessor = openvdb::tree::ValueAccessor<const Tree, /*IsSafe=*/false>;
+static_assert(Tree::LeafNodeType::DIM == kBrickCells, "a brick is one OpenVDB leaf's extent");
 
 /// Side, in cells, of the region a value found at OpenVDB tree depth `depth` stands for
 /// (getValueDepth: −1 background, 0 root tile, 1 and 2 internal-node tiles, 3 a voxel).
@@ -31,27 +34,70 @@ int32_t regionSize(int depth) {
     }
 }
 
+struct Brick {
+    CellCoord corner;
+    NodePtr node;
+    std::once_flag once;
+    std::unique_ptr<BrickContent> content;  ///< made when a ray first reaches the brick
+};
+
 }  // namespace
 
 struct CellGrid::Impl {
     Tree tree{kEmptyValue};
+    std::vector<std::unique_ptr<Brick>> bricks;
+    BrickBuilder builder;
+    std::atomic<uint64_t> built{0}, boundaryCells{0}, classified{0}, distinctNodes{0};
+
+    /// The brick's content, classified now if no ray has reached it before.
+    const BrickContent& content(int32_t index) {
+        Brick& b = *bricks[size_t(index)];
+        std::call_once(b.once, [&] {
+            b.content = std::make_unique<BrickContent>();
+            builder(b.corner, b.node, *b.content);
+            built.fetch_add(1, std::memory_order_relaxed);
+            boundaryCells.fetch_add(b.content->boundaryCells, std::memory_order_relaxed);
+            classified.fetch_add(b.content->classified, std::memory_order_relaxed);
+            distinctNodes.fetch_add(b.content->nodes.size(), std::memory_order_relaxed);
+        });
+        return *b.content;
+    }
 };
 
-CellGrid::CellGrid(const GridFrame& frame,
-                   const std::vector<std::pair<CellCoord, int32_t>>& boundary,
-                   const std::vector<std::pair<CellCoord, int32_t>>& fullBlocks)
+CellGrid::CellGrid(const GridFrame& frame, std::vector<std::pair<CellCoord, NodePtr>> bricks,
+                   const std::vector<std::pair<CellCoord, int32_t>>& fullBlocks,
+                   BrickBuilder builder)
     : mFrame(frame), mImpl(std::make_unique<Impl>()) {
+    mImpl->builder = std::move(builder);
     for (const auto& [c, size] : fullBlocks) {
         const openvdb::Coord lo(c[0], c[1], c[2]);
         mImpl->tree.fill(openvdb::CoordBBox(lo, lo.offsetBy(size - 1)), kFullValue, false);
     }
-    openvdb::tree::ValueAccessor<Tree> acc(mImpl->tree);
-    for (const auto& [c, index] : boundary) acc.setValueOn(openvdb::Coord(c[0], c[1], c[2]), index);
+    mImpl->bricks.reserve(bricks.size());
+    for (auto& [c, node] : bricks) {
+        const int32_t index = int32_t(mImpl->bricks.size());
+        auto b = std::make_unique<Brick>();
+        b->corner = c;
+        b->node = std::move(node);
+        mImpl->bricks.push_back(std::move(b));
+        // An active tile one leaf node wide: the walk finds the brick without a leaf node.
+        const openvdb::Coord lo(c[0], c[1], c[2]);
+        mImpl->tree.addTile(/*level=*/1, lo, index, /*active=*/true);
+    }
 }
 
 CellGrid::~CellGrid() = default;
 
-uint64_t CellGrid::memoryBytes() const { return mImpl->tree.memUsage(); }
+CellGrid::Counts CellGrid::counts() const {
+    Counts c;
+    c.bricks = mImpl->bricks.size();
+    c.bricksBuilt = mImpl->built.load();
+    c.boundaryCells = mImpl->boundaryCells.load();
+    c.classified = mImpl->classified.load();
+    c.distinctNodes = mImpl->distinctNodes.load();
+    c.memoryBytes = mImpl->tree.memUsage() + c.bricks * sizeof(Brick);
+    return c;
+}
 
 bool CellGrid::fullAt(const Vec3& p) const {
     openvdb::Coord ijk;
@@ -60,7 +106,10 @@ bool CellGrid::fullAt(const Vec3& p) const {
         if (!(c >= 0.0 && c < double(mFrame.n))) return false;
         ijk[a] = int32_t(c);
     }
-    return mImpl->tree.getValue(ijk) == kFullValue;
+    int32_t value = kEmptyValue;
+    if (!mImpl->tree.probeValue(ijk, value)) return value == kFullValue;
+    const BrickContent& b = mImpl->content(value);
+    return b.full[BrickContent::index(ijk[0] & 7, ijk[1] & 7, ijk[2] & 7)];
 }
 
 bool CellGrid::walk(const Ray& ray, double tmin, double tmax, SegmentVisitor visit,
@@ -81,8 +130,15 @@ bool CellGrid::walk(const Ray& ray, double tmin, double tmax, SegmentVisitor vis
     for (int64_t step = 0; step < limit; ++step) {
         ++steps;
         int32_t value = kEmptyValue;
-        const bool boundary = acc.probeValue(ijk, value);
-        const int32_t size = boundary ? 1 : regionSize(acc.getValueDepth(ijk));
+        const Node* node = nullptr;
+        int32_t size;
+        if (acc.probeValue(ijk, value)) {  // a brick the surface may cross: one cell
+            const BrickContent& b = mImpl->content(value);
+            node = b.nodeAt(BrickContent::index(ijk[0] & 7, ijk[1] & 7, ijk[2] & 7));
+            size = 1;
+        } else {
+            size = regionSize(acc.getValueDepth(ijk));
+        }
         openvdb::Coord block;
         for (int a = 0; a < 3; ++a) block[a] = ijk[a] & ~(size - 1);
         double tExit = tmax;
@@ -100,7 +156,7 @@ bool CellGrid::walk(const Ray& ray, double tmin, double tmax, SegmentVisitor vis
             if (te < tExit) tExit = te, axis = a;
         }
         tExit = std::max(tExit, t);
-        if (!visit(context, {t, tExit, boundary ? value : kNoCell})) return true;
+        if (!visit(context, {t, tExit, node})) return true;
         if (axis < 0) return true;  // tmax reached inside this block
         const int32_t next = ray.dir[axis] > 0.0 ? block[axis] + size : block[axis] - 1;
         if (next < 0 || next >= f.n) return true;  // left the cube

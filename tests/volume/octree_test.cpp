@@ -185,7 +185,7 @@ TEST_CASE("octree answers as the plain tree on a gyroid ball, at several depths"
 
 TEST_CASE("octree finds surfaces on an implicit's bound box next to full cells", "[octree]") {
     const Scene scene = compiled(kGyroidBox);
-    for (int depth : {2, 4, 6}) {
+    for (int depth : {3, 4, 6}) {
         INFO("depth " << depth);
         requireSame(compare(scene, 80, 60, Accel::Octree, depth));
     }
