@@ -41,7 +41,8 @@ struct ConeParams { Vec3 a, b; double r1, r2; };
 struct TorusParams { double majorRadius, minorRadius; };
 struct HalfSpaceParams { Vec3 normal; double offset; };
 struct ImplicitParams { std::shared_ptr<const Tape> tape; Bounds3 bound; };
-struct TransformParams { Affine worldFromLocal; };
+/// The map and the inverse the node keeps (computed once, with care for rounding).
+struct TransformParams { Affine worldFromLocal; Affine localFromWorld; };
 struct MaterialParams { int32_t material; };
 struct BooleanParams { BoolOp op; };
 

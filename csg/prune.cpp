@@ -31,8 +31,7 @@ NodePtr rebuilt(const NodePtr& node, std::vector<NodePtr> kids) {
 /// The box in the child's space of a transform: each local coordinate is an affine form of
 /// the world ones, evaluated on intervals (outward rounding), so every point of the box maps
 /// inside it.
-Bounds3 localBox(const Affine& worldFromLocal, const Bounds3& box) {
-    const Affine localFromWorld = worldFromLocal.inverse();
+Bounds3 localBox(const Affine& localFromWorld, const Bounds3& box) {
     const Interval in[3] = {Interval(box.lo.x, box.hi.x), Interval(box.lo.y, box.hi.y),
                             Interval(box.lo.z, box.hi.z)};
     Bounds3 out;
@@ -142,7 +141,7 @@ Pruned pruned(const NodePtr& node, const Bounds3& box) {
             const NodePtr& child = node->children()[0];
             const Bounds3 childBox =
                 node->kind() == NodeKind::Transform
-                    ? localBox(std::get<TransformParams>(node->params()).worldFromLocal, box)
+                    ? localBox(std::get<TransformParams>(node->params()).localFromWorld, box)
                     : box;
             const Pruned r = pruned(child, childBox);
             if (r.state != PruneState::Partial) return r;

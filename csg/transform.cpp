@@ -67,7 +67,7 @@ public:
 
 
     NodeKind kind() const override { return NodeKind::Transform; }
-    NodeParams params() const override { return TransformParams{mWorldFromLocal}; }
+    NodeParams params() const override { return TransformParams{mWorldFromLocal, mLocalFromWorld}; }
     NodeSpan children() const override { return {&mChild, 1}; }
     NodePtr withChildren(std::vector<NodePtr> children) const override {
         return std::make_shared<TransformNode>(std::move(children.at(0)), *this);

@@ -26,7 +26,7 @@ ExprId treeExpr(const Node& node, ExprGraph& g, ExprId x, ExprId y, ExprId z) {
     if (kind == NodeKind::Material) return treeExpr(*kids[0], g, x, y, z);
     if (kind == NodeKind::Transform) {
         // As TransformNode::value: the point mapped by the inverse, row by row.
-        const Affine m = std::get<TransformParams>(node.params()).worldFromLocal.inverse();
+        const Affine m = std::get<TransformParams>(node.params()).localFromWorld;
         ExprId local[3];
         for (int row = 0; row < 3; ++row) {
             const Vec3 k(m.linear[0][row], m.linear[1][row], m.linear[2][row]);
