@@ -16,7 +16,7 @@ std::string formatVector(const Vec3& v) {
 }
 
 /// Counts one level of lowering recursion (the caller leaves with --mDepth); too deep is an error.
-bool Lowering::enter(const SourceLoc& at) {
+bool Lowering::enter(SourcePos at) {
     if (++mDepth <= kMaxLoweringDepth) return true;
     --mDepth;
     if (mTooDeepReported) return false;  // one report; the rest of the chain fails quietly
@@ -26,7 +26,7 @@ bool Lowering::enter(const SourceLoc& at) {
     return false;
 }
 
-void Lowering::error(const SourceLoc& loc, std::string message, std::string hint) {
+void Lowering::error(SourcePos loc, std::string message, std::string hint) {
     mSink.error(loc, std::move(message), std::move(hint));
 }
 
@@ -59,7 +59,7 @@ void Lowering::collectDefinitions(const Program& program, Scene& scene) {
         auto [it, inserted] = table.try_emplace(s.name);
         if (!inserted) {
             error(s.nameLoc, std::string(what) + " '" + s.name + "' is already defined",
-                  "first defined at " + where(it->second.def->nameLoc));
+                  "first defined at " + where(mSink.locate(it->second.def->nameLoc)));
             return false;
         }
         it->second.def = &s;
@@ -89,7 +89,7 @@ void Lowering::lowerDefinitions() {
     const auto state = [&](const Statement* def) {
         return def->kind == Statement::Kind::Let ? mLets[def->name].state : mSolids[def->name].state;
     };
-    for (const OrderedDefinition& d : definitionOrder(lets, solids)) {
+    for (const OrderedDefinition& d : definitionOrder(lets, solids, mSink)) {
         const bool isLet = d.def->kind == Statement::Kind::Let;
         if (d.level <= kMaxNameDepth) {
             if (isLet)
@@ -112,7 +112,7 @@ void Lowering::lowerDefinitions() {
 
 bool Lowering::onlyOnce(const Statement& s, const Statement*& first, const char* what) {
     if (first) {
-        error(s.loc, std::string(what) + " given twice", "first given at " + where(first->loc));
+        error(s.loc, std::string(what) + " given twice", "first given at " + where(mSink.locate(first->loc)));
         return false;
     }
     first = &s;
