@@ -4,8 +4,8 @@
 ///
 /// A model can hold millions of nodes, so the tree is laid out for memory (docs/robustness.md,
 /// "Parse memory"): positions are 8-byte offsets (DiagnosticSink::locate finds line and
-/// column), expressions are 40-byte values in the program's arena with their operands stored
-/// side by side, and names are interned there.
+/// column); expressions (40 bytes) and solids are values in the program's arena, each node's
+/// operands, children, properties and modifiers stored side by side; names are interned there.
 #pragma once
 
 #include "lang/ast_arena.h"
@@ -14,28 +14,36 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace kerf {
 
-struct Expr;
-
-/// The operands of an expression or a modifier: `count` expressions side by side in the arena.
-class ExprList {
+/// Nodes side by side in the arena: the operands of an expression, the children, properties
+/// and modifiers of a solid. Read like a const std::vector.
+template <class T>
+class ArenaList {
 public:
-    ExprList() = default;
-    ExprList(const Expr* first, uint32_t count) : mFirst(first), mCount(count) {}
-    const Expr* begin() const { return mFirst; }
-    inline const Expr* end() const;
+    ArenaList() = default;
+    ArenaList(const T* first, uint32_t count) : mFirst(first), mCount(count) {}
+    const T* begin() const { return mFirst; }
+    const T* end() const { return mFirst + mCount; }
     size_t size() const { return mCount; }
     bool empty() const { return mCount == 0; }
-    inline const Expr& operator[](size_t i) const;
+    const T& operator[](size_t i) const { return mFirst[i]; }
+    const T& at(size_t i) const {
+        if (i >= mCount) throw std::out_of_range("ArenaList::at");
+        return mFirst[i];
+    }
 
 private:
-    const Expr* mFirst = nullptr;
+    const T* mFirst = nullptr;
     uint32_t mCount = 0;
 };
+
+struct Expr;
+using ExprList = ArenaList<Expr>;
 
 /// An arithmetic expression. Trivially copyable: it lives in the arena and is never destroyed.
 struct Expr {
@@ -68,14 +76,14 @@ struct Expr {
 using ExprPtr = const Expr*;  ///< owned by the program's arena
 
 struct Solid;
-using SolidPtr = std::unique_ptr<Solid>;
+using SolidPtr = const Solid*;  ///< owned by the program's arena
 
 /// `name value` inside a block; the value is an expression or (for `bound`) a solid.
 struct Property {
     Name name;
-    SourcePos loc;    ///< of the name
-    ExprPtr expr = nullptr;  ///< set unless the value is a solid
-    SolidPtr solid;   ///< set when the value is written as `kind { … }`
+    SourcePos loc;             ///< of the name
+    ExprPtr expr = nullptr;    ///< set unless the value is a solid
+    SolidPtr solid = nullptr;  ///< set when the value is written as `kind { … }`
     SourcePos valueLoc() const;
 };
 
@@ -90,6 +98,7 @@ struct Modifier {
     SourcePos materialLoc;
 };
 
+/// A solid as written. Trivially copyable like Expr: its lists are in the arena.
 struct Solid {
     enum class Kind : uint8_t {
         Primitive,  ///< `kind { properties }`; the kind is checked when lowering
@@ -99,9 +108,9 @@ struct Solid {
     Kind kind = Kind::Primitive;
     SourcePos loc;     ///< of the kind keyword or the name
     Name name;         ///< the primitive kind, the Boolean operation, or the referenced name
-    std::vector<Property> properties;
-    std::vector<SolidPtr> children;
-    std::vector<Modifier> modifiers;
+    ArenaList<Property> properties;
+    ArenaList<Solid> children;
+    ArenaList<Modifier> modifiers;
 };
 
 struct Statement {
@@ -114,8 +123,8 @@ struct Statement {
     std::string name;   ///< let/solid/material name, the light kind, or the include path
     SourcePos nameLoc;
     ExprPtr expr = nullptr;  ///< let, background
-    SolidPtr solid;     ///< solid, object
-    std::vector<Property> properties;  ///< material, camera, light, mist, render
+    SolidPtr solid = nullptr;  ///< solid, object
+    ArenaList<Property> properties;  ///< material, camera, light, mist, render
 };
 
 struct Program {
@@ -125,9 +134,6 @@ struct Program {
     /// The expressions and names of the statements (one arena per file parsed).
     std::vector<std::unique_ptr<AstArena>> arenas;
 };
-
-inline const Expr* ExprList::end() const { return mFirst + mCount; }
-inline const Expr& ExprList::operator[](size_t i) const { return mFirst[i]; }
 
 inline SourcePos Property::valueLoc() const {
     if (expr) return expr->start;

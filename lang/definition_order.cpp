@@ -31,7 +31,7 @@ public:
         mExprs.clear();
         mSolidStack.clear();
         if (s.expr) mExprs.push_back(s.expr);
-        if (s.solid) mSolidStack.push_back(s.solid.get());
+        if (s.solid) mSolidStack.push_back(s.solid);
         while (!mExprs.empty() || !mSolidStack.empty()) {
             if (!mSolidStack.empty()) {
                 const Solid* solid = mSolidStack.back();
@@ -39,11 +39,11 @@ public:
                 if (solid->kind == Solid::Kind::Reference) add(mSolids, solid->name, solid->loc, uses);
                 for (const Property& p : solid->properties) {
                     if (p.expr) mExprs.push_back(p.expr);
-                    if (p.solid) mSolidStack.push_back(p.solid.get());
+                    if (p.solid) mSolidStack.push_back(p.solid);
                 }
                 for (const Modifier& m : solid->modifiers)
                     for (const Expr& a : m.args) mExprs.push_back(&a);
-                for (const SolidPtr& c : solid->children) mSolidStack.push_back(c.get());
+                for (const Solid& c : solid->children) mSolidStack.push_back(&c);
                 continue;
             }
             const Expr* e = mExprs.back();

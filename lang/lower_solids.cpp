@@ -118,8 +118,8 @@ NodePtr Lowering::lowerBoolean(const Solid& s) {
     }
     std::vector<NodePtr> children;
     bool ok = true;
-    for (const SolidPtr& c : s.children) {
-        NodePtr child = lowerSolid(*c);
+    for (const Solid& c : s.children) {
+        NodePtr child = lowerSolid(c);
         ok = ok && child;
         children.push_back(child);
     }
@@ -133,6 +133,9 @@ NodePtr Lowering::lowerBoolean(const Solid& s) {
 }
 
 int Lowering::heightOf(const NodePtr& node) {
+    // Leaves are not memoised: their height is known, and a memo entry (about 56 bytes) would
+    // cost more than the primitive itself.
+    if (node->children().size() == 0) return 1;
     const auto it = mHeights.find(node.get());
     if (it != mHeights.end()) return it->second.second;
     // Only nodes made since the last call are not memoised yet: a few levels at most.

@@ -73,6 +73,16 @@ public:
     }
 
 private:
+    // ---- the arena: nodes are built as values, then copied into it side by side ----
+    template <class T>
+    const T* store(const T& node) { return mArena->copy(&node, 1); }
+    template <class T>
+    ArenaList<T> list(const T* values, size_t n) {
+        return ArenaList<T>(mArena->copy(values, n), static_cast<uint32_t>(n));
+    }
+    template <class T>
+    ArenaList<T> list(const std::vector<T>& values) { return list(values.data(), values.size()); }
+
     // ---- token access ----
     const Token& peek(size_t ahead = 0) { return mTokens.at(mPos + ahead); }
     bool check(TokenKind k) { return peek().kind == k; }
@@ -188,11 +198,11 @@ private:
             s.kind = Statement::Kind::SolidDef;
             parseDefinedName(s, "solid");
             expect(TokenKind::Equals, "after the name of the solid");
-            s.solid = parseSolid(true);
+            s.solid = store(parseSolid(true));
             expect(TokenKind::Semicolon, "after the solid statement");
         } else if (word == "object") {
             s.kind = Statement::Kind::Object;
-            s.solid = parseSolid(true);
+            s.solid = store(parseSolid(true));
             expect(TokenKind::Semicolon, "after the object statement");
         } else if (word == "material") {
             s.kind = Statement::Kind::Material;
@@ -229,14 +239,15 @@ private:
     }
 
     /// `{ name value … }`; an optional ';' may follow the block.
-    void parseBlock(std::vector<Property>& properties) {
+    void parseBlock(ArenaList<Property>& properties) {
         const SourceLoc open = peek().loc;
         expect(TokenKind::LBrace, "to open the block");
-        parseProperties(properties, open);
+        properties = parseProperties(open);
         accept(TokenKind::Semicolon);
     }
 
-    void parseProperties(std::vector<Property>& properties, const SourceLoc& open) {
+    ArenaList<Property> parseProperties(const SourceLoc& open) {
+        std::vector<Property> properties;
         while (!accept(TokenKind::RBrace)) {
             if (check(TokenKind::End) || (peek().firstOnLine && startsStatement()))
                 fail(peek().loc, "expected '}' to close the block opened at line " + std::to_string(open.line) +
@@ -246,17 +257,20 @@ private:
             p.name = mArena->intern(name.text);
             p.loc = name.pos;
             if (check(TokenKind::Identifier) && peek(1).kind == TokenKind::LBrace)
-                p.solid = parseSolid(false);
+                p.solid = store(parseSolid(false));
             else
                 p.expr = store(parseExpr());
-            properties.push_back(std::move(p));
+            properties.push_back(p);
         }
+        return list(properties);
     }
 
     // ---- solids ----
-    SolidPtr parseSolid(bool withModifiers) {
+    /// A solid as a value; its children, properties and modifiers are already in the arena.
+    Solid parseSolid(bool withModifiers) {
         NestingGuard guard(*this);
-        auto solid = std::make_unique<Solid>();
+        Solid result;
+        Solid* solid = &result;
         const Token& t = peek();
         solid->loc = t.pos;
         if (t.kind != TokenKind::Identifier || contains(kModifierWords, t.text) ||
@@ -268,24 +282,27 @@ private:
             next();
             if (contains(kBooleanWords, solid->name)) {
                 solid->kind = Solid::Kind::Boolean;
+                std::vector<Solid> children;
                 while (!accept(TokenKind::RBrace)) {
                     if (check(TokenKind::End) || (peek().firstOnLine && startsStatement()))
                         fail(peek().loc, "expected '}' to close the " + solid->name + " opened at line " +
                                              std::to_string(open.line) + ", found " + describe(peek()));
-                    solid->children.push_back(parseSolid(true));
+                    children.push_back(parseSolid(true));
                 }
+                solid->children = list(children);
             } else {
                 solid->kind = Solid::Kind::Primitive;
-                parseProperties(solid->properties, open);
+                solid->properties = parseProperties(open);
             }
         } else {
             solid->kind = Solid::Kind::Reference;
         }
-        if (withModifiers) parseModifiers(*solid);
-        return solid;
+        if (withModifiers) solid->modifiers = parseModifiers();
+        return result;
     }
 
-    void parseModifiers(Solid& solid) {
+    ArenaList<Modifier> parseModifiers() {
+        std::vector<Modifier> modifiers;
         while (check(TokenKind::Identifier)) {
             const std::string& word = peek().text;
             Modifier m;
@@ -295,7 +312,7 @@ private:
                          : word == "rotate" ? Modifier::Kind::Rotate : Modifier::Kind::Scale;
                 next();
                 const Expr arg = parseExpr();
-                m.args = ExprList(mArena->copy(&arg, 1), 1);
+                m.args = list(&arg, 1);
             } else if (word == "matrix") {
                 m.kind = Modifier::Kind::Matrix;
                 next();
@@ -310,8 +327,9 @@ private:
             } else {
                 break;
             }
-            solid.modifiers.push_back(std::move(m));
+            modifiers.push_back(m);
         }
+        return list(modifiers);
     }
 
     /// `[a, b, …]` with commas, or `[a b …]` separated by blanks, where each entry is a single
@@ -328,7 +346,7 @@ private:
             if (commas && !entries.empty()) expect(TokenKind::Comma, "between matrix entries");
             entries.push_back(commas ? parseExpr() : parseUnary());
         }
-        m.args = operands(entries.data(), entries.size());
+        m.args = list(entries);
     }
 
     bool bracketHasCommas() {
@@ -349,10 +367,6 @@ private:
     // ---- expressions ----
     // Expressions are built as values and their operands copied into the arena side by side.
 
-    const Expr* store(const Expr& e) { return mArena->copy(&e, 1); }
-    ExprList operands(const Expr* values, size_t n) {
-        return ExprList(mArena->copy(values, n), static_cast<uint32_t>(n));
-    }
 
     Expr parseExpr() {
         Expr lhs = parseTerm();
@@ -396,8 +410,7 @@ private:
     }
 
     void setArgs(Expr& e, const Expr* values, size_t n) {
-        const ExprList list = operands(values, n);
-        e.first = list.begin();
+        e.first = list(values, n).begin();
         e.count = static_cast<uint32_t>(n);
     }
 

@@ -7,7 +7,7 @@
 
 namespace kerf {
 
-PropertyBlock::PropertyBlock(const std::vector<Property>& properties, std::vector<PropertySpec> specs,
+PropertyBlock::PropertyBlock(const ArenaList<Property>& properties, std::vector<PropertySpec> specs,
                              std::string what, SourcePos blockLoc, DiagnosticSink& sink)
     : mSpecs(std::move(specs)), mFound(mSpecs.size(), nullptr), mWhat(std::move(what)), mBlockLoc(blockLoc) {
     std::vector<std::string> valid;

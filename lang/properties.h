@@ -24,7 +24,7 @@ class PropertyBlock {
 public:
     /// `what` names the block in messages ("sphere", "camera"); missing properties are reported
     /// at `blockLoc`.
-    PropertyBlock(const std::vector<Property>& properties, std::vector<PropertySpec> specs,
+    PropertyBlock(const ArenaList<Property>& properties, std::vector<PropertySpec> specs,
                   std::string what, SourcePos blockLoc, DiagnosticSink& sink);
 
     /// False when a property was unknown, repeated or missing.

@@ -91,10 +91,10 @@ object sphere {} matrix [1, 0, 0, -1, 0, 1, 0, 0, 0, 0, 1, 0];
     CHECK(cup.name == "cup");
     REQUIRE(cup.solid->kind == Solid::Kind::Boolean);
     REQUIRE(cup.solid->children.size() == 2);
-    CHECK(cup.solid->children[0]->name == "body");
-    CHECK(cup.solid->children[1]->name == "handle");
-    REQUIRE(cup.solid->children[1]->modifiers.size() == 1);
-    CHECK(cup.solid->children[1]->modifiers[0].kind == Modifier::Kind::Translate);
+    CHECK(cup.solid->children[0].name == "body");
+    CHECK(cup.solid->children[1].name == "handle");
+    REQUIRE(cup.solid->children[1].modifiers.size() == 1);
+    CHECK(cup.solid->children[1].modifiers[0].kind == Modifier::Kind::Translate);
 
     const Solid& object = *p.statements[1].solid;
     CHECK(object.kind == Solid::Kind::Reference);
