@@ -11,6 +11,7 @@
 #include "lang/ast_arena.h"
 #include "lang/diagnostic.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -125,13 +126,23 @@ struct Statement {
     ExprPtr expr = nullptr;  ///< let, background
     SolidPtr solid = nullptr;  ///< solid, object
     ArenaList<Property> properties;  ///< material, camera, light, mist, render
+    /// The statement's own nodes (expr, solid, properties and all below), in one exact-size
+    /// block, so that lowering can free them statement by statement (releaseTree).
+    std::unique_ptr<std::max_align_t[]> tree;
+
+    /// Moves the statement's nodes out of a scratch arena into its own block; `bound` is at
+    /// least their total size (the bytes the scratch arena handed out for this statement).
+    void takeTree(size_t bound);
+    /// Frees the nodes; what stays (kind, names, positions, broken) still serves messages.
+    void releaseTree();
 };
 
 struct Program {
     /// A deque: statements never move once parsed (lowering keeps pointers to them), and
     /// growing it copies nothing.
     std::deque<Statement> statements;
-    /// The expressions and names of the statements (one arena per file parsed).
+    /// The names the statements use (one arena per file parsed; its blocks are the parser's
+    /// scratch space, the nodes themselves live in each Statement::tree).
     std::vector<std::unique_ptr<AstArena>> arenas;
 };
 

@@ -44,8 +44,9 @@ private:
     const std::string* mText = nullptr;
 };
 
-/// A bump allocator for trivially destructible nodes plus a table of interned names. Nothing
-/// is freed before the arena; the tree of a file lives as long as its Program.
+/// A bump allocator for trivially destructible nodes plus a table of interned names. The
+/// parser uses the blocks as scratch space for one statement at a time (reset); the names
+/// live as long as the Program.
 class AstArena {
 public:
     AstArena() = default;
@@ -65,8 +66,19 @@ public:
     /// The one copy of `text` in this arena.
     Name intern(const std::string& text) { return Name(&*mNames.insert(text).first); }
 
-    /// Bytes taken by blocks (for measurements).
-    size_t blockBytes() const { return mBlockBytes; }
+    /// Bytes handed out since the last reset (without padding: every node type is a multiple
+    /// of 8 bytes, aligned to 8).
+    size_t handedOut() const { return mHandedOut; }
+    /// Forgets every node (the interned names stay); the first block is kept for reuse.
+    void reset() {
+        if (mBlocks.size() > 1) mBlocks.resize(1);
+        if (!mBlocks.empty()) {
+            mBlock = reinterpret_cast<std::byte*>(mBlocks.front().get());
+            mBlockSize = mFirstBlockSize;
+        }
+        mUsed = 0;
+        mHandedOut = 0;
+    }
 
 private:
     void* allocate(size_t bytes, size_t align) {
@@ -77,10 +89,11 @@ private:
             mBlocks.emplace_back(new std::max_align_t[(mBlockSize + sizeof(std::max_align_t) - 1) /
                                                       sizeof(std::max_align_t)]);
             mBlock = reinterpret_cast<std::byte*>(mBlocks.back().get());
-            mBlockBytes += mBlockSize;
+            if (mBlocks.size() == 1) mFirstBlockSize = mBlockSize;
             at = 0;
         }
         mUsed = at + bytes;
+        mHandedOut += bytes;
         return mBlock + at;
     }
 
@@ -89,7 +102,8 @@ private:
     std::byte* mBlock = nullptr;
     size_t mBlockSize = 0;
     size_t mUsed = 0;
-    size_t mBlockBytes = 0;
+    size_t mFirstBlockSize = 0;
+    size_t mHandedOut = 0;
     std::unordered_set<std::string> mNames;
 };
 

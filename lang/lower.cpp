@@ -39,12 +39,12 @@ std::string where(const SourceLoc& loc) {
 
 }  // namespace
 
-std::optional<Scene> Lowering::lower(const Program& program) {
+std::optional<Scene> Lowering::lower(Program& program) {
     const int errorsBefore = mSink.errorCount();
     Scene scene;
     collectDefinitions(program, scene);
     lowerDefinitions();
-    for (const Statement& s : program.statements) lowerStatement(s, scene);
+    for (Statement& s : program.statements) lowerStatement(s, scene);
     if (mSink.errorCount() > errorsBefore) return std::nullopt;
     return scene;
 }
@@ -54,8 +54,8 @@ NodePtr Lowering::solidNamed(const std::string& name) const {
     return it == mSolids.end() ? nullptr : it->second.node;
 }
 
-void Lowering::collectDefinitions(const Program& program, Scene& scene) {
-    const auto define = [&](auto& table, const Statement& s, const char* what) {
+void Lowering::collectDefinitions(Program& program, Scene& scene) {
+    const auto define = [&](auto& table, Statement& s, const char* what) {
         auto [it, inserted] = table.try_emplace(s.name);
         if (!inserted) {
             error(s.nameLoc, std::string(what) + " '" + s.name + "' is already defined",
@@ -65,7 +65,7 @@ void Lowering::collectDefinitions(const Program& program, Scene& scene) {
         it->second.def = &s;
         return true;
     };
-    for (const Statement& s : program.statements) {
+    for (Statement& s : program.statements) {
         switch (s.kind) {
             case Statement::Kind::Let: define(mLets, s, "let"); break;
             case Statement::Kind::SolidDef: define(mSolids, s, "solid"); break;
@@ -119,7 +119,7 @@ bool Lowering::onlyOnce(const Statement& s, const Statement*& first, const char*
     return true;
 }
 
-void Lowering::lowerStatement(const Statement& s, Scene& scene) {
+void Lowering::lowerStatement(Statement& s, Scene& scene) {
     switch (s.kind) {
         case Statement::Kind::Let:
             if (s.broken) break;
@@ -131,6 +131,7 @@ void Lowering::lowerStatement(const Statement& s, Scene& scene) {
             break;
         case Statement::Kind::Object:
             if (NodePtr node = lowerSolid(*s.solid)) scene.objects.push_back(node);
+            s.releaseTree();
             break;
         case Statement::Kind::Material: {
             const MaterialEntry& m = mMaterials[s.name];

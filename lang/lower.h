@@ -29,8 +29,10 @@ class Lowering {
 public:
     explicit Lowering(DiagnosticSink& sink) : mSink(sink) {}
 
-    /// Lowers the program; nullopt if it reported any error.
-    std::optional<Scene> lower(const Program& program);
+    /// Lowers the program; nullopt if it reported any error. The syntax tree of each `solid`
+    /// definition and `object` is freed once it is lowered (Statement::releaseTree), so the
+    /// memory held follows the compiled scene, not the text.
+    std::optional<Scene> lower(Program& program);
 
     /// After lower(): the tree of a `solid` definition, shared by all its uses (null if the
     /// name is undefined or its definition had errors).
@@ -44,7 +46,7 @@ private:
         Value value;
     };
     struct SolidEntry {
-        const Statement* def = nullptr;
+        Statement* def = nullptr;  ///< not const: its tree is freed once lowered
         State state = State::Pending;
         NodePtr node;
     };
@@ -54,11 +56,11 @@ private:
     };
 
     // lower.cpp
-    void collectDefinitions(const Program& program, Scene& scene);
+    void collectDefinitions(Program& program, Scene& scene);
     /// Lowers the lets and solids each after those it uses (lang/definition_order.h), so
     /// no chain of names recurses; a chain deeper than kMaxNameDepth is an error.
     void lowerDefinitions();
-    void lowerStatement(const Statement& s, Scene& scene);
+    void lowerStatement(Statement& s, Scene& scene);
     bool onlyOnce(const Statement& s, const Statement*& first, const char* what);
     std::string cycleMessage(const char* what, const std::vector<std::string>& busy,
                              const std::string& name) const;

@@ -108,6 +108,7 @@ NodePtr Lowering::solidByName(const std::string& name, SourcePos use) {
     mBusySolids.pop_back();
     entry.state = node ? State::Done : State::Failed;
     entry.node = node;
+    entry.def->releaseTree();  // never read again: the state answers every later use
     return node;
 }
 

@@ -59,6 +59,7 @@ public:
         mArena = program.arenas.back().get();
         while (peek().kind != TokenKind::End) {
             mTokens.dropBefore(mPos > 0 ? mPos - 1 : 0);  // keep the previous token: afterPrevious()
+            mArena->reset();  // the last statement's nodes were moved to its own block
             if (accept(TokenKind::Semicolon)) continue;  // an empty statement
             const size_t before = mPos;
             try {
@@ -179,10 +180,12 @@ private:
                                  s.kind == Statement::Kind::Material;
             if (defines && !s.name.empty()) {
                 s.broken = true;
+                s.takeTree(mArena->handedOut());
                 program.statements.push_back(std::move(s));
             }
             throw;
         }
+        s.takeTree(mArena->handedOut());
         program.statements.push_back(std::move(s));
     }
 
