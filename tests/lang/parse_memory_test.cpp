@@ -2,7 +2,9 @@
 // parser holds at its peak, counted by a replaced global operator new in this test binary
 // (not RSS, which is noisy), must stay at most 10 bytes per byte of model text.
 #include "lang/lexer.h"
+#include "lang/lower.h"
 #include "lang/parser.h"
+#include "lang/source.h"
 
 #include <catch2/catch.hpp>
 
@@ -10,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <new>
 #include <string>
 
@@ -121,5 +124,44 @@ TEST_CASE("parse memory: at most 10 bytes of heap per byte of model") {
 #else
     WARN("allocation count skipped under AddressSanitizer (its allocator replaces ours); parse checked on "
          << bytes << " bytes");
+#endif
+}
+
+// The same measurement on a model file, for docs/robustness.md (hidden: run it by its tag):
+//   scripts/gen-parse-memory-model -o /tmp/big.kerf
+//   KERF_PARSE_MEMORY_MODEL=/tmp/big.kerf build/tests/kerf_lang_tests "[parse-memory]"
+// Prints the parse's peak and that of parse + lowering (what `kerf check` holds above the text).
+TEST_CASE("parse memory: a model file named by KERF_PARSE_MEMORY_MODEL", "[.][parse-memory]") {
+    const char* path = std::getenv("KERF_PARSE_MEMORY_MODEL");
+    if (!path) {
+        WARN("KERF_PARSE_MEMORY_MODEL is not set: nothing measured");
+        return;
+    }
+    std::string why;
+    auto bytes = readFileBytes(path, why);
+    INFO(why);
+    REQUIRE(bytes);
+    const SourceText source{std::make_shared<const std::string>(path),
+                            std::make_shared<const std::string>(std::move(*bytes))};
+    const double size = static_cast<double>(source.text->size());
+    DiagnosticSink sink;
+    sink.rememberSource(source.name, source.text);
+#if KERF_COUNTS_ALLOCATIONS
+    const long long before = gLive.load();
+    gPeak = before;
+#endif
+    TokenStream tokens(source, sink);
+    Program program = parse(tokens, sink);
+#if KERF_COUNTS_ALLOCATIONS
+    const double parsePeak = static_cast<double>(gPeak.load() - before) / size;
+#endif
+    const std::optional<Scene> scene = Lowering(sink).lower(program);
+    INFO(sink.format());
+    REQUIRE(scene.has_value());
+#if KERF_COUNTS_ALLOCATIONS
+    const double compilePeak = static_cast<double>(gPeak.load() - before) / size;
+    WARN(path << ": " << size << " bytes, " << program.statements.size() << " statements; peak heap per byte of "
+              << "model: parse " << parsePeak << ", parse + lowering " << compilePeak);
+    CHECK(parsePeak <= 10.0);
 #endif
 }
