@@ -272,36 +272,35 @@ private:
     /// A solid as a value; its children, properties and modifiers are already in the arena.
     Solid parseSolid(bool withModifiers) {
         NestingGuard guard(*this);
-        Solid result;
-        Solid* solid = &result;
+        Solid solid;
         const Token& t = peek();
-        solid->loc = t.pos;
+        solid.loc = t.pos;
         if (t.kind != TokenKind::Identifier || contains(kModifierWords, t.text) ||
             (contains(kStatementWords, t.text) && peek(1).kind != TokenKind::LBrace))
             fail(t.loc, "expected a solid, found " + describe(t));
-        solid->name = mArena->intern(next().text);
+        solid.name = mArena->intern(next().text);
         if (check(TokenKind::LBrace)) {
             const SourceLoc open = peek().loc;
             next();
-            if (contains(kBooleanWords, solid->name)) {
-                solid->kind = Solid::Kind::Boolean;
+            if (contains(kBooleanWords, solid.name)) {
+                solid.kind = Solid::Kind::Boolean;
                 std::vector<Solid> children;
                 while (!accept(TokenKind::RBrace)) {
                     if (check(TokenKind::End) || (peek().firstOnLine && startsStatement()))
-                        fail(peek().loc, "expected '}' to close the " + solid->name + " opened at line " +
+                        fail(peek().loc, "expected '}' to close the " + solid.name + " opened at line " +
                                              std::to_string(open.line) + ", found " + describe(peek()));
                     children.push_back(parseSolid(true));
                 }
-                solid->children = list(children);
+                solid.children = list(children);
             } else {
-                solid->kind = Solid::Kind::Primitive;
-                solid->properties = parseProperties(open);
+                solid.kind = Solid::Kind::Primitive;
+                solid.properties = parseProperties(open);
             }
         } else {
-            solid->kind = Solid::Kind::Reference;
+            solid.kind = Solid::Kind::Reference;
         }
-        if (withModifiers) solid->modifiers = parseModifiers();
-        return result;
+        if (withModifiers) solid.modifiers = parseModifiers();
+        return solid;
     }
 
     ArenaList<Modifier> parseModifiers() {
