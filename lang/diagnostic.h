@@ -47,7 +47,8 @@ public:
     /// text objects), else it is remembered now.
     uint32_t sourceIndex(const std::shared_ptr<const std::string>& file,
                          const std::shared_ptr<const std::string>& text);
-    /// The file, line and column of a position (lines are indexed on the first call per file).
+    /// The file, line and column of a position (lines are indexed on the first call per file,
+    /// so a sink is not for concurrent use, const or not).
     SourceLoc locate(SourcePos pos) const;
     /// `length` bytes of the remembered text at `pos` (a literal's spelling, for messages).
     std::string textAt(SourcePos pos, size_t length) const;
