@@ -1,21 +1,52 @@
 /// @file lang/ast.h
 /// @brief The syntax tree of a model file, as the parser builds it: plain data, every node
-/// with the SourceLoc that diagnostics point at. No meaning is checked here (lower.h does that).
+/// with the SourcePos that diagnostics point at. No meaning is checked here (lower.h does that).
+///
+/// A model can hold millions of nodes, so the tree is laid out for memory (docs/robustness.md,
+/// "Parse memory"): positions are 8-byte offsets (DiagnosticSink::locate finds line and
+/// column); expressions (40 bytes) and solids are values in the program's arena, each node's
+/// operands, children, properties and modifiers stored side by side; names are interned there.
 #pragma once
 
+#include "lang/ast_arena.h"
 #include "lang/diagnostic.h"
 
+#include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace kerf {
 
-struct Expr;
-using ExprPtr = std::unique_ptr<Expr>;
+/// Nodes side by side in the arena: the operands of an expression, the children, properties
+/// and modifiers of a solid. Read like a const std::vector.
+template <class T>
+class ArenaList {
+public:
+    ArenaList() = default;
+    ArenaList(const T* first, uint32_t count) : mFirst(first), mCount(count) {}
+    const T* begin() const { return mFirst; }
+    const T* end() const { return mFirst + mCount; }
+    size_t size() const { return mCount; }
+    bool empty() const { return mCount == 0; }
+    const T& operator[](size_t i) const { return mFirst[i]; }
+    const T& at(size_t i) const {
+        if (i >= mCount) throw std::out_of_range("ArenaList::at");
+        return mFirst[i];
+    }
 
-/// An arithmetic expression.
+private:
+    const T* mFirst = nullptr;
+    uint32_t mCount = 0;
+};
+
+struct Expr;
+using ExprList = ArenaList<Expr>;
+
+/// An arithmetic expression. Trivially copyable: it lives in the arena and is never destroyed.
 struct Expr {
     enum class Kind : uint8_t {
         Number,  ///< `number`
@@ -25,73 +56,97 @@ struct Expr {
         Binary,  ///< `args[0] op args[1]`, op one of + - * / ^
         Call,    ///< `name(args…)`
     };
-    // The small fields first: a model holds millions of these (memory per byte of model).
     Kind kind = Kind::Number;
     char op = 0;
-    int depth = 1;  ///< height of this subtree, bounded by the parser
-    double number = 0.0;
-    SourceLoc loc;    ///< the literal, the name, the operator, or the function name
-    SourceLoc start;  ///< the first token of the whole expression
-    std::string name;
-    std::vector<ExprPtr> args;
+    uint16_t depth = 1;       ///< height of this subtree, bounded by the parser (kMaxExpressionDepth)
+    uint32_t count = 0;       ///< Number: bytes of the literal (DiagnosticSink::textAt); else of args
+    SourcePos loc;            ///< the literal, the name, the operator, or the function name
+    SourcePos start;          ///< the first token of the whole expression
+    union {
+        double number = 0.0;        ///< Number
+        const std::string* ident;   ///< Name, Call (interned)
+    };
+    const Expr* first = nullptr;  ///< the operands, `count` of them side by side
+
+    Name name() const { return Name(kind == Kind::Name || kind == Kind::Call ? ident : nullptr); }
+    ExprList args() const {
+        return kind == Kind::Number || kind == Kind::Name ? ExprList() : ExprList(first, count);
+    }
 };
 
+using ExprPtr = const Expr*;  ///< owned by the program's arena
+
 struct Solid;
-using SolidPtr = std::unique_ptr<Solid>;
+using SolidPtr = const Solid*;  ///< owned by the program's arena
 
 /// `name value` inside a block; the value is an expression or (for `bound`) a solid.
 struct Property {
-    std::string name;
-    SourceLoc loc;    ///< of the name
-    ExprPtr expr;     ///< set unless the value is a solid
-    SolidPtr solid;   ///< set when the value is written as `kind { … }`
-    const SourceLoc& valueLoc() const;
+    Name name;
+    SourcePos loc;             ///< of the name
+    ExprPtr expr = nullptr;    ///< set unless the value is a solid
+    SolidPtr solid = nullptr;  ///< set when the value is written as `kind { … }`
+    SourcePos valueLoc() const;
 };
 
 /// A modifier after a solid: `translate v`, `rotate v`, `scale s|v`, `matrix [12 numbers]`,
 /// `material NAME`.
 struct Modifier {
-    enum class Kind { Translate, Rotate, Scale, Matrix, Material };
+    enum class Kind : uint8_t { Translate, Rotate, Scale, Matrix, Material };
     Kind kind = Kind::Translate;
-    SourceLoc loc;  ///< of the keyword
-    std::vector<ExprPtr> args;  ///< one, or twelve for matrix
-    std::string material;
-    SourceLoc materialLoc;
+    SourcePos loc;  ///< of the keyword
+    ExprList args;  ///< one, or twelve for matrix
+    Name material;
+    SourcePos materialLoc;
 };
 
+/// A solid as written. Trivially copyable like Expr: its lists are in the arena.
 struct Solid {
-    enum class Kind {
+    enum class Kind : uint8_t {
         Primitive,  ///< `kind { properties }`; the kind is checked when lowering
         Boolean,    ///< `union|intersection|difference|xor { children }`
         Reference,  ///< the name of a `solid` definition
     };
     Kind kind = Kind::Primitive;
-    SourceLoc loc;     ///< of the kind keyword or the name
-    std::string name;  ///< the primitive kind, the Boolean operation, or the referenced name
-    std::vector<Property> properties;
-    std::vector<SolidPtr> children;
-    std::vector<Modifier> modifiers;
+    SourcePos loc;     ///< of the kind keyword or the name
+    Name name;         ///< the primitive kind, the Boolean operation, or the referenced name
+    ArenaList<Property> properties;
+    ArenaList<Solid> children;
+    ArenaList<Modifier> modifiers;
 };
 
 struct Statement {
-    enum class Kind { Let, SolidDef, Object, Material, Camera, Light, Mist, Background, Render, Include };
+    enum class Kind : uint8_t { Let, SolidDef, Object, Material, Camera, Light, Mist, Background, Render, Include };
     Kind kind = Kind::Let;
-    SourceLoc loc;      ///< of the keyword
-    std::string name;   ///< let/solid/material name, the light kind, or the include path
-    SourceLoc nameLoc;
-    ExprPtr expr;       ///< let, background
-    SolidPtr solid;     ///< solid, object
-    std::vector<Property> properties;  ///< material, camera, light, mist, render
     /// A definition whose body had a syntax error (already reported): its name exists, so
     /// uses are not reported again, but it is not lowered.
     bool broken = false;
+    SourcePos loc;      ///< of the keyword
+    std::string name;   ///< let/solid/material name, the light kind, or the include path
+    SourcePos nameLoc;
+    ExprPtr expr = nullptr;  ///< let, background
+    SolidPtr solid = nullptr;  ///< solid, object
+    ArenaList<Property> properties;  ///< material, camera, light, mist, render
+    /// The statement's own nodes (expr, solid, properties and all below), in one exact-size
+    /// block, so that lowering can free them statement by statement (releaseTree).
+    std::unique_ptr<std::max_align_t[]> tree;
+
+    /// Moves the statement's nodes out of a scratch arena into its own block; `bound` is at
+    /// least their total size (the bytes the scratch arena handed out for this statement).
+    void takeTree(size_t bound);
+    /// Frees the nodes; what stays (kind, names, positions, broken) still serves messages.
+    void releaseTree();
 };
 
 struct Program {
-    std::vector<Statement> statements;
+    /// A deque: statements never move once parsed (lowering keeps pointers to them), and
+    /// growing it copies nothing.
+    std::deque<Statement> statements;
+    /// The names the statements use (one arena per file parsed; its blocks are the parser's
+    /// scratch space, the nodes themselves live in each Statement::tree).
+    std::vector<std::unique_ptr<AstArena>> arenas;
 };
 
-inline const SourceLoc& Property::valueLoc() const {
+inline SourcePos Property::valueLoc() const {
     if (expr) return expr->start;
     if (solid) return solid->loc;
     return loc;

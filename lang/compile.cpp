@@ -37,11 +37,15 @@ public:
         TokenStream tokens(source, mSink);
         Program program = parse(tokens, mSink);
         mStack.push_back({id, *source.name});
-        for (Statement& s : program.statements) {
+        for (auto& arena : program.arenas) out.arenas.push_back(std::move(arena));
+        // Moved one by one from the front, so the two deques never both hold every statement.
+        while (!program.statements.empty()) {
+            Statement& s = program.statements.front();
             if (s.kind == Statement::Kind::Include)
                 include(s, *source.name, out);
             else
                 out.statements.push_back(std::move(s));
+            program.statements.pop_front();
         }
         mStack.pop_back();
     }

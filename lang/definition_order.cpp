@@ -13,7 +13,7 @@ namespace {
 
 struct Use {
     int target;
-    SourceLoc loc;
+    SourcePos loc;
 };
 
 /// The definitions a definition uses, in the order written, each once. The walk keeps its
@@ -30,26 +30,26 @@ public:
         std::vector<Use> uses;
         mExprs.clear();
         mSolidStack.clear();
-        if (s.expr) mExprs.push_back(s.expr.get());
-        if (s.solid) mSolidStack.push_back(s.solid.get());
+        if (s.expr) mExprs.push_back(s.expr);
+        if (s.solid) mSolidStack.push_back(s.solid);
         while (!mExprs.empty() || !mSolidStack.empty()) {
             if (!mSolidStack.empty()) {
                 const Solid* solid = mSolidStack.back();
                 mSolidStack.pop_back();
                 if (solid->kind == Solid::Kind::Reference) add(mSolids, solid->name, solid->loc, uses);
                 for (const Property& p : solid->properties) {
-                    if (p.expr) mExprs.push_back(p.expr.get());
-                    if (p.solid) mSolidStack.push_back(p.solid.get());
+                    if (p.expr) mExprs.push_back(p.expr);
+                    if (p.solid) mSolidStack.push_back(p.solid);
                 }
                 for (const Modifier& m : solid->modifiers)
-                    for (const ExprPtr& a : m.args) mExprs.push_back(a.get());
-                for (const SolidPtr& c : solid->children) mSolidStack.push_back(c.get());
+                    for (const Expr& a : m.args) mExprs.push_back(&a);
+                for (const Solid& c : solid->children) mSolidStack.push_back(&c);
                 continue;
             }
             const Expr* e = mExprs.back();
             mExprs.pop_back();
-            if (e->kind == Expr::Kind::Name) add(mLets, e->name, e->loc, uses);
-            for (const ExprPtr& a : e->args) mExprs.push_back(a.get());
+            if (e->kind == Expr::Kind::Name) add(mLets, e->name(), e->loc, uses);
+            for (const Expr& a : e->args()) mExprs.push_back(&a);
         }
         // The walk popped from the back; uses in the order written read best in messages.
         std::reverse(uses.begin(), uses.end());
@@ -61,7 +61,7 @@ public:
     }
 
 private:
-    void add(const std::map<std::string, const Statement*>& table, const std::string& name, const SourceLoc& loc,
+    void add(const std::map<std::string, const Statement*>& table, const std::string& name, SourcePos loc,
              std::vector<Use>& uses) {
         const auto it = table.find(name);
         if (it != table.end()) uses.push_back({mIndex.at(it->second), loc});
@@ -77,14 +77,22 @@ private:
 }  // namespace
 
 std::vector<OrderedDefinition> definitionOrder(const std::map<std::string, const Statement*>& lets,
-                                               const std::map<std::string, const Statement*>& solids) {
-    // Definitions in statement order, so the walk (and what it reports) follows the file.
-    std::vector<const Statement*> defs;
+                                               const std::map<std::string, const Statement*>& solids,
+                                               const DiagnosticSink& sink) {
+    // Definitions in statement order (line and column), so the walk (and what it reports)
+    // follows the file.
+    std::vector<std::pair<std::pair<int, int>, const Statement*>> keyed;
     for (const auto* table : {&lets, &solids})
-        for (const auto& [name, def] : *table) defs.push_back(def);
-    std::sort(defs.begin(), defs.end(), [](const Statement* a, const Statement* b) {
-        return std::make_pair(a->loc.line, a->loc.col) < std::make_pair(b->loc.line, b->loc.col);
-    });
+        for (const auto& [name, def] : *table) {
+            const SourceLoc at = sink.locate(def->loc);
+            keyed.push_back({{at.line, at.col}, def});
+        }
+    std::stable_sort(keyed.begin(), keyed.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<const Statement*> defs;
+    defs.reserve(keyed.size());
+    for (const auto& k : keyed) defs.push_back(k.second);
+    keyed = {};
     std::unordered_map<const Statement*, int> index;
     for (size_t i = 0; i < defs.size(); ++i) index[defs[i]] = static_cast<int>(i);
     const int n = static_cast<int>(defs.size());

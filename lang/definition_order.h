@@ -21,7 +21,7 @@ struct OrderedDefinition {
     std::vector<const Statement*> uses;
     /// Where it uses a definition at level kMaxNameDepth, when its own level is one more: the
     /// place to report that the chain is too deep (deeper definitions fail quietly).
-    SourceLoc tooDeepAt;
+    SourcePos tooDeepAt;
     bool firstTooDeep = false;
 };
 
@@ -29,6 +29,7 @@ struct OrderedDefinition {
 /// every definition it uses. Definitions on a cycle of names, or that use one, are left out:
 /// lowering meets them in statement order and reports the cycle as it finds it.
 std::vector<OrderedDefinition> definitionOrder(const std::map<std::string, const Statement*>& lets,
-                                               const std::map<std::string, const Statement*>& solids);
+                                               const std::map<std::string, const Statement*>& solids,
+                                               const DiagnosticSink& sink);  ///< finds the lines
 
 }  // namespace kerf

@@ -14,9 +14,44 @@ void DiagnosticSink::error(const SourceLoc& loc, std::string message, std::strin
     report(Diagnostic{loc, Severity::Error, std::move(message), std::move(hint)});
 }
 
+void DiagnosticSink::error(SourcePos pos, std::string message, std::string hint) {
+    error(locate(pos), std::move(message), std::move(hint));
+}
+
 void DiagnosticSink::rememberSource(std::shared_ptr<const std::string> file,
                                     std::shared_ptr<const std::string> text) {
     mSources.emplace_back(std::move(file), std::move(text));
+}
+
+uint32_t DiagnosticSink::sourceIndex(const std::shared_ptr<const std::string>& file,
+                                     const std::shared_ptr<const std::string>& text) {
+    for (size_t i = mSources.size(); i-- > 0;)
+        if (mSources[i].first == file && mSources[i].second == text) return static_cast<uint32_t>(i);
+    rememberSource(file, text);
+    return static_cast<uint32_t>(mSources.size() - 1);
+}
+
+SourceLoc DiagnosticSink::locate(SourcePos pos) const {
+    if (pos.file >= mSources.size()) return SourceLoc{};
+    const auto& [file, text] = mSources[pos.file];
+    if (mLineStarts.size() < mSources.size()) mLineStarts.resize(mSources.size());
+    std::vector<uint32_t>& starts = mLineStarts[pos.file];
+    if (starts.empty()) {
+        starts.push_back(0);
+        if (text)
+            for (size_t i = 0; i < text->size(); ++i)
+                if ((*text)[i] == '\n') starts.push_back(static_cast<uint32_t>(i + 1));
+    }
+    // The last line start at or before the offset.
+    const auto next = std::upper_bound(starts.begin(), starts.end(), pos.offset);
+    const size_t line = static_cast<size_t>(next - starts.begin());
+    return SourceLoc{file, static_cast<int>(line), static_cast<int>(pos.offset - starts[line - 1]) + 1};
+}
+
+std::string DiagnosticSink::textAt(SourcePos pos, size_t length) const {
+    if (pos.file >= mSources.size() || !mSources[pos.file].second) return {};
+    const std::string& text = *mSources[pos.file].second;
+    return pos.offset < text.size() ? text.substr(pos.offset, length) : std::string();
 }
 
 void DiagnosticSink::sortByLocation(size_t from) {

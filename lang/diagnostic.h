@@ -3,6 +3,7 @@
 /// collected in a sink so one run can report several.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,6 +15,15 @@ struct SourceLoc {
     std::shared_ptr<const std::string> file;  ///< the path as the user named it
     int line = 0;
     int col = 0;
+};
+
+/// A position as the syntax tree keeps it: a byte offset into a file the DiagnosticSink
+/// remembers, 8 bytes where a SourceLoc takes 24 plus a shared count. Line and column are
+/// found only when a diagnostic is reported (DiagnosticSink::locate).
+struct SourcePos {
+    uint32_t offset = 0;
+    uint32_t file = kNoFile;  ///< index of the file in the sink; kNoFile for no position
+    static constexpr uint32_t kNoFile = ~uint32_t(0);
 };
 
 enum class Severity { Error, Warning, Note };
@@ -30,7 +40,18 @@ class DiagnosticSink {
 public:
     void report(Diagnostic d);
     void error(const SourceLoc& loc, std::string message, std::string hint = {});
+    void error(SourcePos pos, std::string message, std::string hint = {});
     void rememberSource(std::shared_ptr<const std::string> file, std::shared_ptr<const std::string> text);
+
+    /// The index SourcePos uses for this file: the one it was remembered under (same name and
+    /// text objects), else it is remembered now.
+    uint32_t sourceIndex(const std::shared_ptr<const std::string>& file,
+                         const std::shared_ptr<const std::string>& text);
+    /// The file, line and column of a position (lines are indexed on the first call per file,
+    /// so a sink is not for concurrent use, const or not).
+    SourceLoc locate(SourcePos pos) const;
+    /// `length` bytes of the remembered text at `pos` (a literal's spelling, for messages).
+    std::string textAt(SourcePos pos, size_t length) const;
 
     bool hasErrors() const { return mErrorCount > 0; }
     int errorCount() const { return mErrorCount; }
@@ -47,6 +68,8 @@ public:
 private:
     std::vector<Diagnostic> mDiagnostics;
     std::vector<std::pair<std::shared_ptr<const std::string>, std::shared_ptr<const std::string>>> mSources;
+    /// Per remembered file, the offsets where its lines start; built by the first locate().
+    mutable std::vector<std::vector<uint32_t>> mLineStarts;
     int mErrorCount = 0;
 };
 

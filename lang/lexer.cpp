@@ -79,7 +79,7 @@ double parseNumber(const std::string& text) {
 class Lexer {
 public:
     Lexer(const SourceText& source, DiagnosticSink& sink)
-        : mSource(source), mText(*source.text), mSink(sink) {
+        : mSource(source), mText(*source.text), mSink(sink), mFile(sink.sourceIndex(source.name, source.text)) {
         if (mText.compare(0, 3, "\xEF\xBB\xBF") == 0) advance(3);  // UTF-8 byte order mark
     }
 
@@ -87,6 +87,7 @@ public:
     Token next() {
         if (!mDone) {
             const SourceLoc commentStart = loc();
+            const SourcePos commentStartPos = pos();
             skipBlanksAndComments();
             if (mCommentError) {  // the rest of the file was an unterminated comment
                 mDone = true;
@@ -94,6 +95,7 @@ public:
                 Token bad;
                 bad.kind = TokenKind::Error;
                 bad.loc = commentStart;
+                bad.pos = commentStartPos;
                 return bad;
             }
             if (mPos < mText.size()) {
@@ -102,6 +104,7 @@ public:
                 if (!lexToken(t)) t.kind = TokenKind::Error;
                 mLineHasToken = true;
                 mLastEnd = loc();
+                mLastEndPos = pos();
                 mAny = true;
                 return t;
             }
@@ -110,12 +113,14 @@ public:
         Token end;
         end.kind = TokenKind::End;
         end.loc = mAny ? mLastEnd : loc();
+        end.pos = mAny ? mLastEndPos : pos();
         end.firstOnLine = true;
         return end;
     }
 
 private:
     SourceLoc loc() const { return SourceLoc{mSource.name, mLine, mCol}; }
+    SourcePos pos() const { return SourcePos{static_cast<uint32_t>(mPos), mFile}; }
     char peek(size_t ahead = 0) const {
         return mPos + ahead < mText.size() ? mText[mPos + ahead] : '\0';
     }
@@ -157,6 +162,7 @@ private:
     /// Lexes one token at mPos; false (with a diagnostic) if the characters there are not one.
     bool lexToken(Token& t) {
         t.loc = loc();
+        t.pos = pos();
         const size_t start = mPos;
         const char c = peek();
         if (isDigit(c) || (c == '.' && isDigit(peek(1)))) return lexNumber(t, start);
@@ -270,6 +276,7 @@ private:
     const SourceText& mSource;
     const std::string& mText;
     DiagnosticSink& mSink;
+    uint32_t mFile;  // the sink's index of this file, for SourcePos
     size_t mPos = 0;
     int mLine = 1;
     int mCol = 1;
@@ -278,6 +285,7 @@ private:
     bool mDone = false;          // at the end: only End from now on
     bool mAny = false;           // a token other than End was returned
     SourceLoc mLastEnd;
+    SourcePos mLastEndPos;
 };
 
 TokenStream::TokenStream(const SourceText& source, DiagnosticSink& sink)

@@ -26,6 +26,7 @@ struct Token {
     std::string text;     ///< identifier name, string contents (unquoted), or the spelling
     double number = 0.0;  ///< for numbers; +inf when the literal overflows a double
     SourceLoc loc;
+    SourcePos pos;   ///< the same place, as the syntax tree keeps it
     int length = 0;  ///< bytes the token spans in the source (all tokens are on one line)
     bool firstOnLine = false;  ///< nothing but white space or comments before it on its line
 };

@@ -16,7 +16,7 @@ std::string formatVector(const Vec3& v) {
 }
 
 /// Counts one level of lowering recursion (the caller leaves with --mDepth); too deep is an error.
-bool Lowering::enter(const SourceLoc& at) {
+bool Lowering::enter(SourcePos at) {
     if (++mDepth <= kMaxLoweringDepth) return true;
     --mDepth;
     if (mTooDeepReported) return false;  // one report; the rest of the chain fails quietly
@@ -26,7 +26,7 @@ bool Lowering::enter(const SourceLoc& at) {
     return false;
 }
 
-void Lowering::error(const SourceLoc& loc, std::string message, std::string hint) {
+void Lowering::error(SourcePos loc, std::string message, std::string hint) {
     mSink.error(loc, std::move(message), std::move(hint));
 }
 
@@ -39,12 +39,12 @@ std::string where(const SourceLoc& loc) {
 
 }  // namespace
 
-std::optional<Scene> Lowering::lower(const Program& program) {
+std::optional<Scene> Lowering::lower(Program& program) {
     const int errorsBefore = mSink.errorCount();
     Scene scene;
     collectDefinitions(program, scene);
     lowerDefinitions();
-    for (const Statement& s : program.statements) lowerStatement(s, scene);
+    for (Statement& s : program.statements) lowerStatement(s, scene);
     if (mSink.errorCount() > errorsBefore) return std::nullopt;
     return scene;
 }
@@ -54,18 +54,18 @@ NodePtr Lowering::solidNamed(const std::string& name) const {
     return it == mSolids.end() ? nullptr : it->second.node;
 }
 
-void Lowering::collectDefinitions(const Program& program, Scene& scene) {
-    const auto define = [&](auto& table, const Statement& s, const char* what) {
+void Lowering::collectDefinitions(Program& program, Scene& scene) {
+    const auto define = [&](auto& table, Statement& s, const char* what) {
         auto [it, inserted] = table.try_emplace(s.name);
         if (!inserted) {
             error(s.nameLoc, std::string(what) + " '" + s.name + "' is already defined",
-                  "first defined at " + where(it->second.def->nameLoc));
+                  "first defined at " + where(mSink.locate(it->second.def->nameLoc)));
             return false;
         }
         it->second.def = &s;
         return true;
     };
-    for (const Statement& s : program.statements) {
+    for (Statement& s : program.statements) {
         switch (s.kind) {
             case Statement::Kind::Let: define(mLets, s, "let"); break;
             case Statement::Kind::SolidDef: define(mSolids, s, "solid"); break;
@@ -89,7 +89,7 @@ void Lowering::lowerDefinitions() {
     const auto state = [&](const Statement* def) {
         return def->kind == Statement::Kind::Let ? mLets[def->name].state : mSolids[def->name].state;
     };
-    for (const OrderedDefinition& d : definitionOrder(lets, solids)) {
+    for (const OrderedDefinition& d : definitionOrder(lets, solids, mSink)) {
         const bool isLet = d.def->kind == Statement::Kind::Let;
         if (d.level <= kMaxNameDepth) {
             if (isLet)
@@ -112,14 +112,14 @@ void Lowering::lowerDefinitions() {
 
 bool Lowering::onlyOnce(const Statement& s, const Statement*& first, const char* what) {
     if (first) {
-        error(s.loc, std::string(what) + " given twice", "first given at " + where(first->loc));
+        error(s.loc, std::string(what) + " given twice", "first given at " + where(mSink.locate(first->loc)));
         return false;
     }
     first = &s;
     return true;
 }
 
-void Lowering::lowerStatement(const Statement& s, Scene& scene) {
+void Lowering::lowerStatement(Statement& s, Scene& scene) {
     switch (s.kind) {
         case Statement::Kind::Let:
             if (s.broken) break;
@@ -131,6 +131,7 @@ void Lowering::lowerStatement(const Statement& s, Scene& scene) {
             break;
         case Statement::Kind::Object:
             if (NodePtr node = lowerSolid(*s.solid)) scene.objects.push_back(node);
+            s.releaseTree();
             break;
         case Statement::Kind::Material: {
             const MaterialEntry& m = mMaterials[s.name];

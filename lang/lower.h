@@ -29,8 +29,10 @@ class Lowering {
 public:
     explicit Lowering(DiagnosticSink& sink) : mSink(sink) {}
 
-    /// Lowers the program; nullopt if it reported any error.
-    std::optional<Scene> lower(const Program& program);
+    /// Lowers the program; nullopt if it reported any error. The syntax tree of each `solid`
+    /// definition and `object` is freed once it is lowered (Statement::releaseTree), so the
+    /// memory held follows the compiled scene, not the text.
+    std::optional<Scene> lower(Program& program);
 
     /// After lower(): the tree of a `solid` definition, shared by all its uses (null if the
     /// name is undefined or its definition had errors).
@@ -44,7 +46,7 @@ private:
         Value value;
     };
     struct SolidEntry {
-        const Statement* def = nullptr;
+        Statement* def = nullptr;  ///< not const: its tree is freed once lowered
         State state = State::Pending;
         NodePtr node;
     };
@@ -54,25 +56,25 @@ private:
     };
 
     // lower.cpp
-    void collectDefinitions(const Program& program, Scene& scene);
+    void collectDefinitions(Program& program, Scene& scene);
     /// Lowers the lets and solids each after those it uses (lang/definition_order.h), so
     /// no chain of names recurses; a chain deeper than kMaxNameDepth is an error.
     void lowerDefinitions();
-    void lowerStatement(const Statement& s, Scene& scene);
+    void lowerStatement(Statement& s, Scene& scene);
     bool onlyOnce(const Statement& s, const Statement*& first, const char* what);
     std::string cycleMessage(const char* what, const std::vector<std::string>& busy,
                              const std::string& name) const;
-    bool enter(const SourceLoc& at);
-    void error(const SourceLoc& loc, std::string message, std::string hint = {});
+    bool enter(SourcePos at);
+    void error(SourcePos loc, std::string message, std::string hint = {});
 
     // lower_expr.cpp
     std::optional<Value> evaluate(const Expr& e, ExprGraph* field);
     std::optional<Value> evaluateName(const Expr& e, ExprGraph* field);
     std::optional<Value> evaluateCall(const Expr& e, ExprGraph* field);
-    std::optional<Value> arithmetic(char op, const Value& a, const Value& b, const SourceLoc& at,
+    std::optional<Value> arithmetic(char op, const Value& a, const Value& b, SourcePos at,
                                     ExprGraph* field);
-    std::optional<Value> letValue(const std::string& name, const SourceLoc& use);
-    std::optional<Value> finite(Value v, const SourceLoc& at, const std::string& what);
+    std::optional<Value> letValue(const std::string& name, SourcePos use);
+    std::optional<Value> finite(Value v, SourcePos at, const std::string& what);
     /// Evaluates a property (which must exist) and checks its type against its spec.
     std::optional<Value> propertyValue(const PropertyBlock& block, const std::string& name);
     /// Read an optional property into `out` (left alone when absent); false on any error.
@@ -101,12 +103,12 @@ private:
     bool checkFolded(const Affine& folded, const Modifier& m);
     /// makeTransform, or null with an error at `last` when the result's extent overflows.
     NodePtr transformed(const NodePtr& node, const Affine& map, const Modifier& last);
-    std::optional<int> materialIndex(const std::string& name, const SourceLoc& use);
-    NodePtr solidByName(const std::string& name, const SourceLoc& use);
+    std::optional<int> materialIndex(const std::string& name, SourcePos use);
+    NodePtr solidByName(const std::string& name, SourcePos use);
     /// The height of a tree made while lowering (a leaf is 1), memoised on node identity.
     int heightOf(const NodePtr& node);
     /// `node`, or null with an error at `at` if its tree is deeper than kMaxCsgDepth.
-    NodePtr limitDepth(NodePtr node, const SourceLoc& at);
+    NodePtr limitDepth(NodePtr node, SourcePos at);
 
     // lower_scene.cpp
     void lowerMaterial(const Statement& s, Material& m);

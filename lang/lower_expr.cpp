@@ -83,7 +83,7 @@ ExprId powerField(ExprGraph& graph, const Value& a, const Value& b) {
 
 }  // namespace
 
-std::optional<Value> Lowering::finite(Value v, const SourceLoc& at, const std::string& what) {
+std::optional<Value> Lowering::finite(Value v, SourcePos at, const std::string& what) {
     const bool ok = v.type == Value::Type::Number   ? std::isfinite(v.number)
                     : v.type == Value::Type::Vector ? std::isfinite(v.vector.x) && std::isfinite(v.vector.y) &&
                                                           std::isfinite(v.vector.z)
@@ -102,18 +102,18 @@ std::optional<Value> Lowering::evaluate(const Expr& e, ExprGraph* field) {
 
     switch (e.kind) {
         case Expr::Kind::Number:
-            return finite(Value::ofNumber(e.number), e.loc, e.name + " is too large for a double");
+            return finite(Value::ofNumber(e.number), e.loc, mSink.textAt(e.loc, e.count) + " is too large for a double");
         case Expr::Kind::Name: return evaluateName(e, field);
         case Expr::Kind::Call: return evaluateCall(e, field);
         case Expr::Kind::Vector: {
             Vec3 v{0.0};
             bool ok = true;
             for (int i = 0; i < 3; ++i) {
-                const auto c = evaluate(*e.args[i], field);
+                const auto c = evaluate(e.args()[i], field);
                 if (!c) {
                     ok = false;
                 } else if (c->type != Value::Type::Number) {
-                    error(e.args[i]->start, "a vector component must be a number, got " + typeName(c->type));
+                    error(e.args()[i].start, "a vector component must be a number, got " + typeName(c->type));
                     ok = false;
                 } else {
                     v[i] = c->number;
@@ -123,15 +123,15 @@ std::optional<Value> Lowering::evaluate(const Expr& e, ExprGraph* field) {
             return Value::ofVector(v);
         }
         case Expr::Kind::Negate: {
-            const auto a = evaluate(*e.args[0], field);
+            const auto a = evaluate(e.args()[0], field);
             if (!a) return std::nullopt;
             if (a->type == Value::Type::Number) return Value::ofNumber(-a->number);
             if (a->type == Value::Type::Vector) return Value::ofVector(-a->vector);
             return Value::ofField(field->unary(Op::Neg, a->field));
         }
         case Expr::Kind::Binary: {
-            const auto a = evaluate(*e.args[0], field);
-            const auto b = evaluate(*e.args[1], field);
+            const auto a = evaluate(e.args()[0], field);
+            const auto b = evaluate(e.args()[1], field);
             if (!a || !b) return std::nullopt;
             return arithmetic(e.op, *a, *b, e.loc, field);
         }
@@ -139,7 +139,7 @@ std::optional<Value> Lowering::evaluate(const Expr& e, ExprGraph* field) {
     return std::nullopt;
 }
 
-std::optional<Value> Lowering::arithmetic(char op, const Value& a, const Value& b, const SourceLoc& at,
+std::optional<Value> Lowering::arithmetic(char op, const Value& a, const Value& b, SourcePos at,
                                           ExprGraph* field) {
     using T = Value::Type;
     const auto mistyped = [&]() -> std::optional<Value> {
@@ -173,28 +173,28 @@ std::optional<Value> Lowering::arithmetic(char op, const Value& a, const Value& 
 }
 
 std::optional<Value> Lowering::evaluateName(const Expr& e, ExprGraph* field) {
-    if (field && (e.name == "x" || e.name == "y" || e.name == "z"))
-        return Value::ofField(e.name == "x" ? field->x() : e.name == "y" ? field->y() : field->z());
-    if (e.name == "pi") return Value::ofNumber(M_PI);
-    if (mLets.count(e.name)) return letValue(e.name, e.loc);
-    if (mSolids.count(e.name)) {
-        error(e.loc, "'" + e.name + "' is a solid, not a number or vector");
+    if (field && (e.name() == "x" || e.name() == "y" || e.name() == "z"))
+        return Value::ofField(e.name() == "x" ? field->x() : e.name() == "y" ? field->y() : field->z());
+    if (e.name() == "pi") return Value::ofNumber(M_PI);
+    if (mLets.count(e.name())) return letValue(e.name(), e.loc);
+    if (mSolids.count(e.name())) {
+        error(e.loc, "'" + e.name() + "' is a solid, not a number or vector");
         return std::nullopt;
     }
-    if (mMaterials.count(e.name)) {
-        error(e.loc, "'" + e.name + "' is a material, not a number or vector");
+    if (mMaterials.count(e.name())) {
+        error(e.loc, "'" + e.name() + "' is a material, not a number or vector");
         return std::nullopt;
     }
     std::vector<std::string> candidates{"pi"};
     for (const auto& [name, entry] : mLets) candidates.push_back(name);
-    std::string hint = didYouMean(e.name, candidates);
-    if (!field && (e.name == "x" || e.name == "y" || e.name == "z"))
+    std::string hint = didYouMean(e.name(), candidates);
+    if (!field && (e.name() == "x" || e.name() == "y" || e.name() == "z"))
         hint = "x, y and z exist only inside the f of an implicit solid";
-    error(e.loc, "undefined name '" + e.name + "'", hint);
+    error(e.loc, "undefined name '" + e.name() + "'", hint);
     return std::nullopt;
 }
 
-std::optional<Value> Lowering::letValue(const std::string& name, const SourceLoc& use) {
+std::optional<Value> Lowering::letValue(const std::string& name, SourcePos use) {
     LetEntry& entry = mLets[name];
     switch (entry.state) {
         case State::Done: return entry.value;
@@ -221,31 +221,31 @@ std::optional<Value> Lowering::letValue(const std::string& name, const SourceLoc
 std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
     const Function* fn = nullptr;
     for (const Function& f : kFunctions)
-        if (e.name == f.name && f.arity > 0) fn = &f;
+        if (e.name() == f.name && f.arity > 0) fn = &f;
     if (!fn) {
         std::vector<std::string> names;
         for (const Function& f : kFunctions)
             if (f.arity > 0) names.emplace_back(f.name);
-        std::string hint = didYouMean(e.name, names);
-        error(e.loc, "unknown function '" + e.name + "'",
+        std::string hint = didYouMean(e.name(), names);
+        error(e.loc, "unknown function '" + e.name() + "'",
               hint.empty() ? "the functions are " + joinNames(names) : hint);
         return std::nullopt;
     }
-    if (static_cast<int>(e.args.size()) != fn->arity) {
-        error(e.loc, "'" + e.name + "' takes " + std::to_string(fn->arity) + " argument" +
-                         (fn->arity == 1 ? "" : "s") + ", got " + std::to_string(e.args.size()));
+    if (static_cast<int>(e.args().size()) != fn->arity) {
+        error(e.loc, "'" + e.name() + "' takes " + std::to_string(fn->arity) + " argument" +
+                         (fn->arity == 1 ? "" : "s") + ", got " + std::to_string(e.args().size()));
         return std::nullopt;
     }
     std::vector<Value> args;
     bool ok = true;
-    for (const ExprPtr& a : e.args) {
-        const auto v = evaluate(*a, field);
+    for (const Expr& a : e.args()) {
+        const auto v = evaluate(a, field);
         if (v) args.push_back(*v);
         ok = ok && v.has_value();
     }
     if (!ok) return std::nullopt;
 
-    const std::string name = e.name;
+    const std::string name = e.name();
     if (name == "mix") {  // a + (b - a)·t, which also mixes vectors
         const auto d = arithmetic('-', args[1], args[0], e.loc, field);
         const auto s = d ? arithmetic('*', *d, args[2], e.loc, field) : std::nullopt;
@@ -254,7 +254,7 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
     if (name == "pow") return arithmetic('^', args[0], args[1], e.loc, field);
     for (size_t i = 0; i < args.size(); ++i) {
         if (args[i].type == Value::Type::Vector) {
-            error(e.args[i]->start, "'" + name + "' expects a number, got a vector");
+            error(e.args()[i].start, "'" + name + "' expects a number, got a vector");
             return std::nullopt;
         }
     }

@@ -68,9 +68,9 @@ void Lowering::checkEnergy(const PropertyBlock& b, const Material& m) {
         }
     }
     if (ok && m.reflect >= 0 && m.transmit >= 0 && m.reflect + m.transmit > 1) {
-        const SourceLoc& r = b.find("reflect")->valueLoc();
-        const SourceLoc& t = b.find("transmit")->valueLoc();
-        const bool reflectFirst = r.line < t.line || (r.line == t.line && r.col < t.col);
+        SourcePos r = b.find("reflect")->valueLoc();
+        SourcePos t = b.find("transmit")->valueLoc();
+        const bool reflectFirst = r.offset < t.offset;  // one block, so one file
         const Property* later = reflectFirst ? b.find("transmit") : b.find("reflect");
         error(later->valueLoc(), "material reflect + transmit must be at most 1, got " +
                                      formatNumber(m.reflect) + " + " + formatNumber(m.transmit),

@@ -74,7 +74,7 @@ NodePtr Lowering::lowerReference(const Solid& s) {
     return solidByName(s.name, s.loc);
 }
 
-NodePtr Lowering::solidByName(const std::string& name, const SourceLoc& use) {
+NodePtr Lowering::solidByName(const std::string& name, SourcePos use) {
     const auto it = mSolids.find(name);
     if (it == mSolids.end()) {
         if (mLets.count(name)) {
@@ -108,6 +108,7 @@ NodePtr Lowering::solidByName(const std::string& name, const SourceLoc& use) {
     mBusySolids.pop_back();
     entry.state = node ? State::Done : State::Failed;
     entry.node = node;
+    entry.def->releaseTree();  // never read again: the state answers every later use
     return node;
 }
 
@@ -118,8 +119,8 @@ NodePtr Lowering::lowerBoolean(const Solid& s) {
     }
     std::vector<NodePtr> children;
     bool ok = true;
-    for (const SolidPtr& c : s.children) {
-        NodePtr child = lowerSolid(*c);
+    for (const Solid& c : s.children) {
+        NodePtr child = lowerSolid(c);
         ok = ok && child;
         children.push_back(child);
     }
@@ -133,6 +134,9 @@ NodePtr Lowering::lowerBoolean(const Solid& s) {
 }
 
 int Lowering::heightOf(const NodePtr& node) {
+    // Leaves are not memoised: their height is known, and a memo entry (about 56 bytes) would
+    // cost more than the primitive itself.
+    if (node->children().size() == 0) return 1;
     const auto it = mHeights.find(node.get());
     if (it != mHeights.end()) return it->second.second;
     // Only nodes made since the last call are not memoised yet: a few levels at most.
@@ -142,7 +146,7 @@ int Lowering::heightOf(const NodePtr& node) {
     return height;
 }
 
-NodePtr Lowering::limitDepth(NodePtr node, const SourceLoc& at) {
+NodePtr Lowering::limitDepth(NodePtr node, SourcePos at) {
     if (heightOf(node) <= kMaxCsgDepth) return node;
     error(at, "solid nested too deeply: its tree would be more than " + std::to_string(kMaxCsgDepth) +
                   " levels deep, counting named solids as written out",
@@ -422,9 +426,9 @@ std::optional<Affine> Lowering::modifierTransform(const Modifier& m) {
         double entries[12];
         bool ok = true;
         for (int i = 0; i < 12; ++i) {
-            const auto v = evaluate(*m.args[i], nullptr);
+            const auto v = evaluate(m.args[i], nullptr);
             if (v && v->type != Value::Type::Number)
-                error(m.args[i]->start, "a matrix entry must be a number, got " + typeName(v->type));
+                error(m.args[i].start, "a matrix entry must be a number, got " + typeName(v->type));
             ok = ok && v && v->type == Value::Type::Number;
             if (ok) entries[i] = v->number;
         }
@@ -447,25 +451,25 @@ std::optional<Affine> Lowering::modifierTransform(const Modifier& m) {
     const char* word = m.kind == Modifier::Kind::Translate ? "translate"
                        : m.kind == Modifier::Kind::Rotate  ? "rotate"
                                                            : "scale";
-    const auto v = evaluate(*m.args[0], nullptr);
+    const auto v = evaluate(m.args[0], nullptr);
     if (!v) return std::nullopt;
     if (m.kind == Modifier::Kind::Scale) {
         const Vec3 s = v->type == Value::Type::Number ? Vec3(v->number) : v->vector;
         if (s.x == 0 || s.y == 0 || s.z == 0) {
-            error(m.args[0]->start, "scale by zero flattens the solid", "scale factors must not be 0");
+            error(m.args[0].start, "scale by zero flattens the solid", "scale factors must not be 0");
             return std::nullopt;
         }
         return Affine::scale(s);
     }
     if (v->type != Value::Type::Vector) {
-        error(m.args[0]->start, std::string(word) + " expects a vector, got " + typeName(v->type),
+        error(m.args[0].start, std::string(word) + " expects a vector, got " + typeName(v->type),
               std::string("write ") + word + " <x, y, z>");
         return std::nullopt;
     }
     return m.kind == Modifier::Kind::Translate ? Affine::translate(v->vector) : Affine::rotateDegrees(v->vector);
 }
 
-std::optional<int> Lowering::materialIndex(const std::string& name, const SourceLoc& use) {
+std::optional<int> Lowering::materialIndex(const std::string& name, SourcePos use) {
     const auto it = mMaterials.find(name);
     if (it != mMaterials.end()) return it->second.index;
     if (name == "default") return 0;

@@ -55,8 +55,11 @@ public:
 
     Program run() {
         Program program;
+        program.arenas.push_back(std::make_unique<AstArena>());
+        mArena = program.arenas.back().get();
         while (peek().kind != TokenKind::End) {
             mTokens.dropBefore(mPos > 0 ? mPos - 1 : 0);  // keep the previous token: afterPrevious()
+            mArena->reset();  // the last statement's nodes were moved to its own block
             if (accept(TokenKind::Semicolon)) continue;  // an empty statement
             const size_t before = mPos;
             try {
@@ -71,6 +74,16 @@ public:
     }
 
 private:
+    // ---- the arena: nodes are built as values, then copied into it side by side ----
+    template <class T>
+    const T* store(const T& node) { return mArena->copy(&node, 1); }
+    template <class T>
+    ArenaList<T> list(const T* values, size_t n) {
+        return ArenaList<T>(mArena->copy(values, n), static_cast<uint32_t>(n));
+    }
+    template <class T>
+    ArenaList<T> list(const std::vector<T>& values) { return list(values.data(), values.size()); }
+
     // ---- token access ----
     const Token& peek(size_t ahead = 0) { return mTokens.at(mPos + ahead); }
     bool check(TokenKind k) { return peek().kind == k; }
@@ -158,7 +171,7 @@ private:
             fail(t.loc, "expected a statement, found " + describe(t), hint);
         }
         Statement s;
-        s.loc = t.loc;
+        s.loc = t.pos;
         try {
             parseStatementBody(s);
         } catch (const SyntaxError&) {
@@ -167,10 +180,12 @@ private:
                                  s.kind == Statement::Kind::Material;
             if (defines && !s.name.empty()) {
                 s.broken = true;
+                s.takeTree(mArena->handedOut());
                 program.statements.push_back(std::move(s));
             }
             throw;
         }
+        s.takeTree(mArena->handedOut());
         program.statements.push_back(std::move(s));
     }
 
@@ -180,17 +195,17 @@ private:
             s.kind = Statement::Kind::Let;
             parseDefinedName(s, "let");
             expect(TokenKind::Equals, "after the name of the let");
-            s.expr = parseExpr();
+            s.expr = store(parseExpr());
             expect(TokenKind::Semicolon, "after the let statement");
         } else if (word == "solid") {
             s.kind = Statement::Kind::SolidDef;
             parseDefinedName(s, "solid");
             expect(TokenKind::Equals, "after the name of the solid");
-            s.solid = parseSolid(true);
+            s.solid = store(parseSolid(true));
             expect(TokenKind::Semicolon, "after the solid statement");
         } else if (word == "object") {
             s.kind = Statement::Kind::Object;
-            s.solid = parseSolid(true);
+            s.solid = store(parseSolid(true));
             expect(TokenKind::Semicolon, "after the object statement");
         } else if (word == "material") {
             s.kind = Statement::Kind::Material;
@@ -198,7 +213,7 @@ private:
             parseBlock(s.properties);
         } else if (word == "light") {
             s.kind = Statement::Kind::Light;
-            s.nameLoc = peek().loc;
+            s.nameLoc = peek().pos;
             const Token& kind = expectName("a light kind (point or directional)");
             s.name = kind.text;
             parseBlock(s.properties);
@@ -208,11 +223,11 @@ private:
             parseBlock(s.properties);
         } else if (word == "background") {
             s.kind = Statement::Kind::Background;
-            s.expr = parseExpr();
+            s.expr = store(parseExpr());
             expect(TokenKind::Semicolon, "after the background statement");
         } else {  // include
             s.kind = Statement::Kind::Include;
-            s.nameLoc = peek().loc;
+            s.nameLoc = peek().pos;
             s.name = expect(TokenKind::String, "after include (the file name in quotes)").text;
             expect(TokenKind::Semicolon, "after the include statement");
         }
@@ -221,78 +236,85 @@ private:
     void parseDefinedName(Statement& s, const std::string& what) {
         const Token& name = expectName("the name of the " + what);
         s.name = name.text;
-        s.nameLoc = name.loc;
+        s.nameLoc = name.pos;
         if (isReservedWord(name.text) || (what == "let" && (name.text == "x" || name.text == "y" || name.text == "z")))
             mSink.error(name.loc, "'" + name.text + "' is a reserved word and cannot name a " + what);
     }
 
     /// `{ name value … }`; an optional ';' may follow the block.
-    void parseBlock(std::vector<Property>& properties) {
+    void parseBlock(ArenaList<Property>& properties) {
         const SourceLoc open = peek().loc;
         expect(TokenKind::LBrace, "to open the block");
-        parseProperties(properties, open);
+        properties = parseProperties(open);
         accept(TokenKind::Semicolon);
     }
 
-    void parseProperties(std::vector<Property>& properties, const SourceLoc& open) {
+    ArenaList<Property> parseProperties(const SourceLoc& open) {
+        std::vector<Property> properties;
         while (!accept(TokenKind::RBrace)) {
             if (check(TokenKind::End) || (peek().firstOnLine && startsStatement()))
                 fail(peek().loc, "expected '}' to close the block opened at line " + std::to_string(open.line) +
                                      ", found " + describe(peek()));
             const Token& name = expectName("a property name or '}'");
             Property p;
-            p.name = name.text;
-            p.loc = name.loc;
+            p.name = mArena->intern(name.text);
+            p.loc = name.pos;
             if (check(TokenKind::Identifier) && peek(1).kind == TokenKind::LBrace)
-                p.solid = parseSolid(false);
+                p.solid = store(parseSolid(false));
             else
-                p.expr = parseExpr();
-            properties.push_back(std::move(p));
+                p.expr = store(parseExpr());
+            properties.push_back(p);
         }
+        return list(properties);
     }
 
     // ---- solids ----
-    SolidPtr parseSolid(bool withModifiers) {
+    /// A solid as a value; its children, properties and modifiers are already in the arena.
+    Solid parseSolid(bool withModifiers) {
         NestingGuard guard(*this);
-        auto solid = std::make_unique<Solid>();
+        Solid solid;
         const Token& t = peek();
-        solid->loc = t.loc;
+        solid.loc = t.pos;
         if (t.kind != TokenKind::Identifier || contains(kModifierWords, t.text) ||
             (contains(kStatementWords, t.text) && peek(1).kind != TokenKind::LBrace))
             fail(t.loc, "expected a solid, found " + describe(t));
-        solid->name = next().text;
+        solid.name = mArena->intern(next().text);
         if (check(TokenKind::LBrace)) {
             const SourceLoc open = peek().loc;
             next();
-            if (contains(kBooleanWords, solid->name)) {
-                solid->kind = Solid::Kind::Boolean;
+            if (contains(kBooleanWords, solid.name)) {
+                solid.kind = Solid::Kind::Boolean;
+                std::vector<Solid> children;
                 while (!accept(TokenKind::RBrace)) {
                     if (check(TokenKind::End) || (peek().firstOnLine && startsStatement()))
-                        fail(peek().loc, "expected '}' to close the " + solid->name + " opened at line " +
+                        fail(peek().loc, "expected '}' to close the " + solid.name + " opened at line " +
                                              std::to_string(open.line) + ", found " + describe(peek()));
-                    solid->children.push_back(parseSolid(true));
+                    children.push_back(parseSolid(true));
                 }
+                solid.children = list(children);
             } else {
-                solid->kind = Solid::Kind::Primitive;
-                parseProperties(solid->properties, open);
+                solid.kind = Solid::Kind::Primitive;
+                solid.properties = parseProperties(open);
             }
         } else {
-            solid->kind = Solid::Kind::Reference;
+            solid.kind = Solid::Kind::Reference;
         }
-        if (withModifiers) parseModifiers(*solid);
+        if (withModifiers) solid.modifiers = parseModifiers();
         return solid;
     }
 
-    void parseModifiers(Solid& solid) {
+    ArenaList<Modifier> parseModifiers() {
+        std::vector<Modifier> modifiers;
         while (check(TokenKind::Identifier)) {
             const std::string& word = peek().text;
             Modifier m;
-            m.loc = peek().loc;
+            m.loc = peek().pos;
             if (word == "translate" || word == "rotate" || word == "scale") {
                 m.kind = word == "translate" ? Modifier::Kind::Translate
                          : word == "rotate" ? Modifier::Kind::Rotate : Modifier::Kind::Scale;
                 next();
-                m.args.push_back(parseExpr());
+                const Expr arg = parseExpr();
+                m.args = list(&arg, 1);
             } else if (word == "matrix") {
                 m.kind = Modifier::Kind::Matrix;
                 next();
@@ -302,13 +324,14 @@ private:
             } else if (word == "material" && peek(2).kind != TokenKind::LBrace) {
                 m.kind = Modifier::Kind::Material;
                 next();
-                m.materialLoc = peek().loc;
-                m.material = next().text;
+                m.materialLoc = peek().pos;
+                m.material = mArena->intern(next().text);
             } else {
                 break;
             }
-            solid.modifiers.push_back(std::move(m));
+            modifiers.push_back(m);
         }
+        return list(modifiers);
     }
 
     /// `[a, b, …]` with commas, or `[a b …]` separated by blanks, where each entry is a single
@@ -317,13 +340,15 @@ private:
         const SourceLoc open = peek().loc;
         expect(TokenKind::LBracket, "after matrix");
         const bool commas = bracketHasCommas();
+        std::vector<Expr> entries;
         while (!accept(TokenKind::RBracket)) {
             if (check(TokenKind::End) || check(TokenKind::Semicolon) || check(TokenKind::RBrace))
                 fail(peek().loc, "expected ']' to close the matrix opened at line " + std::to_string(open.line) +
                                      ", found " + describe(peek()));
-            if (commas && !m.args.empty()) expect(TokenKind::Comma, "between matrix entries");
-            m.args.push_back(commas ? parseExpr() : parseUnary());
+            if (commas && !entries.empty()) expect(TokenKind::Comma, "between matrix entries");
+            entries.push_back(commas ? parseExpr() : parseUnary());
         }
+        m.args = list(entries);
     }
 
     bool bracketHasCommas() {
@@ -342,102 +367,121 @@ private:
     }
 
     // ---- expressions ----
-    ExprPtr parseExpr() {
-        ExprPtr lhs = parseTerm();
+    // Expressions are built as values and their operands copied into the arena side by side.
+
+
+    Expr parseExpr() {
+        Expr lhs = parseTerm();
         while (check(TokenKind::Plus) || check(TokenKind::Minus)) {
             const Token& op = next();
-            lhs = binary(op, std::move(lhs), parseTerm());
+            const Expr rhs = parseTerm();
+            lhs = binary(op, lhs, rhs);
         }
         return lhs;
     }
 
-    ExprPtr parseTerm() {
-        ExprPtr lhs = parseUnary();
+    Expr parseTerm() {
+        Expr lhs = parseUnary();
         while (check(TokenKind::Star) || check(TokenKind::Slash)) {
             const Token& op = next();
-            lhs = binary(op, std::move(lhs), parseUnary());
+            const Expr rhs = parseUnary();
+            lhs = binary(op, lhs, rhs);
         }
         return lhs;
     }
 
     /// Unary minus binds looser than '^', as in mathematics: -2^2 = -4.
-    ExprPtr parseUnary() {
+    Expr parseUnary() {
         NestingGuard guard(*this);
         if (check(TokenKind::Minus)) {
-            auto e = std::make_unique<Expr>();
-            e->kind = Expr::Kind::Negate;
-            e->loc = e->start = next().loc;
-            e->args.push_back(parseUnary());
-            e->depth = e->args[0]->depth + 1;
+            Expr e;
+            e.kind = Expr::Kind::Negate;
+            e.loc = e.start = next().pos;
+            const Expr operand = parseUnary();
+            e.depth = static_cast<uint16_t>(operand.depth + 1);
+            setArgs(e, &operand, 1);
             return e;
         }
-        ExprPtr base = parsePrimary();
+        const Expr base = parsePrimary();
         if (check(TokenKind::Caret)) {
             const Token& op = next();
-            return binary(op, std::move(base), parseUnary());  // right associative
+            const Expr exponent = parseUnary();
+            return binary(op, base, exponent);  // right associative
         }
         return base;
     }
 
-    ExprPtr binary(const Token& op, ExprPtr lhs, ExprPtr rhs) {
-        auto e = std::make_unique<Expr>();
-        e->kind = Expr::Kind::Binary;
-        e->loc = op.loc;
-        e->start = lhs->start;
-        e->op = op.text[0];
-        e->depth = std::max(lhs->depth, rhs->depth) + 1;
-        if (e->depth > kMaxExpressionDepth)
+    void setArgs(Expr& e, const Expr* values, size_t n) {
+        e.first = list(values, n).begin();
+        e.count = static_cast<uint32_t>(n);
+    }
+
+    Expr binary(const Token& op, const Expr& lhs, const Expr& rhs) {
+        Expr e;
+        e.kind = Expr::Kind::Binary;
+        e.loc = op.pos;
+        e.start = lhs.start;
+        e.op = op.text[0];
+        const int depth = std::max(lhs.depth, rhs.depth) + 1;
+        if (depth > kMaxExpressionDepth)
             fail(op.loc, "expression too deeply nested (more than " + std::to_string(kMaxExpressionDepth) +
                              " levels)", "split it with lets");
-        e->args.push_back(std::move(lhs));
-        e->args.push_back(std::move(rhs));
+        e.depth = static_cast<uint16_t>(depth);
+        const Expr both[2] = {lhs, rhs};
+        setArgs(e, both, 2);
         return e;
     }
 
-    ExprPtr parsePrimary() {
-        auto e = std::make_unique<Expr>();
+    Expr parsePrimary() {
+        Expr e;
         const Token& t = peek();
-        e->loc = e->start = t.loc;
+        e.loc = e.start = t.pos;
+        std::vector<Expr> args;
         if (t.kind == TokenKind::Number) {
-            e->kind = Expr::Kind::Number;
-            e->number = t.number;
-            e->name = t.text;
+            e.kind = Expr::Kind::Number;
+            e.number = t.number;
+            e.count = static_cast<uint32_t>(t.length);
             next();
+            return e;
         } else if (t.kind == TokenKind::Identifier) {
-            e->name = next().text;
-            e->kind = Expr::Kind::Name;
+            e.ident = &mArena->intern(next().text).str();
+            e.kind = Expr::Kind::Name;
             if (accept(TokenKind::LParen)) {
-                e->kind = Expr::Kind::Call;
+                e.kind = Expr::Kind::Call;
                 if (!accept(TokenKind::RParen)) {
-                    do e->args.push_back(parseExpr());
+                    do args.push_back(parseExpr());
                     while (accept(TokenKind::Comma));
-                    expect(TokenKind::RParen, "to close the arguments of " + e->name);
+                    expect(TokenKind::RParen, "to close the arguments of " + e.name());
                 }
             }
         } else if (t.kind == TokenKind::LParen) {
             next();
             e = parseExpr();
-            e->start = t.loc;
+            e.start = t.pos;
             expect(TokenKind::RParen, "to close '('");
             return e;
         } else if (t.kind == TokenKind::Less) {
             next();
-            e->kind = Expr::Kind::Vector;
-            e->args.push_back(parseExpr());
+            e.kind = Expr::Kind::Vector;
+            args.push_back(parseExpr());
             expect(TokenKind::Comma, "after the x component of the vector");
-            e->args.push_back(parseExpr());
+            args.push_back(parseExpr());
             expect(TokenKind::Comma, "after the y component of the vector");
-            e->args.push_back(parseExpr());
+            args.push_back(parseExpr());
             expect(TokenKind::Greater, "to close the vector");
         } else {
             fail(t.loc, "expected an expression, found " + describe(t));
         }
-        for (const ExprPtr& a : e->args) e->depth = std::max(e->depth, a->depth + 1);
+        int depth = 1;
+        for (const Expr& a : args) depth = std::max(depth, a.depth + 1);
+        e.depth = static_cast<uint16_t>(depth);
+        setArgs(e, args.data(), args.size());
         return e;
     }
 
     TokenWindow mTokens;
     DiagnosticSink& mSink;
+    AstArena* mArena = nullptr;  // the program's, for expressions and names
     size_t mPos = 0;
     int mNesting = 0;
     int mBraceDepth = 0;

@@ -7,8 +7,8 @@
 
 namespace kerf {
 
-PropertyBlock::PropertyBlock(const std::vector<Property>& properties, std::vector<PropertySpec> specs,
-                             std::string what, const SourceLoc& blockLoc, DiagnosticSink& sink)
+PropertyBlock::PropertyBlock(const ArenaList<Property>& properties, std::vector<PropertySpec> specs,
+                             std::string what, SourcePos blockLoc, DiagnosticSink& sink)
     : mSpecs(std::move(specs)), mFound(mSpecs.size(), nullptr), mWhat(std::move(what)), mBlockLoc(blockLoc) {
     std::vector<std::string> valid;
     for (const PropertySpec& s : mSpecs) valid.emplace_back(s.name);
@@ -22,8 +22,8 @@ PropertyBlock::PropertyBlock(const std::vector<Property>& properties, std::vecto
             mOk = false;
         } else if (mFound[i]) {
             sink.error(p.loc, "property '" + p.name + "' given twice in " + mWhat,
-                       "first given at line " + std::to_string(mFound[i]->loc.line) + ", column " +
-                           std::to_string(mFound[i]->loc.col));
+                       "first given at line " + std::to_string(sink.locate(mFound[i]->loc).line) + ", column " +
+                           std::to_string(sink.locate(mFound[i]->loc).col));
             mOk = false;
         } else {
             mFound[i] = &p;

@@ -24,8 +24,8 @@ class PropertyBlock {
 public:
     /// `what` names the block in messages ("sphere", "camera"); missing properties are reported
     /// at `blockLoc`.
-    PropertyBlock(const std::vector<Property>& properties, std::vector<PropertySpec> specs,
-                  std::string what, const SourceLoc& blockLoc, DiagnosticSink& sink);
+    PropertyBlock(const ArenaList<Property>& properties, std::vector<PropertySpec> specs,
+                  std::string what, SourcePos blockLoc, DiagnosticSink& sink);
 
     /// False when a property was unknown, repeated or missing.
     bool ok() const { return mOk; }
@@ -33,13 +33,13 @@ public:
     const Property* find(const std::string& name) const;
     const PropertySpec& spec(const std::string& name) const;
     const std::string& what() const { return mWhat; }
-    const SourceLoc& blockLoc() const { return mBlockLoc; }
+    SourcePos blockLoc() const { return mBlockLoc; }
 
 private:
     std::vector<PropertySpec> mSpecs;
     std::vector<const Property*> mFound;  // parallel to mSpecs
     std::string mWhat;
-    SourceLoc mBlockLoc;
+    SourcePos mBlockLoc;
     bool mOk = true;
 };
 

@@ -168,7 +168,7 @@ TEST_CASE("Lowering::solidNamed: one lowered tree per definition") {
     DiagnosticSink sink;
     const SourceText src{std::make_shared<const std::string>("s.kerf"), std::make_shared<const std::string>(
         "object a translate <1, 0, 0>;\nobject a;\nsolid a = union { sphere {} box { min <0,0,0> max <2,2,2> } };")};
-    const Program program = parse(tokenize(src, sink), sink);
+    Program program = parse(tokenize(src, sink), sink);
     Lowering lowering(sink);
     const auto scene = lowering.lower(program);
     REQUIRE(scene.has_value());
@@ -178,6 +178,31 @@ TEST_CASE("Lowering::solidNamed: one lowered tree per definition") {
     CHECK(a->primitiveCount() == 2);
     checkVec(scene->objects[0]->bounds().lo, {0, -1, -1}, 1e-12);
     CHECK(lowering.solidNamed("b") == nullptr);
+}
+
+TEST_CASE("Lowering::lower: the syntax tree of each solid and object is freed once lowered") {
+    DiagnosticSink sink;
+    const SourceText src{std::make_shared<const std::string>("f.kerf"), std::make_shared<const std::string>(
+        "let r = 2;\nobject a translate <1, 0, 0>;\nsolid a = union { b sphere { radius r } };\n"
+        "solid b = box { min <0,0,0> max <1,1,1> };\nmaterial m { color <1, 0, 0> }\nobject b material m;")};
+    Program program = parse(tokenize(src, sink), sink);
+    REQUIRE(program.statements.size() == 6);
+    for (const Statement& s : program.statements) CHECK(s.tree != nullptr);
+    Lowering lowering(sink);
+    const auto scene = lowering.lower(program);
+    INFO(sink.format());
+    REQUIRE(scene.has_value());
+    // The compiled scene is whole: a = b ∪ sphere of radius 2, moved by 1 along x.
+    REQUIRE(scene->objects.size() == 2);
+    checkVec(scene->objects[0]->bounds().lo, {-1, -2, -2}, 1e-12);
+    checkVec(scene->objects[0]->bounds().hi, {3, 2, 2}, 1e-12);
+    // Solids and objects hold no tree any more; the let and the material keep theirs.
+    for (const Statement& s : program.statements) {
+        const bool freed = s.kind == Statement::Kind::SolidDef || s.kind == Statement::Kind::Object;
+        INFO("statement at offset " << s.loc.offset);
+        CHECK((s.tree == nullptr) == freed);
+        if (freed) CHECK(s.solid == nullptr);
+    }
 }
 
 TEST_CASE("Lowering: expressions fold to the right values") {

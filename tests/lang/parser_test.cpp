@@ -12,18 +12,19 @@ Program parseText(const std::string& text, DiagnosticSink& sink) {
     return parse(tokenize(source, sink), sink);
 }
 
-/// The expression in fully parenthesised prefix form, e.g. (+ 1 (* 2 3)).
-std::string show(const Expr& e) {
+/// The expression in fully parenthesised prefix form, e.g. (+ 1 (* 2 3)); numbers as written
+/// (the sink holds the text the syntax tree points into).
+std::string show(const Expr& e, const DiagnosticSink& sink) {
+    const auto arg = [&](size_t i) { return show(e.args()[i], sink); };
     switch (e.kind) {
-        case Expr::Kind::Number: return e.name;
-        case Expr::Kind::Name: return e.name;
-        case Expr::Kind::Negate: return "(neg " + show(*e.args[0]) + ")";
-        case Expr::Kind::Binary: return std::string("(") + e.op + " " + show(*e.args[0]) + " " + show(*e.args[1]) + ")";
-        case Expr::Kind::Vector:
-            return "<" + show(*e.args[0]) + " " + show(*e.args[1]) + " " + show(*e.args[2]) + ">";
+        case Expr::Kind::Number: return sink.textAt(e.loc, e.count);
+        case Expr::Kind::Name: return e.name();
+        case Expr::Kind::Negate: return "(neg " + arg(0) + ")";
+        case Expr::Kind::Binary: return std::string("(") + e.op + " " + arg(0) + " " + arg(1) + ")";
+        case Expr::Kind::Vector: return "<" + arg(0) + " " + arg(1) + " " + arg(2) + ">";
         case Expr::Kind::Call: {
-            std::string s = "(" + e.name;
-            for (const auto& a : e.args) s += " " + show(*a);
+            std::string s = "(" + e.name();
+            for (const Expr& a : e.args()) s += " " + show(a, sink);
             return s + ")";
         }
     }
@@ -36,7 +37,7 @@ std::string showLet(const std::string& expr) {
     INFO(sink.format());
     REQUIRE(sink.errorCount() == 0);
     REQUIRE(p.statements.size() == 1);
-    return show(*p.statements[0].expr);
+    return show(*p.statements[0].expr, sink);
 }
 
 }  // namespace
@@ -61,9 +62,9 @@ TEST_CASE("parse: expressions") {
         DiagnosticSink sink;
         const Program p = parseText("let a =\n  R / 10;", sink);
         const Expr& e = *p.statements[0].expr;
-        CHECK(e.loc.line == 2);
-        CHECK(e.loc.col == 5);
-        CHECK(e.start.col == 3);
+        CHECK(sink.locate(e.loc).line == 2);
+        CHECK(sink.locate(e.loc).col == 5);
+        CHECK(sink.locate(e.start).col == 3);
     }
 }
 
@@ -90,10 +91,10 @@ object sphere {} matrix [1, 0, 0, -1, 0, 1, 0, 0, 0, 0, 1, 0];
     CHECK(cup.name == "cup");
     REQUIRE(cup.solid->kind == Solid::Kind::Boolean);
     REQUIRE(cup.solid->children.size() == 2);
-    CHECK(cup.solid->children[0]->name == "body");
-    CHECK(cup.solid->children[1]->name == "handle");
-    REQUIRE(cup.solid->children[1]->modifiers.size() == 1);
-    CHECK(cup.solid->children[1]->modifiers[0].kind == Modifier::Kind::Translate);
+    CHECK(cup.solid->children[0].name == "body");
+    CHECK(cup.solid->children[1].name == "handle");
+    REQUIRE(cup.solid->children[1].modifiers.size() == 1);
+    CHECK(cup.solid->children[1].modifiers[0].kind == Modifier::Kind::Translate);
 
     const Solid& object = *p.statements[1].solid;
     CHECK(object.kind == Solid::Kind::Reference);
@@ -106,7 +107,7 @@ object sphere {} matrix [1, 0, 0, -1, 0, 1, 0, 0, 0, 0, 1, 0];
     const Solid& implicit = *p.statements[2].solid;
     REQUIRE(implicit.properties.size() == 2);
     CHECK(implicit.properties[0].name == "f");
-    CHECK(show(*implicit.properties[0].expr) == "(- (+ (^ x 2) (^ y 2)) 1)");
+    CHECK(show(*implicit.properties[0].expr, sink) == "(- (+ (^ x 2) (^ y 2)) 1)");
     REQUIRE(implicit.properties[1].solid);
     CHECK(implicit.properties[1].solid->name == "box");
 
@@ -122,8 +123,8 @@ object sphere {} matrix [1, 0, 0, -1, 0, 1, 0, 0, 0, 0, 1, 0];
         for (int s : {8, 9}) {
             const Modifier& m = p.statements[s].solid->modifiers.at(0);
             REQUIRE(m.args.size() == 12);
-            CHECK(show(*m.args[3]) == "(neg 1)");
-            CHECK(show(*m.args[10]) == "1");
+            CHECK(show(m.args[3], sink) == "(neg 1)");
+            CHECK(show(m.args[10], sink) == "1");
         }
     }
 }

@@ -1,0 +1,88 @@
+// A statement's nodes moved from the parser's scratch arena into one exact-size block of its
+// own, so lowering can free each statement's tree once it is lowered.
+#include "lang/ast.h"
+
+#include <stdexcept>
+
+namespace kerf {
+
+namespace {
+
+static_assert(sizeof(Expr) % 8 == 0 && sizeof(Solid) % 8 == 0 && sizeof(Property) % 8 == 0 &&
+                  sizeof(Modifier) % 8 == 0,
+              "node sizes are multiples of 8, so the scratch arena's count bounds the copy");
+static_assert(alignof(Expr) <= 8 && alignof(Solid) <= 8 && alignof(Property) <= 8 && alignof(Modifier) <= 8);
+
+/// Deep copy of a statement's nodes into one block, each list again side by side.
+class TreeCopier {
+public:
+    TreeCopier(std::byte* out, size_t capacity) : mOut(out), mCapacity(capacity) {}
+
+    const Expr* one(const Expr* e) { return e ? list(ExprList(e, 1)).begin() : nullptr; }
+    const Solid* one(const Solid* s) { return s ? list(ArenaList<Solid>(s, 1)).begin() : nullptr; }
+
+    template <class T>
+    ArenaList<T> list(const ArenaList<T>& src) {
+        if (src.empty()) return {};
+        T* dst = take<T>(src.size());
+        for (size_t i = 0; i < src.size(); ++i) {
+            dst[i] = src[i];
+            fix(dst[i]);
+        }
+        return ArenaList<T>(dst, static_cast<uint32_t>(src.size()));
+    }
+
+private:
+    void fix(Expr& e) {
+        const ExprList args = e.args();
+        if (!args.empty()) e.first = list(args).begin();
+    }
+    void fix(Property& p) {
+        p.expr = one(p.expr);
+        p.solid = one(p.solid);
+    }
+    void fix(Modifier& m) { m.args = list(m.args); }
+    void fix(Solid& s) {
+        s.properties = list(s.properties);
+        s.children = list(s.children);
+        s.modifiers = list(s.modifiers);
+    }
+
+    template <class T>
+    T* take(size_t n) {
+        const size_t bytes = n * sizeof(T);
+        if (mUsed + bytes > mCapacity) throw std::logic_error("Statement::takeTree: bound too small");
+        T* p = reinterpret_cast<T*>(mOut + mUsed);
+        mUsed += bytes;
+        return p;
+    }
+
+    std::byte* mOut;
+    size_t mCapacity;
+    size_t mUsed = 0;
+};
+
+}  // namespace
+
+void Statement::takeTree(size_t bound) {
+    if (bound == 0 || (!expr && !solid && properties.empty())) {
+        releaseTree();
+        return;
+    }
+    const size_t words = (bound + sizeof(std::max_align_t) - 1) / sizeof(std::max_align_t);
+    std::unique_ptr<std::max_align_t[]> block(new std::max_align_t[words]);
+    TreeCopier copier(reinterpret_cast<std::byte*>(block.get()), words * sizeof(std::max_align_t));
+    expr = copier.one(expr);
+    solid = copier.one(solid);
+    properties = copier.list(properties);
+    tree = std::move(block);
+}
+
+void Statement::releaseTree() {
+    expr = nullptr;
+    solid = nullptr;
+    properties = {};
+    tree.reset();
+}
+
+}  // namespace kerf
