@@ -86,8 +86,10 @@ RenderOptions renderOptions(const RenderCommandLine& line, const OutputPlan& pla
     if (!accel)
         throw UsageError("--accel must be auto, none, bvh or octree (got '" + line.accel + "')");
     options.accel = *accel;
-    if (line.accelDepth < 0 || line.accelDepth > kMaxOctreeDepth)
-        throw UsageError("--accel-depth must be 0 (from the pixel footprint) to " +
+    if (line.accelDepth != 0 &&
+        (line.accelDepth < kMinOctreeDepth || line.accelDepth > kMaxOctreeDepth))
+        throw UsageError("--accel-depth must be 0 (from the pixel footprint) or " +
+                         std::to_string(kMinOctreeDepth) + " to " +
                          std::to_string(kMaxOctreeDepth) + " (got " +
                          std::to_string(line.accelDepth) + ")");
     options.accelDepth = line.accelDepth;
@@ -127,7 +129,7 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
         ->type_name("auto|none|bvh|octree");
     cmd->add_option("--accel-depth", line.accelDepth,
                     "The octree's finest level: 2^N cells along an object's longest side "
-                    "(1-10); 0, the default, derives it from the pixel footprint");
+                    "(3-10); 0, the default, derives it from the pixel footprint");
     cmd->add_option("--aov", line.aovs,
                     "Also write an output variable: depth=FILE.exr (eye-to-hit distance) or "
                     "normal=FILE.exr (world normal); may be repeated")

@@ -55,6 +55,13 @@ TEST_CASE("kerf render: --method names") {
     SECTION("misspelt") { requireUsageError({"--method", "sphere_trace"}, "--method"); }
 }
 
+TEST_CASE("kerf render: --accel names and depths") {
+    SECTION("unknown") { requireUsageError({"--accel", "kdtree"}, "--accel"); }
+    SECTION("depth too deep") { requireUsageError({"--accel-depth", "11"}, "--accel-depth"); }
+    SECTION("depth below a brick") { requireUsageError({"--accel-depth", "2"}, "--accel-depth"); }
+    SECTION("negative depth") { requireUsageError({"--accel-depth=-1"}, "--accel-depth"); }
+}
+
 TEST_CASE("kerf render: --aov specifications") {
     SECTION("unknown kind") { requireUsageError({"--aov", "albedo=a.exr"}, "albedo"); }
     SECTION("no '='") { requireUsageError({"--aov", "depth.exr"}, "--aov"); }
