@@ -124,25 +124,19 @@ bool CellGrid::walk(const Ray& ray, double tmin, double tmax, SegmentVisitor vis
         const double c = std::floor((start[a] - f.origin[a]) / f.h);
         ijk[a] = int32_t(std::clamp(c, 0.0, double(f.n - 1)));
     }
-    // A walk crosses at most 3n cells; more steps can only come from rounding at corners.
-    const int64_t limit = 3 * int64_t(f.n) + 16;
-    double t = tmin;
-    for (int64_t step = 0; step < limit; ++step) {
-        ++steps;
-        int32_t value = kEmptyValue;
-        const Node* node = nullptr;
-        int32_t size;
-        if (acc.probeValue(ijk, value)) {  // a brick the surface may cross: one cell
-            const BrickContent& b = mImpl->content(value);
-            node = b.nodeAt(BrickContent::index(ijk[0] & 7, ijk[1] & 7, ijk[2] & 7));
-            size = 1;
-        } else {
-            size = regionSize(acc.getValueDepth(ijk));
-        }
-        openvdb::Coord block;
-        for (int a = 0; a < 3; ++a) block[a] = ijk[a] & ~(size - 1);
+    // Plane crossings by one multiplication (one rounding more than a division, well inside
+    // the caller's slack); a reciprocal that overflows (subnormal direction) divides instead.
+    double inv[3];
+    bool divide[3];
+    for (int a = 0; a < 3; ++a) {
+        inv[a] = 1.0 / ray.dir[a];
+        divide[a] = !std::isfinite(inv[a]);
+    }
+    // Where the ray leaves the block of `size` cells at `block` (its far planes), and across
+    // which axis (−1: not before tmax).
+    auto exitOf = [&](const openvdb::Coord& block, int32_t size, double t, int& axis) {
         double tExit = tmax;
-        int axis = -1;
+        axis = -1;
         for (int a = 0; a < 3; ++a) {
             const double d = ray.dir[a];
             double plane;
@@ -152,14 +146,49 @@ bool CellGrid::walk(const Ray& ray, double tmin, double tmax, SegmentVisitor vis
                 plane = f.origin[a] + double(block[a]) * f.h;
             else
                 continue;
-            const double te = (plane - ray.origin[a]) / d;
+            const double te =
+                divide[a] ? (plane - ray.origin[a]) / d : (plane - ray.origin[a]) * inv[a];
             if (te < tExit) tExit = te, axis = a;
         }
-        tExit = std::max(tExit, t);
-        if (!visit(context, {t, tExit, node})) return true;
+        return std::max(tExit, t);
+    };
+    // A walk crosses at most 3n cells; more steps can only come from rounding at corners.
+    const int64_t limit = 3 * int64_t(f.n) + 16;
+    int64_t step = 0;
+    double t = tmin;
+    while (step < limit) {
+        int32_t value = kEmptyValue;
+        int axis;
+        if (acc.probeValue(ijk, value)) {
+            // A brick the surface may cross: its cells one by one, from its own table, until
+            // the ray leaves it. A step to a neighbouring cell changes one coordinate only.
+            const BrickContent& b = mImpl->content(value);
+            const openvdb::Coord brick(ijk[0] & ~7, ijk[1] & ~7, ijk[2] & ~7);
+            while (step++ < limit) {
+                ++steps;
+                const Node* node = b.nodeAt(BrickContent::index(ijk[0] & 7, ijk[1] & 7, ijk[2] & 7));
+                const double tExit = exitOf(ijk, 1, t, axis);
+                if (!visit(context, {t, tExit, node})) return true;
+                if (axis < 0) return true;  // tmax reached inside this cell
+                t = tExit;
+                ijk[axis] += ray.dir[axis] > 0.0 ? 1 : -1;
+                if (ijk[axis] < 0 || ijk[axis] >= f.n) return true;  // left the cube
+                if ((ijk[axis] & ~7) != brick[axis]) break;          // left the brick
+            }
+            continue;
+        }
+        // A block without surface: skipped whole, as large as OpenVDB's tile or node is.
+        ++step;
+        ++steps;
+        const int32_t size = regionSize(acc.getValueDepth(ijk));
+        openvdb::Coord block;
+        for (int a = 0; a < 3; ++a) block[a] = ijk[a] & ~(size - 1);
+        const double tExit = exitOf(block, size, t, axis);
+        if (!visit(context, {t, tExit, nullptr})) return true;
         if (axis < 0) return true;  // tmax reached inside this block
         const int32_t next = ray.dir[axis] > 0.0 ? block[axis] + size : block[axis] - 1;
         if (next < 0 || next >= f.n) return true;  // left the cube
+        // The ray has moved across the block on the other axes too: found from the exit point.
         const Vec3 p = ray.at(tExit);
         for (int a = 0; a < 3; ++a) {
             if (a == axis) continue;
