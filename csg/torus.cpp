@@ -1,12 +1,17 @@
-// The torus around the y axis: spans by interval root isolation of its quartic along the ray.
+// The torus around the y axis: spans from the roots of its quartic along the ray.
 //
 // Conditioning: coordinates are divided by S = R + r (so every quantity is O(1) whatever the
 // scene scale) and the ray is re-parameterised by arc length s from its point nearest the
 // centre, p(s) = p0 + s·u with |u| = 1. The quartic in s then has coefficients of order 1 and
-// no cancellation from a far-away origin. Isolation uses a Taylor-form enclosure of the quartic
-// at each sub-interval's midpoint; point signs and the polish use the better-conditioned
+// no cancellation from a far-away origin. Every decision uses the better-conditioned
 // h(p) = (ρ − R)² + (y − r)(y + r) (ρ = √(x² + z²)), which has the same sign as the quartic because
 // the quartic is h times (ρ + R)² + y² − r² > 0.
+//
+// Default (closed) method: rejections that need no root (the bounding ball, the hole), then h
+// piece by piece of one convexity (csg/torus_roots.h): tangents decide, Newton locates; then
+// one Newton step on h in the ray's own t. The interval method (for `kerf bench accuracy`, and
+// the reference of the tests) isolates the quartic's roots by interval bisection with a
+// Taylor-form enclosure at each sub-interval's midpoint (csg/root_isolation.h).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,6 +19,7 @@
 #include "csg/clip_ray.h"
 #include "csg/comparison_methods.h"
 #include "csg/implicit_expr.h"
+#include "csg/torus_roots.h"
 #include "csg/root_isolation.h"
 #include "csg/solids.h"
 
@@ -26,11 +32,16 @@ namespace {
 constexpr double kEnclosureSlack = 1e-13;
 /// The largest relative move of t that the final Newton step in t may make.
 constexpr double kRefineLimit = 1e-9;
+/// Relative margin of the rejection tests (bounding ball, hole) in normalised units: far
+/// above the rounding of the squared distances compared, so no line near the surface is lost.
+constexpr double kRejectMargin = 1e-9;
 
 /// The quartic s⁴ + c3·s³ + c2·s² + c1·s + c0 along the normalised ray, and h along it.
 struct TorusRay {
     double c3, c2, c1, c0;
     Vec3 p0, u;        ///< normalised ray: p(s) = p0 + s·u
+    double a2, a1, a0;  ///< x² + z² = a2·s² + a1·s + a0 along the ray
+    double c;           ///< |p0|²: the squared distance of the line from the centre
     double R, rm, r2;  ///< normalised major radius, minor radius and its square
 
     /// Taylor form at the midpoint: exact polynomial identity, so the enclosure holds the
@@ -66,22 +77,42 @@ class Torus final : public Primitive {
 public:
     Torus(double majorRadius, double minorRadius) : mR(majorRadius), mr(minorRadius) {
         const double e = mR + mr;
+        mInv = 1.0 / e;
         mBounds = {Vec3(-e, -mr, -e), Vec3(e, mr, e)};
     }
 
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                SpanList& out) const override {
-        // The closed method already isolates the quartic by intervals: Interval is the same.
         if (ctx.method == TraceMethod::SphereTrace)
             return comparisonSpans(*this, ray, tmin, tmax, ctx, out);  // a distance: Lipschitz 1
         out.clear();
         ++ctx.stats.primitiveTests;
         Setup st;
         if (!setUp(ray, tmin, tmax, st)) return;
-        isolatedSpans(
-            st.q, st.sA, st.sB, st.tc * st.sPerT, ctx,
-            [&](double s) { return crossingBoundary(ray, st, s, ctx); },
-            [&](bool atStart) { return endBoundary(ray, st, atStart); }, out);
+        if (ctx.method == TraceMethod::Interval)
+            return isolatedSpans(
+                st.q, st.sA, st.sB, st.tc * st.sPerT, ctx,
+                [&](double s) { return crossingBoundary(ray, st, s, ctx); },
+                [&](bool atStart) { return endBoundary(ray, st, atStart); }, out);
+        Boundary pending;
+        bool inside = false;
+        closedCrossings(
+            st, ctx,
+            [&](bool insideAtStart) {
+                inside = insideAtStart;
+                if (inside) pending = endBoundary(ray, st, true);
+            },
+            [&](double s, bool entering) {
+                const Boundary b = crossingBoundary(ray, st, s, ctx);
+                if (entering)
+                    pending = b;
+                else
+                    out.push_back({pending, b});
+                inside = entering;
+            },
+            [](double) { return false; });
+        if (inside) out.push_back({pending, endBoundary(ray, st, false)});
+        dropThinSpans(out, ctx.relTolerance);
     }
 
     /// The same crossings as spans(), but the search stops once the first surface is decided.
@@ -93,16 +124,28 @@ public:
         Setup st;
         if (!setUp(ray, tmin, tmax, st)) return false;
         FirstSurfaceTracker tracker(tmin, tmax, ctx.relTolerance);
-        tracker.search(
-            st.q, st.sA, st.sB, st.tc * st.sPerT, ctx,
-            [&](double s) { return crossingBoundary(ray, st, s, ctx); },
-            [&](bool atStart) { return endBoundary(ray, st, atStart); },
-            [&](double sNext) {
-                // Crossings at s ≥ sNext map to t ≥ tc + sNext/sPerT (rounding is monotone),
-                // less what refine() may move them.
-                const double t = st.tc + sNext / st.sPerT;
-                return t - 2.0 * kRefineLimit * std::fabs(t);
-            });
+        // Crossings at s ≥ sNext map to t ≥ tc + sNext/sPerT (rounding is monotone), less what
+        // refine() may move them.
+        const auto horizon = [&](double sNext) {
+            const double t = st.tc + sNext / st.sPerT;
+            return t - 2.0 * kRefineLimit * std::fabs(t);
+        };
+        const auto surface = [&](double s) { return crossingBoundary(ray, st, s, ctx); };
+        if (ctx.method == TraceMethod::Interval) {
+            tracker.search(
+                st.q, st.sA, st.sB, st.tc * st.sPerT, ctx, surface,
+                [&](bool atStart) { return endBoundary(ray, st, atStart); }, horizon);
+            return tracker.result(hit, entering);
+        }
+        bool stopped = false;
+        closedCrossings(
+            st, ctx,
+            [&](bool inside) {
+                tracker.start(inside, inside ? endBoundary(ray, st, true) : Boundary{});
+            },
+            [&](double s, bool enters) { tracker.crossing(surface(s), enters); },
+            [&](double sNext) { return stopped = tracker.settledBefore(horizon(sNext)); });
+        if (!stopped) tracker.finish(endBoundary(ray, st, false));
         return tracker.result(hit, entering);
     }
 
@@ -142,6 +185,47 @@ private:
         double inv;     ///< 1/S
     };
 
+    /// The closed method on [sA, sB]: start(inside at sA), then crossing(s, entering) for each
+    /// crossing in increasing s; stopBefore(s) is asked before each piece from s on, and true
+    /// ends the search (every crossing not yet reported lies at or after s).
+    template <typename Start, typename Crossing, typename StopBefore>
+    void closedCrossings(const Setup& st, TraceContext& ctx, Start&& start, Crossing&& crossing,
+                         StopBefore&& stopBefore) const {
+        const TorusRay& q = st.q;
+        // (setUp has rejected lines outside the unit ball.) A segment inside the hole's cylinder
+        // ρ < R − r misses: ρ² is convex along the line, so it is below (R − r)² throughout
+        // when it is at both ends.
+        const double hole = (q.R - q.rm) * (q.R - q.rm) * (1.0 - kRejectMargin);
+        const auto rho2 = [&](double s) { return (q.a2 * s + q.a1) * s + q.a0; };
+        if (q.R > q.rm && rho2(st.sA) < hole && rho2(st.sB) < hole) {
+            start(false);
+            return;
+        }
+        const TorusLine line(q.p0, q.u, q.R, q.rm);
+        double cuts[4];
+        bool concave[3];
+        const int n = line.pieces(st.sA, st.sB, cuts, concave);
+        double hLo = line.value(cuts[0]);
+        bool inside = isInside(hLo);
+        start(inside);
+        // Crossings to the rounding of t, not of s: s + tc·sPerT is proportional to t.
+        const double absTol = std::numeric_limits<double>::epsilon() * std::fabs(st.tc * st.sPerT);
+        long steps = 0;
+        for (int i = 0; i < n; ++i) {
+            if (stopBefore(cuts[i])) break;
+            const double hHi = line.value(cuts[i + 1]);
+            double s[2];
+            const int k = line.pieceCrossings(cuts[i], cuts[i + 1], hLo, hHi, concave[i], absTol,
+                                              s, steps);
+            for (int j = 0; j < k; ++j) {
+                inside = !inside;
+                crossing(s[j], inside);
+            }
+            hLo = hHi;
+        }
+        ctx.stats.rootSteps += static_cast<uint64_t>(steps);
+    }
+
     /// False when the ray misses the bounds within the range (or has no direction).
     bool setUp(const Ray& ray, double tmin, double tmax, Setup& st) const {
         st.t0 = tmin, st.t1 = tmax;
@@ -157,24 +241,28 @@ private:
             dir = Vec3(std::ldexp(dir.x, -kd), std::ldexp(dir.y, -kd), std::ldexp(dir.z, -kd));
         }
         const double dd = glm::dot(dir, dir);
-        if (!(dd > 0.0) || !clipRayExact(mBounds, ray, st.t0, st.t1)) return false;
-        st.t0Clip = st.t0 == tmin;
-        st.t1Clip = st.t1 == tmax;
+        if (!(dd > 0.0)) return false;
 
         // Normalise: lengths by S, the parameter by arc length from the point nearest the centre.
-        const double scale = mR + mr, inv = 1.0 / scale, len = std::ldexp(std::sqrt(dd), kd);
+        const double inv = mInv, len = std::ldexp(std::sqrt(dd), kd);
         const double tc = std::ldexp(-glm::dot(ray.origin, dir) / dd, -kd);
         TorusRay& q = st.q;
         q.p0 = (ray.origin + tc * ray.dir) * inv;
+        const double c = glm::dot(q.p0, q.p0);
+        // The torus lies in the unit ball (normalised): a line farther from the centre misses.
+        if (!(c <= 1.0 + kRejectMargin) || !clipRayExact(mBounds, ray, st.t0, st.t1)) return false;
+        st.t0Clip = st.t0 == tmin;
+        st.t1Clip = st.t1 == tmax;
         q.u = dir / std::sqrt(dd);
         q.R = mR * inv;
         q.rm = mr * inv;
         q.r2 = q.rm * q.rm;
         // |p|² = s² + 2b·s + c, x² + z² = a2·s² + a1·s + a0; b ≈ 0 but kept for consistency.
-        const double b = glm::dot(q.p0, q.u), c = glm::dot(q.p0, q.p0);
-        const double a2 = q.u.x * q.u.x + q.u.z * q.u.z;
-        const double a1 = 2.0 * (q.p0.x * q.u.x + q.p0.z * q.u.z);
-        const double a0 = q.p0.x * q.p0.x + q.p0.z * q.p0.z;
+        const double b = glm::dot(q.p0, q.u);
+        const double a2 = q.a2 = q.u.x * q.u.x + q.u.z * q.u.z;
+        const double a1 = q.a1 = 2.0 * (q.p0.x * q.u.x + q.p0.z * q.u.z);
+        const double a0 = q.a0 = q.p0.x * q.p0.x + q.p0.z * q.p0.z;
+        q.c = c;
         const double k = c + q.R * q.R - q.r2, fourR2 = 4.0 * q.R * q.R;
         // (s² + 2bs + k)² − 4R²(a2·s² + a1·s + a0)
         q.c3 = 4.0 * b;
@@ -225,6 +313,7 @@ private:
     }
 
     double mR, mr;
+    double mInv;  ///< 1/(R + r): the normalising scale
 };
 
 }  // namespace
