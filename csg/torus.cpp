@@ -215,11 +215,14 @@ private:
             if (stopBefore(cuts[i])) break;
             const double hHi = line.value(cuts[i + 1]);
             double s[2];
+            TorusLine::Pending later;
             const int k = line.pieceCrossings(cuts[i], cuts[i + 1], hLo, hHi, concave[i], absTol,
-                                              s, steps);
-            for (int j = 0; j < k; ++j) {
-                inside = !inside;
-                crossing(s[j], inside);
+                                              s, steps, &later);
+            if (k > 0) crossing(s[0], inside = !inside);
+            if (k == 2) {
+                // The second crossing lies after later.x: often not needed to decide.
+                if (stopBefore(later.x)) break;
+                crossing(line.secondCrossing(later, absTol, steps), inside = !inside);
             }
             hLo = hHi;
         }
@@ -244,8 +247,10 @@ private:
         if (!(dd > 0.0)) return false;
 
         // Normalise: lengths by S, the parameter by arc length from the point nearest the centre.
-        const double inv = mInv, len = std::ldexp(std::sqrt(dd), kd);
-        const double tc = std::ldexp(-glm::dot(ray.origin, dir) / dd, -kd);
+        // (ldexp is a library call: skipped in the common case kd = 0, where it is exact anyway.)
+        double len = std::sqrt(dd), tc = -glm::dot(ray.origin, dir) / dd;
+        if (kd != 0) len = std::ldexp(len, kd), tc = std::ldexp(tc, -kd);
+        const double inv = mInv;
         TorusRay& q = st.q;
         q.p0 = (ray.origin + tc * ray.dir) * inv;
         const double c = glm::dot(q.p0, q.p0);

@@ -75,7 +75,7 @@ double TorusLine::oneCrossing(double lo, double hi, bool insideLo, double start,
 }
 
 int TorusLine::pieceCrossings(double lo, double hi, double hLo, double hHi, bool concave,
-                              double absTol, double out[2], long& steps) const {
+                              double absTol, double out[2], long& steps, Pending* later) const {
     // g = ±h is convex on the piece; Newton on g is Newton on h.
     const double sg = concave ? -1.0 : 1.0;
     const bool inLo = hLo <= 0.0, inHi = hHi <= 0.0;
@@ -115,7 +115,11 @@ int TorusLine::pieceCrossings(double lo, double hi, double hLo, double hHi, bool
         if ((f <= 0.0) != inLo) {
             // A point of the other side: one crossing on each side of it.
             out[0] = oneCrossing(L, x, inLo, L, sg * gL, sg * dL, absTol, steps);
-            out[1] = oneCrossing(x, Rt, !inLo, Rt, sg * gR, sg * dR, absTol, steps);
+            const Pending second{x, Rt, sg * gR, sg * dR, !inLo};
+            if (later)
+                *later = second;
+            else
+                out[1] = secondCrossing(second, absTol, steps);
             return 2;
         }
         const double g = sg * f, dg = sg * d;

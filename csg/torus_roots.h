@@ -49,12 +49,27 @@ struct TorusLine {
     /// pieces (1–3).
     int pieces(double a, double b, double cuts[4], bool concave[3]) const;
 
+    /// What pieceCrossings needs to locate a piece's second crossing later.
+    struct Pending {
+        double x;        ///< a point strictly between the two crossings
+        double hi, hHi, slopeHi;
+        bool insideX;
+    };
+
     /// The crossings of h inside the piece [lo, hi] (one convexity: `concave`), whose ends
     /// have h = hLo and hHi, in increasing order; returns how many (0–2). A point is inside
     /// where h ≤ 0; the count is odd exactly when the ends' sides differ. Each crossing is
-    /// located to the rounding of s or absTol, whichever is larger.
+    /// located to the rounding of s or absTol, whichever is larger. With `later`, the second
+    /// of two crossings is left to secondCrossing(*later) (a first-surface search may be
+    /// decided without it: it lies after later->x).
     int pieceCrossings(double lo, double hi, double hLo, double hHi, bool concave, double absTol,
-                       double out[2], long& steps) const;
+                       double out[2], long& steps, Pending* later = nullptr) const;
+
+    /// The second crossing that pieceCrossings left in `later`.
+    double secondCrossing(const Pending& later, double absTol, long& steps) const {
+        return oneCrossing(later.x, later.hi, later.insideX, later.hi, later.hHi, later.slopeHi,
+                           absTol, steps);
+    }
 
 private:
     /// The one crossing in [lo, hi] (sides differ at the ends) by Newton started at `start`
