@@ -19,6 +19,9 @@ TorusLine::TorusLine(const Vec3& origin, const Vec3& unitDir, double major, doub
     : p0(origin), u(unitDir), R(major), r(minor) {
     a2 = u.x * u.x + u.z * u.z;
     sm = a2 > 0.0 ? -(p0.x * u.x + p0.z * u.z) / a2 : 0.0;
+    // ρm² from the point itself (no cancellation).
+    const double x = p0.x + sm * u.x, z = p0.z + sm * u.z;
+    rm2 = x * x + z * z;
 }
 
 int TorusLine::pieces(double a, double b, double cuts[4], bool concave[3]) const {
@@ -26,8 +29,6 @@ int TorusLine::pieces(double a, double b, double cuts[4], bool concave[3]) const
     cuts[0] = a;
     double i1 = 0.0, i2 = 0.0;  // the concave zone (i1, i2), empty unless i1 < i2
     if (a2 > 0.0) {
-        // ρm² from the point itself (no cancellation), then ρ at the inflections.
-        const double x = p0.x + sm * u.x, z = p0.z + sm * u.z, rm2 = x * x + z * z;
         // Concave somewhere iff ρi > ρm, i.e. (R·a2)² > ρm² (no cube root needed to know).
         const double ra = R * a2;
         if (rm2 > 0.0 && ra * ra > rm2) {
@@ -51,8 +52,15 @@ int TorusLine::pieces(double a, double b, double cuts[4], bool concave[3]) const
 double TorusLine::oneCrossing(double lo, double hi, bool insideLo, double start, double f,
                               double slope, double absTol, long& steps) const {
     double s = start;
+    const double rho = std::sqrt(a2 * (s - sm) * (s - sm) + rm2);
+    // Off the axis, else no curvature term (Newton): the kink has no second derivative.
+    double curvature = rho > 0.0 ? 2.0 - 2.0 * R * a2 * rm2 / (rho * rho * rho) : 0.0;
     for (int it = 0; it < kMaxSteps; ++it) {
-        const double next = s - f / slope;
+        // The root of the local quadratic model f + slope·δ + curvature·δ²/2 nearest 0 (the
+        // stable form; Newton's step where the model has none): cubic convergence.
+        const double disc = slope * slope - 2.0 * curvature * f;
+        const double next = disc >= 0.0 ? s - 2.0 * f / (slope + std::copysign(std::sqrt(disc), slope))
+                                         : s - f / slope;
         // Converged: a step at the rounding of s, or of h's own value in these units (its
         // terms are O(1): steps below 4ε only follow its rounding noise).
         if (std::fabs(next - s) <= std::fmax(kEps * std::fmax(2.0 * std::fabs(s), 4.0), absTol))
@@ -64,7 +72,7 @@ double TorusLine::oneCrossing(double lo, double hi, bool insideLo, double start,
             if (!(s > lo && s < hi)) return s;  // two adjacent doubles
         }
         ++steps;
-        f = valueAndSlope(s, 1.0, slope);
+        f = valueSlopeCurvature(s, slope, curvature);
         if (f == 0.0) return s;
         if ((f <= 0.0) == insideLo)
             lo = s;

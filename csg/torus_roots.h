@@ -24,6 +24,7 @@ struct TorusLine {
     Vec3 p0, u;     ///< p(s) = p0 + s·u, |u| = 1
     double R, r;    ///< major and minor radius
     double a2, sm;  ///< x² + z² = a2·(s − sm)² + ρm² along the line
+    double rm2;     ///< ρm²
 
     TorusLine(const Vec3& origin, const Vec3& unitDir, double major, double minor);
 
@@ -41,6 +42,16 @@ struct TorusLine {
         const double rho = std::sqrt(q.x * q.x + q.z * q.z), e = rho - R;
         const double drho = rho > 0.0 ? (q.x * u.x + q.z * u.z) / rho : side * std::sqrt(a2);
         slope = 2.0 * (e * drho + q.y * u.y);
+        return e * e + (q.y - r) * (q.y + r);
+    }
+
+    /// h at s, its slope and its second derivative 2 − 2R·a2·ρm²/ρ³ (off the axis).
+    double valueSlopeCurvature(double s, double& slope, double& curvature) const {
+        const Vec3 q = p0 + s * u;
+        const double rho = std::sqrt(q.x * q.x + q.z * q.z), e = rho - R;
+        const double drho = (q.x * u.x + q.z * u.z) / rho;
+        slope = 2.0 * (e * drho + q.y * u.y);
+        curvature = 2.0 - 2.0 * R * a2 * rm2 / (rho * rho * rho);
         return e * e + (q.y - r) * (q.y + r);
     }
 
