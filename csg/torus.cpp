@@ -78,6 +78,8 @@ public:
     Torus(double majorRadius, double minorRadius) : mR(majorRadius), mr(minorRadius) {
         const double e = mR + mr;
         mInv = 1.0 / e;
+        mRn = mR * mInv;
+        mrn = mr * mInv;
         mBounds = {Vec3(-e, -mr, -e), Vec3(e, mr, e)};
     }
 
@@ -88,7 +90,7 @@ public:
         out.clear();
         ++ctx.stats.primitiveTests;
         Setup st;
-        if (!setUp(ray, tmin, tmax, st)) return;
+        if (!setUp(ray, tmin, tmax, st, ctx.method == TraceMethod::Interval)) return;
         if (ctx.method == TraceMethod::Interval)
             return isolatedSpans(
                 st.q, st.sA, st.sB, st.tc * st.sPerT, ctx,
@@ -122,7 +124,7 @@ public:
             return Node::firstSurface(ray, tmin, tmax, ctx, hit, entering);
         ++ctx.stats.primitiveTests;
         Setup st;
-        if (!setUp(ray, tmin, tmax, st)) return false;
+        if (!setUp(ray, tmin, tmax, st, ctx.method == TraceMethod::Interval)) return false;
         FirstSurfaceTracker tracker(tmin, tmax, ctx.relTolerance);
         // Crossings at s ≥ sNext map to t ≥ tc + sNext/sPerT (rounding is monotone), less what
         // refine() may move them.
@@ -229,8 +231,9 @@ private:
         ctx.stats.rootSteps += static_cast<uint64_t>(steps);
     }
 
-    /// False when the ray misses the bounds within the range (or has no direction).
-    bool setUp(const Ray& ray, double tmin, double tmax, Setup& st) const {
+    /// False when the ray misses the bounds within the range (or has no direction). The
+    /// quartic's coefficients are computed only when `quartic` is set (the interval method).
+    bool setUp(const Ray& ray, double tmin, double tmax, Setup& st, bool quartic) const {
         st.t0 = tmin, st.t1 = tmax;
         // A direction whose squared length would overflow or underflow (a torus scaled by
         // 1e±300 sees rays of length 1e∓300) is scaled by a power of two first: d = 2^kd·dir,
@@ -259,21 +262,23 @@ private:
         st.t0Clip = st.t0 == tmin;
         st.t1Clip = st.t1 == tmax;
         q.u = dir / std::sqrt(dd);
-        q.R = mR * inv;
-        q.rm = mr * inv;
+        q.R = mRn;
+        q.rm = mrn;
         q.r2 = q.rm * q.rm;
         // |p|² = s² + 2b·s + c, x² + z² = a2·s² + a1·s + a0; b ≈ 0 but kept for consistency.
-        const double b = glm::dot(q.p0, q.u);
         const double a2 = q.a2 = q.u.x * q.u.x + q.u.z * q.u.z;
         const double a1 = q.a1 = 2.0 * (q.p0.x * q.u.x + q.p0.z * q.u.z);
         const double a0 = q.a0 = q.p0.x * q.p0.x + q.p0.z * q.p0.z;
         q.c = c;
-        const double k = c + q.R * q.R - q.r2, fourR2 = 4.0 * q.R * q.R;
-        // (s² + 2bs + k)² − 4R²(a2·s² + a1·s + a0)
-        q.c3 = 4.0 * b;
-        q.c2 = 4.0 * b * b + 2.0 * k - fourR2 * a2;
-        q.c1 = 4.0 * b * k - fourR2 * a1;
-        q.c0 = k * k - fourR2 * a0;
+        if (quartic) {  // only the interval method uses the polynomial
+            const double b = glm::dot(q.p0, q.u);
+            const double k = c + q.R * q.R - q.r2, fourR2 = 4.0 * q.R * q.R;
+            // (s² + 2bs + k)² − 4R²(a2·s² + a1·s + a0)
+            q.c3 = 4.0 * b;
+            q.c2 = 4.0 * b * b + 2.0 * k - fourR2 * a2;
+            q.c1 = 4.0 * b * k - fourR2 * a1;
+            q.c0 = k * k - fourR2 * a0;
+        }
 
         st.tc = tc;
         st.sPerT = len * inv;
@@ -318,7 +323,8 @@ private:
     }
 
     double mR, mr;
-    double mInv;  ///< 1/(R + r): the normalising scale
+    double mInv;       ///< 1/(R + r): the normalising scale
+    double mRn, mrn;  ///< R and r normalised
 };
 
 }  // namespace
