@@ -40,7 +40,6 @@ constexpr double kRejectMargin = 1e-9;
 struct TorusRay {
     double c3, c2, c1, c0;
     Vec3 p0, u;        ///< normalised ray: p(s) = p0 + s·u
-    double a2, a1, a0;  ///< x² + z² = a2·s² + a1·s + a0 along the ray
     double c;           ///< |p0|²: the squared distance of the line from the centre
     double R, rm, r2;  ///< normalised major radius, minor radius and its square
 
@@ -198,7 +197,10 @@ private:
         // ρ < R − r misses: ρ² is convex along the line, so it is below (R − r)² throughout
         // when it is at both ends.
         const double hole = (q.R - q.rm) * (q.R - q.rm) * (1.0 - kRejectMargin);
-        const auto rho2 = [&](double s) { return (q.a2 * s + q.a1) * s + q.a0; };
+        const auto rho2 = [&](double s) {  // from the point itself: no cancellation
+            const double x = q.p0.x + s * q.u.x, z = q.p0.z + s * q.u.z;
+            return x * x + z * z;
+        };
         if (q.R > q.rm && rho2(st.sA) < hole && rho2(st.sB) < hole) {
             start(false);
             return;
@@ -265,12 +267,12 @@ private:
         q.R = mRn;
         q.rm = mrn;
         q.r2 = q.rm * q.rm;
-        // |p|² = s² + 2b·s + c, x² + z² = a2·s² + a1·s + a0; b ≈ 0 but kept for consistency.
-        const double a2 = q.a2 = q.u.x * q.u.x + q.u.z * q.u.z;
-        const double a1 = q.a1 = 2.0 * (q.p0.x * q.u.x + q.p0.z * q.u.z);
-        const double a0 = q.a0 = q.p0.x * q.p0.x + q.p0.z * q.p0.z;
         q.c = c;
         if (quartic) {  // only the interval method uses the polynomial
+            // |p|² = s² + 2b·s + c, x² + z² = a2·s² + a1·s + a0; b ≈ 0 but kept for consistency.
+            const double a2 = q.u.x * q.u.x + q.u.z * q.u.z;
+            const double a1 = 2.0 * (q.p0.x * q.u.x + q.p0.z * q.u.z);
+            const double a0 = q.p0.x * q.p0.x + q.p0.z * q.p0.z;
             const double b = glm::dot(q.p0, q.u);
             const double k = c + q.R * q.R - q.r2, fourR2 = 4.0 * q.R * q.R;
             // (s² + 2bs + k)² − 4R²(a2·s² + a1·s + a0)
