@@ -19,9 +19,9 @@
 #include "csg/clip_ray.h"
 #include "csg/comparison_methods.h"
 #include "csg/implicit_expr.h"
-#include "csg/torus_roots.h"
 #include "csg/root_isolation.h"
 #include "csg/solids.h"
+#include "csg/torus_roots.h"
 
 namespace kerf {
 namespace {
@@ -40,7 +40,7 @@ constexpr double kRejectMargin = 1e-9;
 struct TorusRay {
     double c3, c2, c1, c0;
     Vec3 p0, u;        ///< normalised ray: p(s) = p0 + s·u
-    double c;           ///< |p0|²: the squared distance of the line from the centre
+    double c;          ///< |p0|²: the squared distance of the line from the centre
     double R, rm, r2;  ///< normalised major radius, minor radius and its square
 
     /// Taylor form at the midpoint: exact polynomial identity, so the enclosure holds the
@@ -178,12 +178,12 @@ private:
     /// The normalised quartic along one ray and the range it is searched on.
     struct Setup {
         TorusRay q;
-        double t0, t1;  ///< the caller's range clipped to the bounds
+        double t0, t1;        ///< the caller's range clipped to the bounds
         bool t0Clip, t1Clip;  ///< t0 is the caller's tmin, t1 its tmax: not on the surface
-        double sA, sB;  ///< the same in the normalised parameter s
-        double tc;      ///< t of the point nearest the centre, where s = 0
-        double sPerT;   ///< s = (t − tc)·sPerT
-        double inv;     ///< 1/S
+        double sA, sB;        ///< the same in the normalised parameter s
+        double tc;            ///< t of the point nearest the centre, where s = 0
+        double sPerT;         ///< s = (t − tc)·sPerT
+        double inv;           ///< 1/S
     };
 
     /// The closed method on [sA, sB]: start(inside at sA), then crossing(s, entering) for each
@@ -220,8 +220,8 @@ private:
             const double hHi = line.value(cuts[i + 1]);
             double s[2];
             TorusLine::Pending later;
-            const int k = line.pieceCrossings(cuts[i], cuts[i + 1], hLo, hHi, concave[i], absTol,
-                                              s, steps, &later);
+            const int k = line.pieceCrossings(cuts[i], cuts[i + 1], hLo, hHi, concave[i], absTol, s,
+                                              steps, &later);
             if (k > 0) crossing(s[0], inside = !inside);
             if (k == 2) {
                 // The second crossing lies after later.x: often not needed to decide.
@@ -325,7 +325,7 @@ private:
     }
 
     double mR, mr;
-    double mInv;       ///< 1/(R + r): the normalising scale
+    double mInv;      ///< 1/(R + r): the normalising scale
     double mRn, mrn;  ///< R and r normalised
 };
 

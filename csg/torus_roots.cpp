@@ -59,8 +59,9 @@ double TorusLine::oneCrossing(double lo, double hi, bool insideLo, double start,
         // The root of the local quadratic model f + slope·δ + curvature·δ²/2 nearest 0 (the
         // stable form; Newton's step where the model has none): cubic convergence.
         const double disc = slope * slope - 2.0 * curvature * f;
-        const double next = disc >= 0.0 ? s - 2.0 * f / (slope + std::copysign(std::sqrt(disc), slope))
-                                         : s - f / slope;
+        const double next = disc >= 0.0
+                                ? s - 2.0 * f / (slope + std::copysign(std::sqrt(disc), slope))
+                                : s - f / slope;
         // Converged: a step at the rounding of s, or of h's own value in these units (its
         // terms are O(1): steps below 4ε only follow its rounding noise).
         if (std::fabs(next - s) <= std::fmax(kEps * std::fmax(2.0 * std::fabs(s), 4.0), absTol))

@@ -6,10 +6,11 @@
 /// whose second derivative is a2·ρm²/ρ³. So h'' = 2 − 2R·a2·ρm²/ρ³ changes sign only where
 /// ρ = ∛(R·a2·ρm²): at most two inflection points, in closed form, symmetric about sm. Between
 /// them h is concave, outside them convex. On a piece of one convexity the crossings are found
-/// without any enclosure: at most two, decided by the tangents at the piece's ends (a convex
-/// function lies above them), each located by Newton from the side where Newton cannot
-/// overshoot. h is the well-conditioned form (the quartic is h times a positive factor), so
-/// every decision and every root is as accurate as h is.
+/// without any enclosure: at most two, decided by the tangents at the piece's ends and at the
+/// points where they meet (a convex function lies above its tangents), each located in its
+/// bracket by steps to the root of h's local quadratic model (h'' is known in closed form:
+/// cubic convergence). h is the well-conditioned form (the quartic is h times a positive
+/// factor), so every decision and every root is as accurate as h is.
 #pragma once
 
 #include <cmath>
@@ -62,7 +63,7 @@ struct TorusLine {
 
     /// What pieceCrossings needs to locate a piece's second crossing later.
     struct Pending {
-        double x;        ///< a point strictly between the two crossings
+        double x;  ///< a point strictly between the two crossings
         double hi, hHi, slopeHi;
         bool insideX;
     };
@@ -83,9 +84,9 @@ struct TorusLine {
     }
 
 private:
-    /// The one crossing in [lo, hi] (sides differ at the ends) by Newton started at `start`
-    /// (lo or hi: the end from which Newton approaches without overshooting), with bisection
-    /// where a step would leave the shrinking bracket.
+    /// The one crossing in [lo, hi] (sides differ at the ends) from `start` (where h = f and
+    /// h' = slope): steps to the root of the local quadratic model (Newton's step where the
+    /// model has none), bisection where a step would leave the shrinking bracket.
     double oneCrossing(double lo, double hi, bool insideLo, double start, double f, double slope,
                        double absTol, long& steps) const;
 };

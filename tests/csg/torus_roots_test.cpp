@@ -2,15 +2,15 @@
 // decide, Newton locates) on the hard cases, against long-double references: closed-form
 // chords where the geometry gives them, else tests/util/torus_reference.h (the quartic's sign
 // changes isolated by its derivatives' roots, refined on the distance form).
-#include <catch2/catch.hpp>
+#include "csg/torus_roots.h"
 
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 #include <vector>
 
 #include "csg/solids.h"
-#include "csg/torus_roots.h"
 #include "util/oracles.h"
 #include "util/torus_reference.h"
 
@@ -42,7 +42,7 @@ double checkAgainst(const std::vector<double>& got, const std::vector<LD>& ref, 
     for (size_t k = 0; k < got.size(); ++k) {
         const double err = double(std::fabs(got[k] - ref[k]) / std::fabs(ref[k]));
         INFO("crossing " << k << " got " << got[k] << " reference " << double(ref[k])
-                          << " relative error " << err);
+                         << " relative error " << err);
         CHECK(err <= bound);
         worst = std::max(worst, err);
     }
@@ -211,9 +211,9 @@ TEST_CASE("Torus closed method: thin and huge tori, far origins, against long do
     struct Shape {
         double R, r, originDistance;
     };
-    for (const Shape shape : {Shape{1.0, 1e-6, 5.0}, Shape{1e6, 1.0, 3e6}, Shape{1.0, 1e-3, 1e8},
-                              Shape{1e200, 3e199, 1e201}, Shape{1e-200, 2e-201, 1e-199},
-                              Shape{1.0, 0.999, 4.0}}) {
+    for (const Shape shape :
+         {Shape{1.0, 1e-6, 5.0}, Shape{1e6, 1.0, 3e6}, Shape{1.0, 1e-3, 1e8},
+          Shape{1e200, 3e199, 1e201}, Shape{1e-200, 2e-201, 1e-199}, Shape{1.0, 0.999, 4.0}}) {
         const NodePtr torus = makeTorus(shape.R, shape.r);
         for (int i = 0; i < 400; ++i) {
             // Towards a point near the tube (most rays hit), from far away.
