@@ -16,7 +16,6 @@
 #include <cmath>
 #include <limits>
 
-#include "csg/clip_ray.h"
 #include "csg/comparison_methods.h"
 #include "csg/implicit_expr.h"
 #include "csg/root_isolation.h"
@@ -178,7 +177,7 @@ private:
     /// The normalised quartic along one ray and the range it is searched on.
     struct Setup {
         TorusRay q;
-        double t0, t1;        ///< the caller's range clipped to the bounds
+        double t0, t1;        ///< the caller's range clipped to the ball and slab around the torus
         bool t0Clip, t1Clip;  ///< t0 is the caller's tmin, t1 its tmax: not on the surface
         double sA, sB;        ///< the same in the normalised parameter s
         double tc;            ///< t of the point nearest the centre, where s = 0
@@ -260,9 +259,7 @@ private:
         q.p0 = (ray.origin + tc * ray.dir) * inv;
         const double c = glm::dot(q.p0, q.p0);
         // The torus lies in the unit ball (normalised): a line farther from the centre misses.
-        if (!(c <= 1.0 + kRejectMargin) || !clipRayExact(mBounds, ray, st.t0, st.t1)) return false;
-        st.t0Clip = st.t0 == tmin;
-        st.t1Clip = st.t1 == tmax;
+        if (!(c <= 1.0 + kRejectMargin)) return false;
         q.u = dir / std::sqrt(dd);
         q.R = mRn;
         q.rm = mrn;
@@ -285,8 +282,26 @@ private:
         st.tc = tc;
         st.sPerT = len * inv;
         st.inv = inv;
-        st.sA = (st.t0 - tc) * st.sPerT;
-        st.sB = (st.t1 - tc) * st.sPerT;
+        // Search the ray within the ball and the slab |y| ≤ r (both a little enlarged, so no
+        // end of the range lies on the surface but where the caller's range ends there).
+        const double half = std::sqrt(1.0 + kRejectMargin - c), slab = q.rm * (1.0 + kRejectMargin);
+        double lo = -half, hi = half;
+        if (q.u.y != 0.0) {
+            const double y0 = (-slab - q.p0.y) / q.u.y, y1 = (slab - q.p0.y) / q.u.y;
+            lo = std::fmax(lo, std::fmin(y0, y1));
+            hi = std::fmin(hi, std::fmax(y0, y1));
+        } else if (!(std::fabs(q.p0.y) <= slab)) {
+            return false;
+        }
+        // The caller's range where it is tighter: its ends are clips, not surface.
+        const double sMin = (tmin - tc) * st.sPerT, sMax = (tmax - tc) * st.sPerT;
+        st.t0Clip = sMin >= lo;
+        st.t1Clip = sMax <= hi;
+        st.sA = st.t0Clip ? sMin : lo;
+        st.sB = st.t1Clip ? sMax : hi;
+        if (!(st.sA <= st.sB)) return false;
+        st.t0 = st.t0Clip ? tmin : tc + lo / st.sPerT;
+        st.t1 = st.t1Clip ? tmax : tc + hi / st.sPerT;
         return true;
     }
 
