@@ -31,7 +31,7 @@ namespace {
 constexpr double kEnclosureSlack = 1e-13;
 /// The largest relative move of t that the final Newton step in t may make.
 constexpr double kRefineLimit = 1e-9;
-/// Relative margin of the rejection tests (bounding ball, hole) in normalised units: far
+/// Relative margin of the rejections and clips (ball, slab, hole) in normalised units: far
 /// above the rounding of the squared distances compared, so no line near the surface is lost.
 constexpr double kRejectMargin = 1e-9;
 
