@@ -7,9 +7,10 @@
 // h(p) = (ρ − R)² + (y − r)(y + r) (ρ = √(x² + z²)), which has the same sign as the quartic because
 // the quartic is h times (ρ + R)² + y² − r² > 0.
 //
-// Default (closed) method: rejections that need no root (the bounding ball, the hole), then h
-// piece by piece of one convexity (csg/torus_roots.h): tangents decide, Newton locates; then
-// one Newton step on h in the ray's own t. The interval method (for `kerf bench accuracy`, and
+// Default (closed) method: the ray within the bounding ball and the slab |y| ≤ r, a segment
+// inside the hole rejected, then h piece by piece of one convexity (csg/torus_roots.h):
+// tangents decide, steps to the root of h's local quadratic model locate; then one Newton step
+// on h in the ray's own t. The interval method (for `kerf bench accuracy`, and
 // the reference of the tests) isolates the quartic's roots by interval bisection with a
 // Taylor-form enclosure at each sub-interval's midpoint (csg/root_isolation.h).
 #include <algorithm>
