@@ -1,21 +1,27 @@
-// The torus around the y axis: spans by interval root isolation of its quartic along the ray.
+// The torus around the y axis: spans from the roots of its quartic along the ray.
 //
 // Conditioning: coordinates are divided by S = R + r (so every quantity is O(1) whatever the
 // scene scale) and the ray is re-parameterised by arc length s from its point nearest the
 // centre, p(s) = p0 + s·u with |u| = 1. The quartic in s then has coefficients of order 1 and
-// no cancellation from a far-away origin. Isolation uses a Taylor-form enclosure of the quartic
-// at each sub-interval's midpoint; point signs and the polish use the better-conditioned
+// no cancellation from a far-away origin. Every decision uses the better-conditioned
 // h(p) = (ρ − R)² + (y − r)(y + r) (ρ = √(x² + z²)), which has the same sign as the quartic because
 // the quartic is h times (ρ + R)² + y² − r² > 0.
+//
+// Default (closed) method: the ray within the bounding ball and the slab |y| ≤ r, a segment
+// inside the hole rejected, then h piece by piece of one convexity (csg/torus_roots.h):
+// tangents decide, steps to the root of h's local quadratic model locate; then one Newton step
+// on h in the ray's own t. The interval method (for `kerf bench accuracy`, and
+// the reference of the tests) isolates the quartic's roots by interval bisection with a
+// Taylor-form enclosure at each sub-interval's midpoint (csg/root_isolation.h).
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "csg/clip_ray.h"
 #include "csg/comparison_methods.h"
 #include "csg/implicit_expr.h"
 #include "csg/root_isolation.h"
 #include "csg/solids.h"
+#include "csg/torus_roots.h"
 
 namespace kerf {
 namespace {
@@ -26,11 +32,15 @@ namespace {
 constexpr double kEnclosureSlack = 1e-13;
 /// The largest relative move of t that the final Newton step in t may make.
 constexpr double kRefineLimit = 1e-9;
+/// Relative margin of the rejections and clips (ball, slab, hole) in normalised units: far
+/// above the rounding of the squared distances compared, so no line near the surface is lost.
+constexpr double kRejectMargin = 1e-9;
 
 /// The quartic s⁴ + c3·s³ + c2·s² + c1·s + c0 along the normalised ray, and h along it.
 struct TorusRay {
     double c3, c2, c1, c0;
     Vec3 p0, u;        ///< normalised ray: p(s) = p0 + s·u
+    double c;          ///< |p0|²: the squared distance of the line from the centre
     double R, rm, r2;  ///< normalised major radius, minor radius and its square
 
     /// Taylor form at the midpoint: exact polynomial identity, so the enclosure holds the
@@ -66,22 +76,44 @@ class Torus final : public Primitive {
 public:
     Torus(double majorRadius, double minorRadius) : mR(majorRadius), mr(minorRadius) {
         const double e = mR + mr;
+        mInv = 1.0 / e;
+        mRn = mR * mInv;
+        mrn = mr * mInv;
         mBounds = {Vec3(-e, -mr, -e), Vec3(e, mr, e)};
     }
 
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                SpanList& out) const override {
-        // The closed method already isolates the quartic by intervals: Interval is the same.
         if (ctx.method == TraceMethod::SphereTrace)
             return comparisonSpans(*this, ray, tmin, tmax, ctx, out);  // a distance: Lipschitz 1
         out.clear();
         ++ctx.stats.primitiveTests;
         Setup st;
-        if (!setUp(ray, tmin, tmax, st)) return;
-        isolatedSpans(
-            st.q, st.sA, st.sB, st.tc * st.sPerT, ctx,
-            [&](double s) { return crossingBoundary(ray, st, s, ctx); },
-            [&](bool atStart) { return endBoundary(ray, st, atStart); }, out);
+        if (!setUp(ray, tmin, tmax, st, ctx.method == TraceMethod::Interval)) return;
+        if (ctx.method == TraceMethod::Interval)
+            return isolatedSpans(
+                st.q, st.sA, st.sB, st.tc * st.sPerT, ctx,
+                [&](double s) { return crossingBoundary(ray, st, s, ctx); },
+                [&](bool atStart) { return endBoundary(ray, st, atStart); }, out);
+        Boundary pending;
+        bool inside = false;
+        closedCrossings(
+            st, ctx,
+            [&](bool insideAtStart) {
+                inside = insideAtStart;
+                if (inside) pending = endBoundary(ray, st, true);
+            },
+            [&](double s, bool entering) {
+                const Boundary b = crossingBoundary(ray, st, s, ctx);
+                if (entering)
+                    pending = b;
+                else
+                    out.push_back({pending, b});
+                inside = entering;
+            },
+            [](double) { return false; });
+        if (inside) out.push_back({pending, endBoundary(ray, st, false)});
+        dropThinSpans(out, ctx.relTolerance);
     }
 
     /// The same crossings as spans(), but the search stops once the first surface is decided.
@@ -91,18 +123,30 @@ public:
             return Node::firstSurface(ray, tmin, tmax, ctx, hit, entering);
         ++ctx.stats.primitiveTests;
         Setup st;
-        if (!setUp(ray, tmin, tmax, st)) return false;
+        if (!setUp(ray, tmin, tmax, st, ctx.method == TraceMethod::Interval)) return false;
         FirstSurfaceTracker tracker(tmin, tmax, ctx.relTolerance);
-        tracker.search(
-            st.q, st.sA, st.sB, st.tc * st.sPerT, ctx,
-            [&](double s) { return crossingBoundary(ray, st, s, ctx); },
-            [&](bool atStart) { return endBoundary(ray, st, atStart); },
-            [&](double sNext) {
-                // Crossings at s ≥ sNext map to t ≥ tc + sNext/sPerT (rounding is monotone),
-                // less what refine() may move them.
-                const double t = st.tc + sNext / st.sPerT;
-                return t - 2.0 * kRefineLimit * std::fabs(t);
-            });
+        // Crossings at s ≥ sNext map to t ≥ tc + sNext/sPerT (rounding is monotone), less what
+        // refine() may move them.
+        const auto horizon = [&](double sNext) {
+            const double t = st.tc + sNext / st.sPerT;
+            return t - 2.0 * kRefineLimit * std::fabs(t);
+        };
+        const auto surface = [&](double s) { return crossingBoundary(ray, st, s, ctx); };
+        if (ctx.method == TraceMethod::Interval) {
+            tracker.search(
+                st.q, st.sA, st.sB, st.tc * st.sPerT, ctx, surface,
+                [&](bool atStart) { return endBoundary(ray, st, atStart); }, horizon);
+            return tracker.result(hit, entering);
+        }
+        bool stopped = false;
+        closedCrossings(
+            st, ctx,
+            [&](bool inside) {
+                tracker.start(inside, inside ? endBoundary(ray, st, true) : Boundary{});
+            },
+            [&](double s, bool enters) { tracker.crossing(surface(s), enters); },
+            [&](double sNext) { return stopped = tracker.settledBefore(horizon(sNext)); });
+        if (!stopped) tracker.finish(endBoundary(ray, st, false));
         return tracker.result(hit, entering);
     }
 
@@ -134,16 +178,64 @@ private:
     /// The normalised quartic along one ray and the range it is searched on.
     struct Setup {
         TorusRay q;
-        double t0, t1;  ///< the caller's range clipped to the bounds
+        double t0, t1;        ///< the caller's range clipped to the ball and slab around the torus
         bool t0Clip, t1Clip;  ///< t0 is the caller's tmin, t1 its tmax: not on the surface
-        double sA, sB;  ///< the same in the normalised parameter s
-        double tc;      ///< t of the point nearest the centre, where s = 0
-        double sPerT;   ///< s = (t − tc)·sPerT
-        double inv;     ///< 1/S
+        double sA, sB;        ///< the same in the normalised parameter s
+        double tc;            ///< t of the point nearest the centre, where s = 0
+        double sPerT;         ///< s = (t − tc)·sPerT
+        double inv;           ///< 1/S
     };
 
-    /// False when the ray misses the bounds within the range (or has no direction).
-    bool setUp(const Ray& ray, double tmin, double tmax, Setup& st) const {
+    /// The closed method on [sA, sB]: start(inside at sA), then crossing(s, entering) for each
+    /// crossing in increasing s; stopBefore(s) is asked before each piece from s on, and true
+    /// ends the search (every crossing not yet reported lies at or after s).
+    template <typename Start, typename Crossing, typename StopBefore>
+    void closedCrossings(const Setup& st, TraceContext& ctx, Start&& start, Crossing&& crossing,
+                         StopBefore&& stopBefore) const {
+        const TorusRay& q = st.q;
+        // (setUp has rejected lines outside the unit ball.) A segment inside the hole's cylinder
+        // ρ < R − r misses: ρ² is convex along the line, so it is below (R − r)² throughout
+        // when it is at both ends.
+        const double hole = (q.R - q.rm) * (q.R - q.rm) * (1.0 - kRejectMargin);
+        const auto rho2 = [&](double s) {  // from the point itself: no cancellation
+            const double x = q.p0.x + s * q.u.x, z = q.p0.z + s * q.u.z;
+            return x * x + z * z;
+        };
+        if (q.R > q.rm && rho2(st.sA) < hole && rho2(st.sB) < hole) {
+            start(false);
+            return;
+        }
+        const TorusLine line(q.p0, q.u, q.R, q.rm);
+        double cuts[4];
+        bool concave[3];
+        const int n = line.pieces(st.sA, st.sB, cuts, concave);
+        double hLo = line.value(cuts[0]);
+        bool inside = isInside(hLo);
+        start(inside);
+        // Crossings to the rounding of t, not of s: s + tc·sPerT is proportional to t.
+        const double absTol = std::numeric_limits<double>::epsilon() * std::fabs(st.tc * st.sPerT);
+        long steps = 0;
+        for (int i = 0; i < n; ++i) {
+            if (stopBefore(cuts[i])) break;
+            const double hHi = line.value(cuts[i + 1]);
+            double s[2];
+            TorusLine::Pending later;
+            const int k = line.pieceCrossings(cuts[i], cuts[i + 1], hLo, hHi, concave[i], absTol, s,
+                                              steps, &later);
+            if (k > 0) crossing(s[0], inside = !inside);
+            if (k == 2) {
+                // The second crossing lies after later.x: often not needed to decide.
+                if (stopBefore(later.x)) break;
+                crossing(line.secondCrossing(later, absTol, steps), inside = !inside);
+            }
+            hLo = hHi;
+        }
+        ctx.stats.rootSteps += static_cast<uint64_t>(steps);
+    }
+
+    /// False when the ray misses the bounds within the range (or has no direction). The
+    /// quartic's coefficients are computed only when `quartic` is set (the interval method).
+    bool setUp(const Ray& ray, double tmin, double tmax, Setup& st, bool quartic) const {
         st.t0 = tmin, st.t1 = tmax;
         // A direction whose squared length would overflow or underflow (a torus scaled by
         // 1e±300 sees rays of length 1e∓300) is scaled by a power of two first: d = 2^kd·dir,
@@ -157,36 +249,60 @@ private:
             dir = Vec3(std::ldexp(dir.x, -kd), std::ldexp(dir.y, -kd), std::ldexp(dir.z, -kd));
         }
         const double dd = glm::dot(dir, dir);
-        if (!(dd > 0.0) || !clipRayExact(mBounds, ray, st.t0, st.t1)) return false;
-        st.t0Clip = st.t0 == tmin;
-        st.t1Clip = st.t1 == tmax;
+        if (!(dd > 0.0)) return false;
 
         // Normalise: lengths by S, the parameter by arc length from the point nearest the centre.
-        const double scale = mR + mr, inv = 1.0 / scale, len = std::ldexp(std::sqrt(dd), kd);
-        const double tc = std::ldexp(-glm::dot(ray.origin, dir) / dd, -kd);
+        // (ldexp is a library call: skipped in the common case kd = 0, where it is exact anyway.)
+        double len = std::sqrt(dd), tc = -glm::dot(ray.origin, dir) / dd;
+        if (kd != 0) len = std::ldexp(len, kd), tc = std::ldexp(tc, -kd);
+        const double inv = mInv;
         TorusRay& q = st.q;
         q.p0 = (ray.origin + tc * ray.dir) * inv;
+        const double c = glm::dot(q.p0, q.p0);
+        // The torus lies in the unit ball (normalised): a line farther from the centre misses.
+        if (!(c <= 1.0 + kRejectMargin)) return false;
         q.u = dir / std::sqrt(dd);
-        q.R = mR * inv;
-        q.rm = mr * inv;
+        q.R = mRn;
+        q.rm = mrn;
         q.r2 = q.rm * q.rm;
-        // |p|² = s² + 2b·s + c, x² + z² = a2·s² + a1·s + a0; b ≈ 0 but kept for consistency.
-        const double b = glm::dot(q.p0, q.u), c = glm::dot(q.p0, q.p0);
-        const double a2 = q.u.x * q.u.x + q.u.z * q.u.z;
-        const double a1 = 2.0 * (q.p0.x * q.u.x + q.p0.z * q.u.z);
-        const double a0 = q.p0.x * q.p0.x + q.p0.z * q.p0.z;
-        const double k = c + q.R * q.R - q.r2, fourR2 = 4.0 * q.R * q.R;
-        // (s² + 2bs + k)² − 4R²(a2·s² + a1·s + a0)
-        q.c3 = 4.0 * b;
-        q.c2 = 4.0 * b * b + 2.0 * k - fourR2 * a2;
-        q.c1 = 4.0 * b * k - fourR2 * a1;
-        q.c0 = k * k - fourR2 * a0;
+        q.c = c;
+        if (quartic) {  // only the interval method uses the polynomial
+            // |p|² = s² + 2b·s + c, x² + z² = a2·s² + a1·s + a0; b ≈ 0 but kept for consistency.
+            const double a2 = q.u.x * q.u.x + q.u.z * q.u.z;
+            const double a1 = 2.0 * (q.p0.x * q.u.x + q.p0.z * q.u.z);
+            const double a0 = q.p0.x * q.p0.x + q.p0.z * q.p0.z;
+            const double b = glm::dot(q.p0, q.u);
+            const double k = c + q.R * q.R - q.r2, fourR2 = 4.0 * q.R * q.R;
+            // (s² + 2bs + k)² − 4R²(a2·s² + a1·s + a0)
+            q.c3 = 4.0 * b;
+            q.c2 = 4.0 * b * b + 2.0 * k - fourR2 * a2;
+            q.c1 = 4.0 * b * k - fourR2 * a1;
+            q.c0 = k * k - fourR2 * a0;
+        }
 
         st.tc = tc;
         st.sPerT = len * inv;
         st.inv = inv;
-        st.sA = (st.t0 - tc) * st.sPerT;
-        st.sB = (st.t1 - tc) * st.sPerT;
+        // Search the ray within the ball and the slab |y| ≤ r (both a little enlarged, so no
+        // end of the range lies on the surface but where the caller's range ends there).
+        const double half = std::sqrt(1.0 + kRejectMargin - c), slab = q.rm * (1.0 + kRejectMargin);
+        double lo = -half, hi = half;
+        if (q.u.y != 0.0) {
+            const double y0 = (-slab - q.p0.y) / q.u.y, y1 = (slab - q.p0.y) / q.u.y;
+            lo = std::fmax(lo, std::fmin(y0, y1));
+            hi = std::fmin(hi, std::fmax(y0, y1));
+        } else if (!(std::fabs(q.p0.y) <= slab)) {
+            return false;
+        }
+        // The caller's range where it is tighter: its ends are clips, not surface.
+        const double sMin = (tmin - tc) * st.sPerT, sMax = (tmax - tc) * st.sPerT;
+        st.t0Clip = sMin >= lo;
+        st.t1Clip = sMax <= hi;
+        st.sA = st.t0Clip ? sMin : lo;
+        st.sB = st.t1Clip ? sMax : hi;
+        if (!(st.sA <= st.sB)) return false;
+        st.t0 = st.t0Clip ? tmin : tc + lo / st.sPerT;
+        st.t1 = st.t1Clip ? tmax : tc + hi / st.sPerT;
         return true;
     }
 
@@ -225,6 +341,8 @@ private:
     }
 
     double mR, mr;
+    double mInv;      ///< 1/(R + r): the normalising scale
+    double mRn, mrn;  ///< R and r normalised
 };
 
 }  // namespace
