@@ -35,7 +35,14 @@ AccuracyBenchResult runAccuracyBench(const std::vector<AccuracyScene>& scenes,
         const int divisor = std::max(1, entry.spec.resolutionDivisor);
         const int width = std::max(1, options.width / divisor);
         const int height = std::max(1, options.height / divisor);
-        const SceneGeometry geometry(entry.scene.objects);
+        const SceneGeometry geometry(entry.scene.objects);  // the reference's: plain objects
+        OctreeOptions octree;
+        octree.eye = entry.scene.camera.eye;
+        octree.footprintPerDistance =
+            2.0 * std::tan(0.5 * entry.scene.camera.fovDegrees * 3.14159265358979323846 / 180.0) /
+            height;
+        AcceleratedObjects accelerated = accelerate(entry.scene.objects, options.accel, octree);
+        const SceneGeometry traced(std::move(accelerated.objects), accelerated.objectBvh);
         const Camera camera(entry.scene.camera, width, height);
         const std::vector<Ray> rays = primaryRays(camera, width, height);
 
@@ -70,7 +77,7 @@ AccuracyBenchResult runAccuracyBench(const std::vector<AccuracyScene>& scenes,
                 row.width = width;
                 row.height = height;
                 row.m =
-                    measureAccuracy(geometry, rays, reference, method, row.tolerance, options.runs);
+                    measureAccuracy(traced, rays, reference, method, row.tolerance, options.runs);
                 say(formatProgress(row) + (row.isDefaultTolerance ? "  (default)" : ""));
                 result.rows.push_back(row);
             }

@@ -3,6 +3,7 @@
 /// against one reference per scene (accuracy/measure.h).
 #pragma once
 
+#include "volume/accelerate.h"
 #include <functional>
 #include <string>
 #include <vector>
@@ -25,6 +26,9 @@ struct AccuracyBenchOptions {
     int runs = 5;  ///< timed passes per measurement; the median is reported
     std::vector<TraceMethod> methods{TraceMethod::Closed, TraceMethod::Interval,
                                      TraceMethod::SphereTrace};
+    /// The acceleration the traced geometry gets (the reference always traces the plain
+    /// objects): the renderer's default unless asked otherwise.
+    Accel accel = Accel::Auto;
     /// Measured in this order; the scene's default tolerance (defaultTolerance of its traced
     /// height and field of view) is measured after them.
     std::vector<double> tolerances = accuracyDecadeTolerances();

@@ -45,6 +45,10 @@ AccuracyBenchOptions benchOptions(const BenchCommandLine& line) {
             options.methods.push_back(*method);
         }
     }
+    const std::optional<Accel> accel = parseAccel(line.accel);
+    if (!accel)
+        throw UsageError("--accel must be auto, none, bvh or octree (got '" + line.accel + "')");
+    options.accel = *accel;
     return options;
 }
 
@@ -112,6 +116,10 @@ CLI::App* addBenchCommand(CLI::App& parent, BenchCommandLine& line) {
     cmd->add_option("--methods", line.methods,
                     "Comma-separated: closed, interval, sphere-trace (default: all)")
         ->delimiter(',');
+    cmd->add_option("--accel", line.accel,
+                    "Acceleration of the traced geometry: auto (the renderer's default), none, "
+                    "bvh or octree; the reference traces the plain objects")
+        ->capture_default_str();
     cmd->add_flag("--quick", line.quick,
                   "Tiny images, tolerances 1e-3 and 1e-9 plus the default, one run (for tests)");
     return bench;

@@ -1,6 +1,6 @@
 /// @file app/cli_bench.h
 /// @brief `kerf bench accuracy [--out DIR] [--width W] [--height H] [--runs N]
-/// [--scenes a,b,…] [--methods closed,interval,sphere-trace] [--scene-dir DIR] [--quick]`:
+/// [--scenes a,b,…] [--methods closed,interval,sphere-trace] [--accel A] [--scene-dir DIR] [--quick]`:
 /// the speed-against-error report (accuracy/bench.h) as CSV, SVG plot and Markdown.
 #pragma once
 
@@ -24,6 +24,7 @@ struct BenchCommandLine {
     int runs = 5;
     std::vector<std::string> scenes;   ///< empty: every scene of the catalogue
     std::vector<std::string> methods;  ///< empty: all three
+    std::string accel = "auto";
     bool quick = false;
 
     CLI::App* accuracyCommand = nullptr;

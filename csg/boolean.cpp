@@ -64,6 +64,66 @@ public:
         spansWith(ray, nullptr, tmin, tmax, ctx, out);
     }
 
+    /// A union's first surface without its spans: where the ray starts outside every child,
+    /// the union is entered first where the first child is (the nearest of the children's
+    /// first surfaces, children searched near first with the range shrinking to it). Where a
+    /// child's first surface is an exit, or a child without any crossing holds the candidate
+    /// point (the ray is inside it throughout), the spans decide as for every other node.
+    bool firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx, Boundary& hit,
+                      bool& entering) const override {
+        if (mOp != BoolOp::Union) return Node::firstSurface(ray, tmin, tmax, ctx, hit, entering);
+        constexpr int kMaxSilent = 16;
+        size_t silent[kMaxSilent];
+        int silentCount = 0;
+        bool found = false, undecided = false;
+        Boundary best;
+        // Children are searched up to a little past the best so far, so that one entering at
+        // the same t (a shared face) is found there and not judged on a span cut to nothing.
+        double reach = tmax;
+        auto visit = [&](size_t i) {
+            Boundary b;
+            bool enters = true;
+            if (!mChildren[i]->firstSurface(ray, tmin, reach, ctx, b, enters)) {
+                if (silentCount == kMaxSilent) undecided = true;
+                else silent[silentCount++] = i;
+                return;
+            }
+            if (!enters) {
+                undecided = true;
+                return;
+            }
+            // Ties as combineSpans breaks them between two entering surfaces: primitive order.
+            if (!found || b.t < best.t || (b.t == best.t && b.primitive < best.primitive)) {
+                best = b;
+                found = true;
+                reach = std::min(tmax, b.t + 4.0 * ctx.relTolerance * std::fabs(b.t));
+            }
+        };
+        if (mUseBvh) {
+            const RayReciprocal rec(ray);
+            mBvh.traverse(rec, tmin, tmax, ctx.stats, [&](int i, double tEnter) {
+                if (!undecided && !(tEnter > reach)) visit(size_t(i));
+                return undecided ? -kInf : reach;
+            });
+        } else {
+            for (size_t i = 0; i < mChildren.size() && !undecided; ++i) {
+                double t0 = tmin, t1 = reach;
+                ++ctx.stats.boundsTests;
+                if (clipRayExact(mChildren[i]->bounds(), ray, t0, t1)) visit(i);
+            }
+        }
+        if (!undecided && found) {
+            const Vec3 p = ray.at(best.t);
+            for (int k = 0; k < silentCount && !undecided; ++k)
+                undecided = mChildren[silent[k]]->value(p) <= 0.0;
+        }
+        if (undecided) return Node::firstSurface(ray, tmin, tmax, ctx, hit, entering);
+        if (!found) return false;
+        hit = best;
+        entering = true;
+        return true;
+    }
+
     double value(const Vec3& p) const override {
         return combinedValue<double>([&](const Node& c) { return c.value(p); });
     }
