@@ -10,6 +10,7 @@
 // to the side it could lie on.
 #include "csg/interval.h"
 #include "csg/interval_ops.h"
+#include "csg/interval_trig.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -183,6 +184,8 @@ Interval log(const Interval& a) {
 }
 
 void sinCos(const Interval& a, Interval& s, Interval& c) {
+    // The common case: no libm call (csg/interval_trig.h).
+    if (interval_trig::trySinCosFast(a, s, c)) return;
     // Beyond 2^50 the spacing of doubles exceeds what the quadrant test can resolve.
     if (!(a.hi - a.lo < kTwoPi) || std::fabs(a.lo) > 0x1p50 || std::fabs(a.hi) > 0x1p50) {
         s = c = {-1.0, 1.0, a.maybeNan};

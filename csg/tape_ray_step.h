@@ -5,6 +5,7 @@
 #pragma once
 
 #include "csg/interval_ops.h"
+#include "csg/interval_trig.h"
 #include "csg/scalar_ops.h"
 #include "csg/tape.h"
 
@@ -125,7 +126,8 @@ inline const IntervalDual kNoOperand{Interval(), Interval()};
         case Op::Cos: {
             RaySlot& a = s[ia];
             if (!a.hasTrig) {
-                sinCos(a.v, a.sinV, a.cosV);
+                if (!interval_trig::trySinCosFast(a.v, a.sinV, a.cosV))
+                    sinCos(a.v, a.sinV, a.cosV);
                 a.hasTrig = true;
             }
             if (op == Op::Sin) {
