@@ -79,8 +79,6 @@ Interval operator+(const Interval& a, const Interval& b) { return interval_kerne
 
 Interval operator-(const Interval& a, const Interval& b) { return interval_kernel::sub(a, b); }
 
-Interval operator-(const Interval& a) { return {-a.hi, -a.lo, a.maybeNan}; }  // exact
-
 Interval operator*(const Interval& a, const Interval& b) { return interval_kernel::mul(a, b); }
 
 Interval operator/(const Interval& a, const Interval& b) {
