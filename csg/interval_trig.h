@@ -19,6 +19,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "csg/interval.h"
@@ -68,6 +69,17 @@ inline PointTrig pointTrig(double x) {
         default: t.s = -p, t.c = sr; break;
     }
     return t;
+}
+
+/// sin x and cos x in doubles for the point evaluators: pointTrig (within 27u, one call for
+/// both) where it applies, libm beyond. Not an enclosure: point values only.
+inline void pointSinCos(double x, double& s, double& c) {
+    if (std::fabs(x) <= kTrigFastLimit) {
+        const PointTrig t = pointTrig(x);
+        s = t.s, c = t.c;
+    } else {
+        s = std::sin(x), c = std::cos(x);
+    }
 }
 
 /// sin(a) and cos(a) for finite ends with |a.lo|, |a.hi| ≤ kTrigFastLimit and a.hi − a.lo <

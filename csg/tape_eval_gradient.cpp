@@ -1,5 +1,6 @@
 // Point evaluation with the gradient: forward-mode dual numbers, one value and one
 // ∂/∂(x, y, z) per slot, in per-thread scratch.
+#include "csg/interval_trig.h"
 #include "csg/scalar_ops.h"
 #include "csg/tape.h"
 
@@ -94,6 +95,14 @@ double Tape::evalGradient(const Vec3& p, Vec3& gradient) const {
             case Op::VarZ:
                 s[i] = {p.z, Vec3(0.0, 0.0, 1.0)};
                 break;
+            case Op::Sin:
+            case Op::Cos: {  // one reduction for the value and the slope, as Tape::eval
+                const Dual& a = s[in.a];
+                double sv, cv;
+                interval_trig::pointSinCos(a.v, sv, cv);
+                s[i] = in.op == Op::Sin ? Dual{sv, cv * a.g} : Dual{cv, -sv * a.g};
+                break;
+            }
             default: {
                 const Dual& a = s[in.a];
                 const Dual& b = in.b >= 0 ? s[in.b] : none;

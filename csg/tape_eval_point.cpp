@@ -1,4 +1,5 @@
 // Point evaluation of a tape on doubles, with per-thread scratch slots.
+#include "csg/interval_trig.h"
 #include "csg/scalar_ops.h"
 #include "csg/tape.h"
 
@@ -24,6 +25,13 @@ double Tape::eval(const Vec3& p) const {
             case Op::VarZ:
                 s[i] = p.z;
                 break;
+            case Op::Sin:
+            case Op::Cos: {  // no libm call in range; the same values as evalGradient
+                double sv, cv;
+                interval_trig::pointSinCos(s[in.a], sv, cv);
+                s[i] = in.op == Op::Sin ? sv : cv;
+                break;
+            }
             default:
                 s[i] = applyScalarOp(in.op, s[in.a], in.b >= 0 ? s[in.b] : 0.0, in.value);
         }
