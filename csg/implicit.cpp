@@ -11,7 +11,10 @@
 namespace kerf {
 namespace {
 
-/// f along the ray, in the form root isolation wants.
+/// f along the ray, in the form root isolation wants. (The centred form f(m) + f'([a, b])·([a, b]
+/// − m), intersected with the natural enclosure wherever that is ambiguous, was measured here
+/// on the gyroid ∩ sphere at 160×120: 11.6 % fewer interval evaluations, but 41 % more
+/// instructions, since f(m) needs a second interval evaluation per call.)
 struct TapeAlongRay {
     const Tape& tape;
     const Ray& ray;

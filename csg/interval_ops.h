@@ -59,19 +59,21 @@ inline Interval mulGeneral(const Interval& a, const Interval& b, bool nan) {
     return {down(lo), up(hi), nan};
 }
 
-/// a·b. With four finite ends (the common case) no product can be NaN, so the extremes are
-/// the min and max of the four end products, without the 0·inf care or the point tests of
-/// mulGeneral (the same bounds: a point operand's two equal products change nothing).
+/// The lesser / greater of two doubles by value (std::min returns a reference, and GCC then
+/// selects through memory instead of emitting minsd / maxsd). b when either is NaN.
+[[gnu::always_inline]] inline double lesser(double a, double b) { return a < b ? a : b; }
+[[gnu::always_inline]] inline double greater(double a, double b) { return a > b ? a : b; }
+
+/// a·b. Only 0·inf makes an end product NaN, and then mulGeneral handles it (0·inf counts as
+/// 0); otherwise the extremes are the min and max of the four end products, as in mulGeneral
+/// (a point operand's two equal products change nothing), so the bounds are the same.
 [[gnu::always_inline]] inline Interval mul(const Interval& a, const Interval& b) {
     const bool nan = a.maybeNan || b.maybeNan;
-    constexpr double kMax = std::numeric_limits<double>::max();
-    // |x| ≤ max is false for ±inf and NaN.
-    const bool finite = std::fabs(a.lo) <= kMax && std::fabs(a.hi) <= kMax &&
-                        std::fabs(b.lo) <= kMax && std::fabs(b.hi) <= kMax;
-    if (__builtin_expect(!finite, 0)) return mulGeneral(a, b, nan);
     const double p0 = a.lo * b.lo, p1 = a.lo * b.hi, p2 = a.hi * b.lo, p3 = a.hi * b.hi;
-    const double lo = std::min(std::min(p0, p1), std::min(p2, p3));
-    const double hi = std::max(std::max(p0, p1), std::max(p2, p3));
+    // NaN when a product is NaN (or when infinite products of both signs meet: also rare).
+    if (__builtin_expect(std::isnan((p0 + p1) + (p2 + p3)), 0)) return mulGeneral(a, b, nan);
+    const double lo = lesser(lesser(p0, p1), lesser(p2, p3));
+    const double hi = greater(greater(p0, p1), greater(p2, p3));
     return {down(lo), up(hi), nan};
 }
 

@@ -97,10 +97,10 @@ inline void sinCosFast(const Interval& a, Interval& s, Interval& c) {
         extremes = 15u;
     else
         for (int64_t j = first; j <= last; ++j) extremes |= 1u << (j & 3);
-    const double sLo = extremes & 8u ? -1.0 : std::max(-1.0, std::min(l.s, h.s) - kTrigError);
-    const double sHi = extremes & 2u ? 1.0 : std::min(1.0, std::max(l.s, h.s) + kTrigError);
-    const double cLo = extremes & 4u ? -1.0 : std::max(-1.0, std::min(l.c, h.c) - kTrigError);
-    const double cHi = extremes & 1u ? 1.0 : std::min(1.0, std::max(l.c, h.c) + kTrigError);
+    const double sLo = extremes & 8u ? -1.0 : std::max(-1.0, (l.s < h.s ? l.s : h.s) - kTrigError);
+    const double sHi = extremes & 2u ? 1.0 : std::min(1.0, (l.s > h.s ? l.s : h.s) + kTrigError);
+    const double cLo = extremes & 4u ? -1.0 : std::max(-1.0, (l.c < h.c ? l.c : h.c) - kTrigError);
+    const double cHi = extremes & 1u ? 1.0 : std::min(1.0, (l.c > h.c ? l.c : h.c) + kTrigError);
     s = {sLo, sHi, a.maybeNan};
     c = {cLo, cHi, a.maybeNan};
 }
