@@ -23,12 +23,7 @@ struct TapeAlongRay {
         tape.evalIntervalAlongRay(ray, Interval(a, b), f, dfdt);
     }
     double value(double t) const { return tape.eval(ray.at(t)); }
-    double valueAndSlope(double t, double& dfdt) const {
-        Vec3 g;
-        const double f = tape.evalGradient(ray.at(t), g);
-        dfdt = glm::dot(g, ray.dir);
-        return f;
-    }
+    double valueAndSlope(double t, double& dfdt) const { return tape.evalAlongRay(ray, t, dfdt); }
 };
 
 /// f along the ray for the comparison-only interval method on a stand-in (csg/comparison_methods.h):

@@ -41,6 +41,9 @@ public:
     Interval evalInterval(const Interval& x, const Interval& y, const Interval& z) const;
     /// f and its gradient at a point (forward-mode differentiation).
     double evalGradient(const Vec3& p, Vec3& gradient) const;
+    /// f at ray.at(t) (the same bits as eval) and df/dt there: forward mode with one slope per
+    /// slot instead of a gradient's three.
+    double evalAlongRay(const Ray& ray, double t, double& dfdt) const;
     /// Along a ray p(t) = o + t·d for t in `t`: an interval holding f, and one holding df/dt
     /// (forward-mode differentiation on intervals). Used by root isolation.
     void evalIntervalAlongRay(const Ray& ray, const Interval& t, Interval& f, Interval& dfdt) const;
