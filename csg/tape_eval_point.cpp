@@ -8,7 +8,7 @@ namespace kerf {
 double Tape::eval(const Vec3& p) const {
     // Reused per thread: no allocation once a thread has seen its largest tape.
     thread_local std::vector<double> slots;
-    slots.resize(mInstrs.size());
+    if (slots.size() < mInstrs.size()) slots.resize(mInstrs.size());
     double* s = slots.data();
     for (size_t i = 0; i < mInstrs.size(); ++i) {
         const TapeInstr& in = mInstrs[i];
@@ -24,6 +24,23 @@ double Tape::eval(const Vec3& p) const {
                 break;
             case Op::VarZ:
                 s[i] = p.z;
+                break;
+            // The commonest ops inline (root isolation asks for millions of points); the
+            // same arithmetic as applyScalarOp, so the same bits.
+            case Op::Add:
+                s[i] = s[in.a] + s[in.b];
+                break;
+            case Op::Sub:
+                s[i] = s[in.a] - s[in.b];
+                break;
+            case Op::Mul:
+                s[i] = s[in.a] * s[in.b];
+                break;
+            case Op::Square:
+                s[i] = s[in.a] * s[in.a];
+                break;
+            case Op::Neg:
+                s[i] = -s[in.a];
                 break;
             case Op::Sin:
             case Op::Cos: {  // no libm call in range; the same values as evalGradient
