@@ -5,6 +5,7 @@
 #include <cstring>
 #include <utility>
 
+#include "csg/interval_trig.h"
 #include "csg/scalar_ops.h"
 
 namespace kerf {
@@ -52,8 +53,15 @@ ExprId ExprGraph::z() { return intern({Op::VarZ, -1, -1, 0.0}); }
 
 ExprId ExprGraph::unary(Op op, ExprId a) {
     // Folding uses the point evaluator's own arithmetic, so the folded tape evaluates to
-    // the same doubles as the unfolded one would.
-    if (mNodes[a].op == Op::Const) return constant(applyScalarOp(op, mNodes[a].value, 0.0, 0.0));
+    // the same doubles as the unfolded one would (sin and cos as Tape::eval computes them).
+    if (mNodes[a].op == Op::Const) {
+        if (op == Op::Sin || op == Op::Cos) {
+            double s, c;
+            interval_trig::pointSinCos(mNodes[a].value, s, c);
+            return constant(op == Op::Sin ? s : c);
+        }
+        return constant(applyScalarOp(op, mNodes[a].value, 0.0, 0.0));
+    }
     return intern({op, a, -1, 0.0});
 }
 

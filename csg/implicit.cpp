@@ -11,7 +11,10 @@
 namespace kerf {
 namespace {
 
-/// f along the ray, in the form root isolation wants.
+/// f along the ray, in the form root isolation wants. (The centred form f(m) + f'([a, b])·([a, b]
+/// − m), intersected with the natural enclosure wherever that is ambiguous, was measured here
+/// on the gyroid ∩ sphere at 160×120: 11.6 % fewer interval evaluations, but 41 % more
+/// instructions, since f(m) needs a second interval evaluation per call.)
 struct TapeAlongRay {
     const Tape& tape;
     const Ray& ray;
@@ -20,12 +23,7 @@ struct TapeAlongRay {
         tape.evalIntervalAlongRay(ray, Interval(a, b), f, dfdt);
     }
     double value(double t) const { return tape.eval(ray.at(t)); }
-    double valueAndSlope(double t, double& dfdt) const {
-        Vec3 g;
-        const double f = tape.evalGradient(ray.at(t), g);
-        dfdt = glm::dot(g, ray.dir);
-        return f;
-    }
+    double valueAndSlope(double t, double& dfdt) const { return tape.evalAlongRay(ray, t, dfdt); }
 };
 
 /// f along the ray for the comparison-only interval method on a stand-in (csg/comparison_methods.h):

@@ -10,6 +10,7 @@
 // to the side it could lie on.
 #include "csg/interval.h"
 #include "csg/interval_ops.h"
+#include "csg/interval_trig.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -77,8 +78,6 @@ double powNonNegative(double x, unsigned n, bool roundUpward) {
 Interval operator+(const Interval& a, const Interval& b) { return interval_kernel::add(a, b); }
 
 Interval operator-(const Interval& a, const Interval& b) { return interval_kernel::sub(a, b); }
-
-Interval operator-(const Interval& a) { return {-a.hi, -a.lo, a.maybeNan}; }  // exact
 
 Interval operator*(const Interval& a, const Interval& b) { return interval_kernel::mul(a, b); }
 
@@ -183,6 +182,8 @@ Interval log(const Interval& a) {
 }
 
 void sinCos(const Interval& a, Interval& s, Interval& c) {
+    // The common case: no libm call (csg/interval_trig.h).
+    if (interval_trig::trySinCosFast(a, s, c)) return;
     // Beyond 2^50 the spacing of doubles exceeds what the quadrant test can resolve.
     if (!(a.hi - a.lo < kTwoPi) || std::fabs(a.lo) > 0x1p50 || std::fabs(a.hi) > 0x1p50) {
         s = c = {-1.0, 1.0, a.maybeNan};

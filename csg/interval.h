@@ -2,7 +2,8 @@
 /// @brief Closed intervals [lo, hi] of doubles with outward rounding.
 ///
 /// Contract: for every operation op and all reals a ∈ A, b ∈ B where op(a, b) is defined,
-/// op(a, b) ∈ op(A, B). Results are widened by one ulp outward (nextafter) after each
+/// op(a, b) ∈ op(A, B). Results are widened by one ulp outward (a step on the bit pattern,
+/// csg/interval_round.h) after each
 /// rounded operation instead of switching the FPU rounding mode, so the code is portable
 /// and thread safe. Where an operation is undefined on part of its input (sqrt or log of
 /// negatives, division by an interval holding 0), the result covers the defined part and
@@ -11,6 +12,8 @@
 
 #include <cmath>
 #include <limits>
+
+#include "csg/interval_round.h"
 
 namespace kerf {
 
@@ -51,13 +54,13 @@ inline Interval nonNegative(Interval a) {
     return a;
 }
 
-/// One ulp down / up; infinities stay put.
-inline double roundDown(double v) { return std::nextafter(v, -std::numeric_limits<double>::infinity()); }
-inline double roundUp(double v) { return std::nextafter(v, std::numeric_limits<double>::infinity()); }
+/// One ulp down / up (csg/interval_round.h): −inf stays put going down and +inf going up.
+inline double roundDown(double v) { return interval_kernel::down(v); }
+inline double roundUp(double v) { return interval_kernel::up(v); }
 
 Interval operator+(const Interval& a, const Interval& b);
 Interval operator-(const Interval& a, const Interval& b);
-Interval operator-(const Interval& a);
+inline Interval operator-(const Interval& a) { return {-a.hi, -a.lo, a.maybeNan}; }  // exact
 Interval operator*(const Interval& a, const Interval& b);
 Interval operator/(const Interval& a, const Interval& b);
 

@@ -24,7 +24,21 @@ std::shared_ptr<const Tape> Tape::compile(const ExprGraph& graph, ExprId root) {
         tape->mInstrs.push_back(
             {n.op, n.a >= 0 ? slotOf[n.a] : -1, n.b >= 0 ? slotOf[n.b] : -1, n.value});
     }
+    tape->finish();
     return tape;
+}
+
+void Tape::finish() {
+    mLeanAlongRay = true;
+    for (const TapeInstr& in : mInstrs)
+        switch (in.op) {
+            case Op::Const: case Op::VarX: case Op::VarY: case Op::VarZ: case Op::Add:
+            case Op::Sub: case Op::Mul: case Op::Neg: case Op::Square: case Op::Sin:
+            case Op::Cos:
+                break;
+            default:
+                mLeanAlongRay = false;
+        }
 }
 
 }  // namespace kerf

@@ -41,9 +41,16 @@ public:
     Interval evalInterval(const Interval& x, const Interval& y, const Interval& z) const;
     /// f and its gradient at a point (forward-mode differentiation).
     double evalGradient(const Vec3& p, Vec3& gradient) const;
+    /// f at ray.at(t) (the same bits as eval) and df/dt there: forward mode with one slope per
+    /// slot instead of a gradient's three.
+    double evalAlongRay(const Ray& ray, double t, double& dfdt) const;
     /// Along a ray p(t) = o + t·d for t in `t`: an interval holding f, and one holding df/dt
     /// (forward-mode differentiation on intervals). Used by root isolation.
     void evalIntervalAlongRay(const Ray& ray, const Interval& t, Interval& f, Interval& dfdt) const;
+    /// The same, always by the general evaluator (per-slot NaN flags, every Op): the reference
+    /// that evalIntervalAlongRay's lean path must equal bit for bit (tests).
+    void evalIntervalAlongRayReference(const Ray& ray, const Interval& t, Interval& f,
+                                       Interval& dfdt) const;
 
     /// evalInterval, also recording in `choices` (resized to size()) which operand of each
     /// min/max (and the sign of each abs) decided it over the box (csg/tape_simplify.cpp).
@@ -56,7 +63,14 @@ public:
     std::shared_ptr<const Tape> simplified(const std::vector<Choice>& choices) const;
 
 private:
+    /// Works out mLeanAlongRay once the instructions are final (compile, simplified).
+    void finish();
+
     std::vector<TapeInstr> mInstrs;
+    /// Every instruction is one that can never raise a NaN flag (constants, axes, +, −, ×,
+    /// negation, square, sin, cos), so along-ray evaluation may skip the flags
+    /// (csg/tape_eval_ray.cpp).
+    bool mLeanAlongRay = false;
 };
 
 }  // namespace kerf

@@ -1,19 +1,26 @@
 // Point evaluation with the gradient: forward-mode dual numbers, one value and one
 // ∂/∂(x, y, z) per slot, in per-thread scratch.
+#include "csg/interval_trig.h"
 #include "csg/scalar_ops.h"
 #include "csg/tape.h"
 
 namespace kerf {
 namespace {
 
+/// A value and its derivative: the gradient (G = Vec3) or the slope along a ray (G = double).
+template <typename G>
 struct Dual {
     double v;
-    Vec3 g;
+    G g;
 };
+
+inline bool isZero(const Vec3& g) { return g == Vec3(0.0); }
+inline bool isZero(double g) { return g == 0.0; }
 
 /// The derivative rules; the value itself comes from applyScalarOp, so eval() and
 /// evalGradient() return the same f bit for bit.
-Vec3 derivative(Op op, const Dual& a, const Dual& b, double value, double result) {
+template <typename G>
+G derivative(Op op, const Dual<G>& a, const Dual<G>& b, double value, double result) {
     switch (op) {
         case Op::Neg:
             return -a.g;
@@ -41,7 +48,7 @@ Vec3 derivative(Op op, const Dual& a, const Dual& b, double value, double result
             return a.g / a.v;
         case Op::Floor:
         case Op::Ceil:
-            return Vec3(0.0);  // piecewise constant
+            return G(0.0);  // piecewise constant
         case Op::Add:
             return a.g + b.g;
         case Op::Sub:
@@ -53,8 +60,8 @@ Vec3 derivative(Op op, const Dual& a, const Dual& b, double value, double result
         case Op::Pow: {
             // d(aᵇ) = b·aᵇ⁻¹·da + aᵇ·ln a·db; the second term only when b varies, so that a
             // constant exponent at a = 0 does not bring in 0·ln 0.
-            Vec3 g = (b.v * std::pow(a.v, b.v - 1.0)) * a.g;
-            if (b.g != Vec3(0.0)) g += (result * std::log(a.v)) * b.g;
+            G g = (b.v * std::pow(a.v, b.v - 1.0)) * a.g;
+            if (!isZero(b.g)) g += (result * std::log(a.v)) * b.g;
             return g;
         }
         case Op::Atan2:
@@ -65,45 +72,70 @@ Vec3 derivative(Op op, const Dual& a, const Dual& b, double value, double result
             return a.v >= b.v ? a.g : b.g;
         case Op::PowInt: {
             const int n = static_cast<int>(value);
-            return n == 0 ? Vec3(0.0) : (value * std::pow(a.v, n - 1)) * a.g;
+            return n == 0 ? G(0.0) : (value * std::pow(a.v, n - 1)) * a.g;
         }
         default:
-            return Vec3(0.0);
+            return G(0.0);
     }
 }
 
-}  // namespace
-
-double Tape::evalGradient(const Vec3& p, Vec3& gradient) const {
-    thread_local std::vector<Dual> slots;
-    slots.resize(mInstrs.size());
-    Dual* s = slots.data();
-    const Dual none{0.0, Vec3(0.0)};
-    for (size_t i = 0; i < mInstrs.size(); ++i) {
-        const TapeInstr& in = mInstrs[i];
+/// Forward-mode evaluation at p with the inputs' derivatives dx, dy, dz: the gradient when
+/// they are the unit vectors, the slope along a ray when they are its direction's components.
+/// The values are those of Tape::eval(p), bit for bit (the same operations in the same order).
+template <typename G>
+Dual<G> evalDual(const std::vector<TapeInstr>& instrs, const Vec3& p, const G& dx, const G& dy,
+                 const G& dz) {
+    thread_local std::vector<Dual<G>> slots;
+    slots.resize(instrs.size());
+    Dual<G>* s = slots.data();
+    const Dual<G> none{0.0, G(0.0)};
+    for (size_t i = 0; i < instrs.size(); ++i) {
+        const TapeInstr& in = instrs[i];
         switch (in.op) {
             case Op::Const:
-                s[i] = {in.value, Vec3(0.0)};
+                s[i] = {in.value, G(0.0)};
                 break;
             case Op::VarX:
-                s[i] = {p.x, Vec3(1.0, 0.0, 0.0)};
+                s[i] = {p.x, dx};
                 break;
             case Op::VarY:
-                s[i] = {p.y, Vec3(0.0, 1.0, 0.0)};
+                s[i] = {p.y, dy};
                 break;
             case Op::VarZ:
-                s[i] = {p.z, Vec3(0.0, 0.0, 1.0)};
+                s[i] = {p.z, dz};
                 break;
+            case Op::Sin:
+            case Op::Cos: {  // one reduction for the value and the slope, as Tape::eval
+                const Dual<G>& a = s[in.a];
+                double sv, cv;
+                interval_trig::pointSinCos(a.v, sv, cv);
+                s[i] = in.op == Op::Sin ? Dual<G>{sv, cv * a.g} : Dual<G>{cv, -sv * a.g};
+                break;
+            }
             default: {
-                const Dual& a = s[in.a];
-                const Dual& b = in.b >= 0 ? s[in.b] : none;
+                const Dual<G>& a = s[in.a];
+                const Dual<G>& b = in.b >= 0 ? s[in.b] : none;
                 const double v = applyScalarOp(in.op, a.v, b.v, in.value);
                 s[i] = {v, derivative(in.op, a, b, in.value, v)};
             }
         }
     }
-    gradient = s[mInstrs.size() - 1].g;
-    return s[mInstrs.size() - 1].v;
+    return s[instrs.size() - 1];
+}
+
+}  // namespace
+
+double Tape::evalGradient(const Vec3& p, Vec3& gradient) const {
+    const Dual<Vec3> r =
+        evalDual(mInstrs, p, Vec3(1.0, 0.0, 0.0), Vec3(0.0, 1.0, 0.0), Vec3(0.0, 0.0, 1.0));
+    gradient = r.g;
+    return r.v;
+}
+
+double Tape::evalAlongRay(const Ray& ray, double t, double& dfdt) const {
+    const Dual<double> r = evalDual(mInstrs, ray.at(t), ray.dir.x, ray.dir.y, ray.dir.z);
+    dfdt = r.g;
+    return r.v;
 }
 
 }  // namespace kerf

@@ -1,4 +1,5 @@
 // Point evaluation of a tape on doubles, with per-thread scratch slots.
+#include "csg/interval_trig.h"
 #include "csg/scalar_ops.h"
 #include "csg/tape.h"
 
@@ -7,7 +8,7 @@ namespace kerf {
 double Tape::eval(const Vec3& p) const {
     // Reused per thread: no allocation once a thread has seen its largest tape.
     thread_local std::vector<double> slots;
-    slots.resize(mInstrs.size());
+    if (slots.size() < mInstrs.size()) slots.resize(mInstrs.size());
     double* s = slots.data();
     for (size_t i = 0; i < mInstrs.size(); ++i) {
         const TapeInstr& in = mInstrs[i];
@@ -24,6 +25,30 @@ double Tape::eval(const Vec3& p) const {
             case Op::VarZ:
                 s[i] = p.z;
                 break;
+            // The commonest ops inline (root isolation asks for millions of points); the
+            // same arithmetic as applyScalarOp, so the same bits.
+            case Op::Add:
+                s[i] = s[in.a] + s[in.b];
+                break;
+            case Op::Sub:
+                s[i] = s[in.a] - s[in.b];
+                break;
+            case Op::Mul:
+                s[i] = s[in.a] * s[in.b];
+                break;
+            case Op::Square:
+                s[i] = s[in.a] * s[in.a];
+                break;
+            case Op::Neg:
+                s[i] = -s[in.a];
+                break;
+            case Op::Sin:
+            case Op::Cos: {  // no libm call in range; the same values as evalGradient
+                double sv, cv;
+                interval_trig::pointSinCos(s[in.a], sv, cv);
+                s[i] = in.op == Op::Sin ? sv : cv;
+                break;
+            }
             default:
                 s[i] = applyScalarOp(in.op, s[in.a], in.b >= 0 ? s[in.b] : 0.0, in.value);
         }

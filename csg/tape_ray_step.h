@@ -5,6 +5,7 @@
 #pragma once
 
 #include "csg/interval_ops.h"
+#include "csg/interval_trig.h"
 #include "csg/scalar_ops.h"
 #include "csg/tape.h"
 
@@ -26,19 +27,19 @@ struct RaySlot : IntervalDual {
 inline bool isExactZero(const Interval& a) { return a.lo == 0.0 && a.hi == 0.0 && !a.maybeNan; }
 
 /// k·a.d; when a.d is exactly 0 the product is exactly 0 (the NaN flag of k carries over).
-inline Interval scaledSlope(const Interval& k, const RaySlot& a) {
+[[gnu::always_inline]] inline Interval scaledSlope(const Interval& k, const RaySlot& a) {
     return a.zeroSlope ? Interval(0.0, 0.0, k.maybeNan) : interval_kernel::mul(k, a.d);
 }
 
 /// x + y, exact when either is exactly 0.
-inline Interval sum(const Interval& x, const Interval& y) {
+[[gnu::always_inline]] inline Interval sum(const Interval& x, const Interval& y) {
     if (isExactZero(y)) return x;
     if (isExactZero(x)) return y;
     return interval_kernel::add(x, y);
 }
 
 /// The point o + t·d of one axis along the ray, and its slope d.
-inline void alongAxis(double origin, double dir, const Interval& t, RaySlot& r) {
+[[gnu::always_inline]] inline void alongAxis(double origin, double dir, const Interval& t, RaySlot& r) {
     using namespace interval_kernel;
     r.v = dir == 0.0 ? Interval(origin) : add(Interval(origin), mul(t, Interval(dir)));
     r.d = Interval(dir);
@@ -125,7 +126,8 @@ inline const IntervalDual kNoOperand{Interval(), Interval()};
         case Op::Cos: {
             RaySlot& a = s[ia];
             if (!a.hasTrig) {
-                sinCos(a.v, a.sinV, a.cosV);
+                if (!interval_trig::trySinCosFast(a.v, a.sinV, a.cosV))
+                    sinCos(a.v, a.sinV, a.cosV);
                 a.hasTrig = true;
             }
             if (op == Op::Sin) {

@@ -109,6 +109,7 @@ std::shared_ptr<const Tape> Tape::simplified(const std::vector<Choice>& choices)
         slotOf[i] = static_cast<int32_t>(tape->mInstrs.size());
         tape->mInstrs.push_back(in);
     }
+    tape->finish();
     return tape;
 }
 

@@ -150,6 +150,33 @@ TEST_CASE("Tape::evalGradient") {
     }
 }
 
+TEST_CASE("Tape::evalAlongRay") {
+    // The value is eval's, bit for bit; the slope is the gradient's along the direction (the
+    // analytic one for the smooth formula), up to rounding.
+    ExprGraph g;
+    const auto every = Tape::compile(g, buildEveryOp(g));
+    const auto smoothTape = Tape::compile(g, buildSmooth(g));
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int i = 0; i < 1000; ++i) {
+        const Ray ray{randomPoint(rng, 2.0), randomPoint(rng, 1.0)};
+        const double t = 2.0 * unit(rng);
+        const Vec3 p = ray.at(t);
+        INFO("ray " << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << " dir "
+                    << ray.dir.x << ", " << ray.dir.y << ", " << ray.dir.z << " t = " << t);
+        double slope = 0.0;
+        CHECK(every->evalAlongRay(ray, t, slope) == every->eval(p));
+        Vec3 grad;
+        every->evalGradient(p, grad);
+        const double viaGradient = glm::dot(grad, ray.dir);
+        if (std::isfinite(viaGradient))
+            CHECK(slope == Approx(viaGradient).epsilon(1e-12).margin(1e-12));
+        CHECK(smoothTape->evalAlongRay(ray, t, slope) == smoothTape->eval(p));
+        const double expected = glm::dot(smoothGradient(p.x, p.y, p.z), ray.dir);
+        CHECK(slope == Approx(expected).epsilon(1e-12).margin(1e-12));
+    }
+}
+
 TEST_CASE("Tape::evalIntervalAlongRay") {
     ExprGraph g;
     const auto tape = Tape::compile(g, buildSmooth(g));
