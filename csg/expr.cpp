@@ -76,6 +76,10 @@ ExprId ExprGraph::powInt(ExprId a, int n) {
     const double exponent = static_cast<double>(n);
     if (mNodes[a].op == Op::Const)
         return constant(applyScalarOp(Op::PowInt, mNodes[a].value, 0.0, exponent));
+    // a¹ and a² need no power: a² as a square is one rounded product (what pow gives for an
+    // exponent of 2) and takes every evaluator's fast path.
+    if (n == 1) return a;
+    if (n == 2) return unary(Op::Square, a);
     return intern({Op::PowInt, a, -1, exponent});
 }
 
