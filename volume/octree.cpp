@@ -64,9 +64,12 @@ GridFrame frameFor(const Bounds3& b, const OctreeOptions& options) {
     const double longest = std::max({e.x, e.y, e.z});
     int depth = options.depth;
     if (depth <= 0) {
-        // The finest cell spans kCellsPerFootprint pixels where the object is nearest.
+        // The finest cell spans kCellsPerFootprint pixels where the object is nearest, but
+        // no nearer than a quarter of its size: a camera inside or against the bounds would
+        // otherwise ask for the finest level over the whole object (its build and memory).
         const Vec3 nearest = glm::clamp(options.eye, b.lo, b.hi);
-        const double distance = std::max(glm::length(nearest - options.eye), 1e-3 * longest);
+        const double distance =
+            std::max(glm::length(nearest - options.eye), kNearestFraction * longest);
         const double cell = kCellsPerFootprint * options.footprintPerDistance * distance;
         depth = cell > 0.0 ? int(std::ceil(std::log2(longest / cell))) : kMaxOctreeDepth;
     }

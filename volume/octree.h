@@ -17,7 +17,8 @@ struct OctreeOptions {
     /// it from the pixel footprint (below), clamped to [kMinOctreeDepth, kMaxOctreeDepth].
     int depth = 0;
     /// Where the camera is and the world-space size of a pixel per unit of distance: the
-    /// finest cell is kCellsPerFootprint pixels wide at the object's nearest distance.
+    /// finest cell is kCellsPerFootprint pixels wide at the object's nearest distance (at
+    /// least kNearestFraction of the object's size).
     Vec3 eye{0.0};
     double footprintPerDistance = 0.0;
 };
@@ -25,6 +26,8 @@ struct OctreeOptions {
 constexpr int kMinOctreeDepth = 3;  ///< one brick of 8³ cells
 constexpr int kMaxOctreeDepth = 10;
 constexpr double kCellsPerFootprint = 8.0;
+/// The distance the footprint is taken at is at least this fraction of the object's size.
+constexpr double kNearestFraction = 0.25;
 
 /// What building the octrees cost and holds, summed over objects (`--stats`).
 struct OctreeStats {
