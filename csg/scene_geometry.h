@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 namespace kerf {
@@ -77,7 +78,9 @@ public:
     bool occluded(const Ray& ray, double tmin, double tmax, TraceContext& ctx) const;
 
     /// Calls visit(objectIndex, spans) for every object whose spans meet (tmin, tmax);
-    /// spans are as Node::spans gives them (exact on [tmin, tmax], materials filled).
+    /// spans are as Node::spans gives them (exact on [tmin, tmax], materials filled). A visit
+    /// that returns bool ends the search by returning false (a shadow ray already blocked
+    /// needs no other object's spans).
     template <class Visit>
     void forEachObjectSpans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                             Visit&& visit) const;
@@ -115,8 +118,11 @@ void SceneGeometry::forEachObjectSpans(const Ray& ray, double tmin, double tmax,
     SpanList spans;
     traverse(ray, tmin, tmax, ctx, [&](int index, double) {
         mObjects[index]->spans(ray, tmin, tmax, ctx, spans);
-        if (!spans.empty()) {
-            fillMaterial(spans, 0);
+        if (spans.empty()) return tmax;
+        fillMaterial(spans, 0);
+        if constexpr (std::is_same_v<decltype(visit(index, spans)), bool>) {
+            if (!visit(index, spans)) return -kInf;  // an empty range ends the walk
+        } else {
             visit(index, spans);
         }
         return tmax;

@@ -188,7 +188,7 @@ Vec3 WhittedIntegrator::transmittance(const Ray& ray, double tmax, ShadingContex
     };
     mGeometry.forEachObjectSpans(ray, 0.0, tmax, ctx.trace, [&](int, const SpanList& spans) {
         for (const Span& s : spans) {
-            if (blocked) return;
+            if (blocked) return false;
             const double a = std::max(s.in.t, 0.0);
             const double b = std::min(s.out.t, tmax);
             if (!(a < b)) continue;  // the span misses the segment
@@ -196,12 +196,13 @@ Vec3 WhittedIntegrator::transmittance(const Ray& ray, double tmax, ShadingContex
             const Material& ms = material(s.in.isSurface() ? s.in.material : s.out.material);
             if (ms.transmit <= 0) {
                 blocked = true;
-                return;
+                return false;
             }
             pass *= beer(ms.absorb, (b - a) * dirLength);
             cross(s.in);
             cross(s.out);
         }
+        return !blocked;
     });
     return blocked ? Vec3(0.0) : pass;
 }
