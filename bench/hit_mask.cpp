@@ -9,6 +9,8 @@
 //       hits (holes away from any silhouette, so not a half-pixel framing difference), and
 //       pixels POV-Ray hits where kerf does not.
 //   hit_mask --self-test
+// --list FILE writes every disagreeing pixel as "i j first second" (inf = miss), and with depth
+// every pixel beyond T too.
 //
 // Prints one JSON object. The diff image is red where only the first hits, green where only
 // the second does, grey where both do. Reads images with OpenImageIO; nothing of kerf.
@@ -103,6 +105,22 @@ Counts compare(const Mask& a, const Mask& b, bool depths, double tolerance) {
     return c;
 }
 
+bool writeList(const std::string& path, const Mask& a, const Mask& b, bool depths, double tolerance) {
+    FILE* f = std::fopen(path.c_str(), "w");
+    if (!f) {
+        std::fprintf(stderr, "hit_mask: cannot write %s\n", path.c_str());
+        return false;
+    }
+    for (int j = 0; j < a.height; ++j)
+        for (int i = 0; i < a.width; ++i) {
+            const size_t k = size_t(j) * a.width + i;
+            const bool differ = a.hit[k] != b.hit[k] ||
+                (depths && a.hit[k] && std::fabs(double(a.value[k]) - b.value[k]) > tolerance * b.value[k]);
+            if (differ) std::fprintf(f, "%d %d %.9g %.9g\n", i, j, a.value[k], b.value[k]);
+        }
+    return std::fclose(f) == 0;
+}
+
 bool writeDiff(const std::string& path, const Mask& a, const Mask& b) {
     OIIO::ImageSpec spec(a.width, a.height, 3, OIIO::TypeDesc::UINT8);
     OIIO::ImageBuf out(spec);
@@ -158,8 +176,8 @@ int selfTest() {
 }
 
 int usage() {
-    std::fprintf(stderr, "usage: hit_mask depth TEST.exr REFERENCE.exr [--tolerance T] [--diff OUT.png]\n"
-                         "       hit_mask coverage KERF.exr POV.png [--diff OUT.png]\n"
+    std::fprintf(stderr, "usage: hit_mask depth TEST.exr REFERENCE.exr [--tolerance T] [--diff OUT.png] [--list OUT.txt]\n"
+                         "       hit_mask coverage KERF.exr POV.png [--diff OUT.png] [--list OUT.txt]\n"
                          "       hit_mask --self-test\n");
     return 2;
 }
@@ -172,10 +190,11 @@ int main(int argc, char** argv) {
     const std::string mode = argv[1];
     if (mode != "depth" && mode != "coverage") return usage();
     double tolerance = 0.0;
-    std::string diff;
+    std::string diff, list;
     for (int k = 4; k < argc; ++k) {
         if (std::strcmp(argv[k], "--tolerance") == 0 && k + 1 < argc) tolerance = std::atof(argv[++k]);
         else if (std::strcmp(argv[k], "--diff") == 0 && k + 1 < argc) diff = argv[++k];
+        else if (std::strcmp(argv[k], "--list") == 0 && k + 1 < argc) list = argv[++k];
         else return usage();
     }
     const bool depths = mode == "depth";
@@ -189,6 +208,7 @@ int main(int argc, char** argv) {
     depths ? depthHits(b) : alphaHits(b);
     const Counts c = compare(a, b, depths, tolerance);
     if (!diff.empty() && !writeDiff(diff, a, b)) return 1;
+    if (!list.empty() && !writeList(list, a, b, depths, tolerance)) return 1;
     if (depths)
         std::printf("{\"pixels\": %ld, \"test_hit\": %ld, \"reference_hit\": %ld, \"both\": %ld, "
                     "\"test_only\": %ld, \"reference_only\": %ld, \"rel_max\": %.9g, "
