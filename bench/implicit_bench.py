@@ -44,10 +44,22 @@ SCENES = {
     "cup": {"file": "models/cup", "size": None, "spp": None, "threads": 2,
             "pov_gradients": [], "baseline": True},
 }
+POV_DEFAULT_GRADIENT = "1.1"  # POV-Ray 3.7's max_gradient when the scene gives none
 REFERENCE_OPTIONS = "--method interval --tolerance 1e-9"
 KERF_KEYS = ["wall", "trace", "rays per second", "rays in total", "camera rays", "shadow rays",
              "interval evaluations", "root-finder steps", "primitive tests", "parse + compile",
-             "tolerance"]
+             "tolerance", "cells visited per ray", "octree build", "octree memory",
+             "octree cells"]
+
+
+def kerf_stats_all(text):
+    """kerf_stats plus the labels its pattern leaves out (octree lines are absent when kerf
+    builds no octree)."""
+    stats = kerf_stats(text)
+    match = re.search(r"cells visited / ray\s+([0-9.e+\-]+)", text)
+    if match:
+        stats["cells visited per ray"] = float(match.group(1))
+    return stats
 
 
 def kerf_command(kerf, scene, path, output, extra, spp=None):
@@ -105,7 +117,7 @@ def bench_scene(name, args, env):
                                     options)
                 for label, kerf, options in variants}
     for gradient in scene["pov_gradients"]:
-        commands["POV-Ray %s" % gradient] = pov_command(scene, base + ".pov",
+        commands[pov_label(gradient)] = pov_command(scene, base + ".pov",
                                                         out(".pov%s.png" % gradient), gradient)
     runs = {label: [] for label in commands}
     load_before = load_average()
@@ -113,7 +125,7 @@ def bench_scene(name, args, env):
         for label, command in commands.items():
             pov = label.startswith("POV-Ray")
             wall, text = run_timed(command, out(".%s.log" % slug(label)), env if pov else None)
-            stats = pov_stats(text) if pov else kerf_stats(text)
+            stats = pov_stats(text) if pov else kerf_stats_all(text)
             if pov:
                 stats["gradient found"] = pov_gradient_found(text)
             runs[label].append(dict(stats, wall=wall))
@@ -177,11 +189,15 @@ def checks(name, scene, base, variants, result, args, env):
                             out(".mask.pov%s.diff.png" % gradient))
         coverage["gradient_found"] = pov_gradient_found(text)
         coverage["command"] = shown(command, args.root)
-        rows["POV-Ray %s" % gradient]["coverage"] = coverage
+        rows[pov_label(gradient)]["coverage"] = coverage
+
+
+def pov_label(gradient):
+    return "POV-Ray %s%s" % (gradient, " (default)" if gradient == POV_DEFAULT_GRADIENT else "")
 
 
 def slug(label):
-    return label.replace(" ", "-").replace("/", "-")
+    return label.split(" (")[0].replace(" ", "-").replace("/", "-")
 
 
 def parse_configs(texts):
@@ -197,23 +213,38 @@ def main():
     root = os.path.dirname(here)
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--kerf", required=True, help="the kerf under test")
+    parser.add_argument("--kerf", help="the kerf under test (required unless --from-json)")
     parser.add_argument("--kerf-baseline", help="the kerf to compare with on cup")
-    parser.add_argument("--hit-mask", required=True, help="the hit_mask executable")
+    parser.add_argument("--hit-mask", help="the hit_mask executable (required unless --from-json)")
     parser.add_argument("--kerf-config", nargs="+", metavar="NAME=OPTIONS",
                         help='kerf configurations, e.g. none="--accel none" '
                         'octree="--accel octree" (default: one, "default", no options)')
     parser.add_argument("--reference-options", default=None,
                         help='options of the reference kerf render (default: "%s", plus '
                         '"--accel none" when kerf accepts it)' % REFERENCE_OPTIONS)
+    parser.add_argument("--kerf-note", default="",
+                        help="what the kerf under test is, for the report (e.g. its commit)")
     parser.add_argument("--runs", type=int, default=5)
     parser.add_argument("--scenes", nargs="+", default=list(SCENES), choices=list(SCENES))
     parser.add_argument("--no-checks", action="store_true", help="skip hit masks and coverage")
     parser.add_argument("--out", default=os.path.join(here, "out", "implicit"))
     parser.add_argument("--doc", help="the document whose implicit part is rewritten; '-' for "
                         "none (default: docs/BENCHMARKS.md after a full run, none otherwise)")
+    parser.add_argument("--from-json", metavar="RESULTS",
+                        help="only rewrite the report from an earlier run's results.json "
+                        "(with --doc FILE)")
     args = parser.parse_args()
     args.root = root
+    if args.from_json:
+        with open(args.from_json, encoding="utf-8") as f:
+            markdown = implicit_report.markdown(json.load(f))
+        print(markdown)
+        if args.doc and args.doc != "-":
+            implicit_report.update(args.doc, markdown)
+            print("wrote", args.doc)
+        return
+    if not args.kerf or not args.hit_mask:
+        parser.error("--kerf and --hit-mask are required")
     os.makedirs(args.out, exist_ok=True)
     empty_ini = os.path.join(args.out, "empty.ini")
     open(empty_ini, "w").close()
@@ -246,6 +277,7 @@ def main():
         "skipped": [[label, " ".join(o)] for label, o in skipped],
         "reference_options": " ".join(args.reference_options),
         "kerf": shown([args.kerf], root),
+        "kerf_note": args.kerf_note,
         "kerf_baseline": shown([args.kerf_baseline], root) if args.kerf_baseline else None,
         "seconds": time.time() - started,
     }

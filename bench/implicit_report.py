@@ -58,22 +58,27 @@ def scene_table(result):
             result["load_after"]),
         "",
         "| renderer | trace s | (min–max) | wall s | trace ÷ %s | rays/s | rays/s per thread "
-        "| interval evals / ray | root steps / ray | hit mask vs reference | max rel. depth diff "
-        "| POV-Ray holes | POV max gradient found |" % ref["label"],
-        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
+        "| interval evals / ray | root steps / ray | octree cells / ray | octree MB (build s) "
+        "| hit mask vs reference | max rel. depth diff | POV-Ray holes | POV max gradient found |"
+        % ref["label"],
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
     ]
     for row in result["rows"]:
         m = row["median"]
         mask, depth = mask_text(row)
         pov = row["label"].startswith("POV-Ray")
         found = (row.get("coverage") or {}).get("gradient_found") or row.get("gradient_found")
-        lines.append("| %s | %s | %s–%s | %s | %.3f | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+        octree = m.get("octree memory", float("nan"))
+        lines.append("| %s | %s | %s–%s | %s | %.3f | %s | %s | %s | %s | %s | %s | %s | %s | %s "
+                     "| %s |" % (
             row["label"], fmt(m["trace"]), fmt(row["trace_range"][0]),
             fmt(row["trace_range"][1]), fmt(m["wall"]), nan_div(m["trace"], ref["median"]["trace"]),
             bench_report.fmt_rate(m["rays per second"]),
             bench_report.fmt_rate(nan_div(m["rays per second"], threads)),
             "—" if pov else fmt(per_ray(m, "interval evaluations"), "%.1f"),
             "—" if pov else fmt(per_ray(m, "root-finder steps"), "%.1f"),
+            fmt(m.get("cells visited per ray", float("nan")), "%.1f"),
+            "%.2f (%.3f)" % (octree, m["octree build"]) if octree == octree else "—",
             mask, depth, holes_text(row), fmt(found, "%.1f") if found else "—"))
     lines += ["", "```"]
     lines += [row["command"] for row in result["rows"]]
@@ -98,8 +103,10 @@ def verdict(ok):
 
 
 def mismatches(row):
+    """Pixels where this render does not see the reference's surface: a hit or a miss the
+    reference does not have, or a depth beyond this render's tolerance (another surface)."""
     m = row.get("mask")
-    return None if not m else m["test_only"] + m["reference_only"]
+    return None if not m else m["test_only"] + m["reference_only"] + m["over_tolerance"]
 
 
 def targets(report):
@@ -159,9 +166,9 @@ def targets(report):
                          "and `octree` were not both accepted by this kerf)" % scene)
     bad = [(r["scene"], row["label"], mismatches(row)) for r in results for row in r["rows"]
            if mismatches(row)]
-    lines.append("- hit masks: %s" % ("every kerf configuration hits the same pixels as the "
-                                      "reference — met" if not bad else "**mismatches**: " +
-                                      ", ".join("%s %s %d" % b for b in bad)))
+    lines.append("- same surfaces as the reference (hit mask, and depth within tolerance): %s" % (
+        "every kerf configuration — met" if not bad else "**NOT met**, pixels off: " +
+        ", ".join("%s %s %d" % b for b in bad)))
     return lines
 
 
@@ -170,9 +177,10 @@ def markdown(report):
     skipped = ", ".join("%s (`%s`)" % tuple(s) for s in report["skipped"]) or "none"
     parts = [
         BEGIN, "",
-        "Measured %s on %s (%d logical CPUs), Linux %s; kerf under test `%s` (%s)%s; %s; "
+        "Measured %s on %s (%d logical CPUs), Linux %s; kerf under test `%s` (%s%s)%s; %s; "
         "the whole run took %.0f s." % (
             m["date"], m["cpu"], m["nproc"], m["kernel"], report["kerf"], m["kerf"],
+            ", " + report["kerf_note"] if report.get("kerf_note") else "",
             "; baseline `%s` (%s)" % (report["kerf_baseline"], m.get("baseline", "?"))
             if report["kerf_baseline"] else "", m["povray"], report["seconds"]),
         "",
@@ -189,7 +197,9 @@ def markdown(report):
     parts += [
         "*trace*: the tracing stage each renderer reports (kerf `--stats` \"trace\", POV-Ray "
         "\"Trace Time\"); *wall*: the whole process. Rays/s count every ray (camera, shadow, "
-        "reflection, refraction) over the trace stage. *hit mask*: pixels this render hits "
+        "reflection, refraction) over the trace stage. *octree*: kerf's `--stats` (cells visited "
+        "per ray; the acceleration structure's memory and build time), — without an octree. "
+        "*hit mask*: pixels this render hits "
         "and the reference misses + the reverse (depth AOV, spp 1: the pixel-centre ray); "
         "*max rel. depth diff*: over the pixels both hit, with how many exceed this render's "
         "own tolerance. *POV-Ray holes*: the scene without its floor rendered by POV-Ray with "
