@@ -10,8 +10,10 @@ POV-Ray read the same numbers (bench/implicit_bench.py renders them):
 Scenes:
   gyroid  gyroid of period 1 (sin 2πx cos 2πy + sin 2πy cos 2πz + sin 2πz cos 2πx <= 0)
           intersected with a sphere of radius 3, on a floor; 800 x 600.
-  barth   Barth's sextic 4(φ²x²−y²)(φ²y²−z²)(φ²z²−x²) − (1+2φ)(x²+y²+z²−1)² <= 0 clipped by a
-          sphere of radius 1.8, no floor (primary rays and shadows); 512 x 512.
+  barth   Barth's sextic clipped by a sphere of radius 1.8, no floor (primary rays and
+          shadows); 512 x 512. With f = 4(φ²x²−y²)(φ²y²−z²)(φ²z²−x²) − (1+2φ)(x²+y²+z²−1)² the
+          solid is −f <= 0: with f <= 0 the clipping sphere is inside almost everywhere and the
+          picture is a ball, with −f <= 0 it is the usual star of cones meeting at the nodes.
   blobs   a union of 10,000 small implicit blobs |q|² − r² + A sin(Kq_x) sin(Kq_y) sin(Kq_z) <= 0
           (q = p − c), each with its own tight bound box, spread in a volume, on a floor.
           kerf only.

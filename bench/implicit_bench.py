@@ -14,7 +14,8 @@ RUNS times, round robin, after one untimed warm-up; medians are reported. Then t
 once each, at the timed settings except spp 1 (the depth AOV is the pixel-centre hit at any spp):
   hit mask: every configuration's depth AOV against a reference kerf render (REFERENCE
     OPTIONS, by default --method interval --tolerance 1e-9, plus --accel none when kerf has
-    it): pixels hit by one and not the other, largest relative depth difference over the rest;
+    it): pixels hit by one and not the other, largest relative depth difference over the rest,
+    and (bench/thin_spans.py) which disagreements are spans thinner than the tolerance;
   POV-Ray's holes: the floorless scene (NAME.mask.*) rendered by the reference kerf and by
     POV-Ray with +UA at each max_gradient: pixels POV-Ray misses where kerf hits.
 Writes bench/out/implicit/results.json and the implicit part of docs/BENCHMARKS.md.
@@ -32,6 +33,7 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 from run_bench import (kerf_stats, load_average, pov_stats, run_timed, shown,  # noqa: E402
                        summarize, versions)
 import implicit_report  # noqa: E402
+import thin_spans  # noqa: E402
 
 # name -> settings. "file" is relative to the repository; "size" None keeps the model's own.
 SCENES = {
@@ -170,8 +172,13 @@ def checks(name, scene, base, variants, result, args, env):
                                options + ["--aov", "depth=" + depth], spp=1)
         _, text = run_timed(command, out(".%s.depth.log" % slug(label)))
         tolerance = kerf_stats(text).get("tolerance", 0.0)
-        rows[label]["mask"] = hit_mask(args, "depth", depth, reference,
-                                       out(".%s.maskdiff.png" % slug(label)), tolerance)
+        mask = hit_mask(args, "depth", depth, reference, out(".%s.maskdiff.png" % slug(label)),
+                        tolerance)
+        if name in thin_spans.FIELDS:
+            width, height = scene["size"] or (800, 600)  # cup's own size
+            mask["spans"] = thin_spans.classify(name, out(".%s.maskdiff.txt" % slug(label)),
+                                                width, height, tolerance)
+        rows[label]["mask"] = mask
     if not scene["pov_gradients"]:
         return
     # Coverage: the floorless scene, by the reference kerf and by POV-Ray with alpha.
@@ -190,6 +197,23 @@ def checks(name, scene, base, variants, result, args, env):
         coverage["gradient_found"] = pov_gradient_found(text)
         coverage["command"] = shown(command, args.root)
         rows[pov_label(gradient)]["coverage"] = coverage
+
+
+def add_thin_spans(report, out):
+    """Classifies the disagreements of a results.json written before bench/thin_spans.py
+    existed, from the pixel lists beside it; True if anything was added."""
+    added = False
+    for result in report["results"]:
+        name = result["scene"]
+        for row in result["rows"]:
+            mask = row.get("mask")
+            if name not in thin_spans.FIELDS or not mask or "spans" in mask:
+                continue
+            listing = os.path.join(out, "%s.%s.maskdiff.txt" % (name, slug(row["label"])))
+            width, height = result["size"] or (800, 600)  # cup's own size
+            mask["spans"] = thin_spans.classify(name, listing, width, height, mask["tolerance"])
+            added = True
+    return added
 
 
 def pov_label(gradient):
@@ -237,7 +261,11 @@ def main():
     args.root = root
     if args.from_json:
         with open(args.from_json, encoding="utf-8") as f:
-            markdown = implicit_report.markdown(json.load(f))
+            report = json.load(f)
+        if add_thin_spans(report, os.path.dirname(os.path.abspath(args.from_json))):
+            with open(args.from_json, "w", encoding="utf-8") as f:
+                json.dump(report, f, indent=1)
+        markdown = implicit_report.markdown(report)
         print(markdown)
         if args.doc and args.doc != "-":
             implicit_report.update(args.doc, markdown)
