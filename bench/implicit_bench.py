@@ -179,6 +179,7 @@ def checks(name, scene, base, variants, result, args, env):
             mask["spans"] = thin_spans.classify(name, out(".%s.maskdiff.txt" % slug(label)),
                                                 width, height, tolerance)
         rows[label]["mask"] = mask
+    add_against_none(result, args.out, args.hit_mask)
     if not scene["pov_gradients"]:
         return
     # Coverage: the floorless scene, by the reference kerf and by POV-Ray with alpha.
@@ -197,6 +198,26 @@ def checks(name, scene, base, variants, result, args, env):
         coverage["gradient_found"] = pov_gradient_found(text)
         coverage["command"] = shown(command, args.root)
         rows[pov_label(gradient)]["coverage"] = coverage
+
+
+def add_against_none(result, out, tool):
+    """Each kerf configuration's depth against `--accel none`'s (the same surfaces within the
+    tolerance, as issue 8 requires of the octree); True if anything was added."""
+    name, added = result["scene"], False
+    none = os.path.join(out, "%s.kerf-none.exr" % name)
+    if not os.path.exists(none):
+        return False
+    for row in result["rows"]:
+        mask = row.get("mask")
+        if not mask or row["label"] == "kerf none" or "against_none" in mask:
+            continue
+        depth = os.path.join(out, "%s.%s.exr" % (name, slug(row["label"])))
+        command = [tool, "depth", depth, none, "--tolerance", repr(mask["tolerance"]),
+                   "--list", os.path.join(out, "%s.%s.vsnone.txt" % (name, slug(row["label"])))]
+        mask["against_none"] = json.loads(subprocess.run(command, check=True, capture_output=True,
+                                                         text=True).stdout)
+        added = True
+    return added
 
 
 def add_thin_spans(report, out):
@@ -262,7 +283,10 @@ def main():
     if args.from_json:
         with open(args.from_json, encoding="utf-8") as f:
             report = json.load(f)
-        if add_thin_spans(report, os.path.dirname(os.path.abspath(args.from_json))):
+        out = os.path.dirname(os.path.abspath(args.from_json))
+        tool = args.hit_mask or os.path.join(root, "build", "bench-reference", "hit_mask")
+        added = [add_against_none(result, out, tool) for result in report["results"]]
+        if add_thin_spans(report, out) or any(added):
             with open(args.from_json, "w", encoding="utf-8") as f:
                 json.dump(report, f, indent=1)
         markdown = implicit_report.markdown(report)

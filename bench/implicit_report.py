@@ -59,9 +59,9 @@ def scene_table(result):
         "",
         "| renderer | trace s | (min–max) | wall s | trace ÷ %s | rays/s | rays/s per thread "
         "| interval evals / ray | root steps / ray | octree cells / ray | octree MB (build s) "
-        "| hit mask vs reference | max rel. depth diff | thin spans | POV-Ray holes "
-        "| POV max gradient found |" % ref["label"],
-        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
+        "| hit mask vs reference | max rel. depth diff | thin spans | vs `--accel none` "
+        "| POV-Ray holes | POV max gradient found |" % ref["label"],
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
     ]
     for row in result["rows"]:
         m = row["median"]
@@ -70,7 +70,7 @@ def scene_table(result):
         found = (row.get("coverage") or {}).get("gradient_found") or row.get("gradient_found")
         octree = m.get("octree memory", float("nan"))
         lines.append("| %s | %s | %s–%s | %s | %.3f | %s | %s | %s | %s | %s | %s | %s | %s | %s "
-                     "| %s | %s |" % (
+                     "| %s | %s | %s |" % (
             row["label"], fmt(m["trace"]), fmt(row["trace_range"][0]),
             fmt(row["trace_range"][1]), fmt(m["wall"]), nan_div(m["trace"], ref["median"]["trace"]),
             bench_report.fmt_rate(m["rays per second"]),
@@ -79,7 +79,7 @@ def scene_table(result):
             "—" if pov else fmt(per_ray(m, "root-finder steps"), "%.1f"),
             fmt(m.get("cells visited per ray", float("nan")), "%.1f"),
             "%.2f (%.3f)" % (octree, m["octree build"]) if octree == octree else "—",
-            mask, depth, thin_text(row), holes_text(row), fmt(found, "%.1f") if found else "—"))
+            mask, depth, thin_text(row), none_text(row), holes_text(row), fmt(found, "%.1f") if found else "—"))
     lines += ["", "```"]
     lines += [row["command"] for row in result["rows"]]
     if "reference" in result:
@@ -113,6 +113,12 @@ def mismatches(row):
     spans = m.get("spans", {})
     return m["test_only"] + m["reference_only"] + m["over_tolerance"] \
         - spans.get("thin", 0) - spans.get("borderline", 0)
+
+
+def none_text(row):
+    n = (row.get("mask") or {}).get("against_none")
+    return "%d + %d, %d > tol." % (n["test_only"], n["reference_only"], n["over_tolerance"]) \
+        if n else "—"
 
 
 def thin_text(row):
@@ -166,6 +172,11 @@ def targets(report):
         none, octree = row_of(result, "kerf none"), row_of(result, "kerf octree")
         if not result:
             continue
+        if none and octree and (octree.get("mask") or {}).get("against_none"):
+            n = octree["mask"]["against_none"]
+            off = n["test_only"] + n["reference_only"] + n["over_tolerance"]
+            lines.append("- %s, octree against none: %d pixels differ (hit mask or depth beyond "
+                         "tolerance; target 0) — %s" % (scene, off, verdict(off == 0)))
         if none and octree:
             evals = per_ray(none["median"], "interval evaluations") / \
                 per_ray(octree["median"], "interval evaluations")
@@ -215,7 +226,9 @@ def markdown(report):
         "*thin spans*: of the disagreeing pixels (hit/miss or beyond tolerance), those where "
         "the reference's span is thinner than this render's tolerance × distance + those "
         "thinner than twice that (`bench/thin_spans.py`): kerf drops spans thinner than "
-        "their two boundaries' errors by design; the targets count only the rest. "
+        "their two boundaries' errors by design; the targets count only the rest. *vs `--accel "
+        "none`*: the same comparison against the `none` configuration's depth (hit/miss both "
+        "ways, depths beyond this render's tolerance). "
         "*hit mask*: pixels this render hits "
         "and the reference misses + the reverse (depth AOV, spp 1: the pixel-centre ray); "
         "*max rel. depth diff*: over the pixels both hit, with how many exceed this render's "
