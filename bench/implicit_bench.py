@@ -209,13 +209,26 @@ def add_against_none(result, out, tool):
         return False
     for row in result["rows"]:
         mask = row.get("mask")
-        if not mask or row["label"] == "kerf none" or "against_none" in mask:
+        if not mask or row["label"] == "kerf none" or "spans" in mask.get("against_none", {}):
             continue
         depth = os.path.join(out, "%s.%s.exr" % (name, slug(row["label"])))
         command = [tool, "depth", depth, none, "--tolerance", repr(mask["tolerance"]),
                    "--list", os.path.join(out, "%s.%s.vsnone.txt" % (name, slug(row["label"])))]
-        mask["against_none"] = json.loads(subprocess.run(command, check=True, capture_output=True,
-                                                         text=True).stdout)
+        against = json.loads(subprocess.run(command, check=True, capture_output=True,
+                                            text=True).stdout)
+        if name in thin_spans.FIELDS:
+            # The surface one sees and the other does not is the nearer one: its span's
+            # thickness tells whether dropping it is within the tolerance's rule.
+            nearer = command[-1].replace(".txt", ".nearer.txt")
+            with open(command[-1], encoding="utf-8") as src, \
+                    open(nearer, "w", encoding="utf-8") as dst:
+                for line in src:
+                    i, j, a, b = line.split()
+                    dst.write("%s %s %s %r\n" % (i, j, a, min(float(a), float(b))))
+            width, height = result["size"] or (800, 600)  # cup's own size
+            against["spans"] = thin_spans.classify(name, nearer, width, height,
+                                                   mask["tolerance"])
+        mask["against_none"] = against
         added = True
     return added
 
