@@ -159,18 +159,20 @@ def markdown(report):
     return "\n".join(parts + ["", END]) + "\n"
 
 
-def update_document(path, generated):
-    """Replaces the generated part of the document, or creates a minimal one."""
+def update_document(path, generated, begin=BEGIN, end=END):
+    """Replaces the generated part between the begin and end markers, or appends it
+    (bench/run_bench.sh and bench/run_implicit_bench.sh each own one part, with their own
+    markers)."""
     if os.path.exists(path):
         with open(path, encoding="utf-8") as f:
             text = f.read()
     else:
-        text = "# Benchmarks\n\n%s\n%s\n" % (BEGIN, END)
-    start, end = text.find(BEGIN), text.find(END)
-    if start < 0 or end < start:
+        text = "# Benchmarks\n\n%s\n%s\n" % (begin, end)
+    first, last = text.find(begin), text.find(end)
+    if first < 0 or last < first:
         text = text.rstrip("\n") + "\n\n" + generated
     else:
-        text = text[:start] + generated.rstrip("\n") + text[end + len(END):]
+        text = text[:first] + generated.rstrip("\n") + text[last + len(end):]
     os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     with open(path, "w", encoding="utf-8") as f:
         f.write(text)
