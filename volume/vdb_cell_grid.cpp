@@ -134,20 +134,26 @@ bool CellGrid::walk(const Ray& ray, double tmin, double tmax, SegmentVisitor vis
     }
     // Where the ray leaves the block of `size` cells at `block` (its far planes), and across
     // which axis (−1: not before tmax).
+    // Where the ray crosses the far plane of coordinate c (a block of `size` from c) on axis
+    // a: +inf where it never does.
+    auto planeExit = [&](int a, int32_t c, int32_t size) {
+        const double d = ray.dir[a];
+        double plane;
+        if (d > 0.0)
+            plane = f.origin[a] + double(c + size) * f.h;
+        else if (d < 0.0)
+            plane = f.origin[a] + double(c) * f.h;
+        else
+            return kInf;
+        return divide[a] ? (plane - ray.origin[a]) / d : (plane - ray.origin[a]) * inv[a];
+    };
+    // Where the ray leaves the block of `size` cells at `block`, and across which axis (−1:
+    // not before tmax).
     auto exitOf = [&](const openvdb::Coord& block, int32_t size, double t, int& axis) {
         double tExit = tmax;
         axis = -1;
         for (int a = 0; a < 3; ++a) {
-            const double d = ray.dir[a];
-            double plane;
-            if (d > 0.0)
-                plane = f.origin[a] + double(block[a] + size) * f.h;
-            else if (d < 0.0)
-                plane = f.origin[a] + double(block[a]) * f.h;
-            else
-                continue;
-            const double te =
-                divide[a] ? (plane - ray.origin[a]) / d : (plane - ray.origin[a]) * inv[a];
+            const double te = planeExit(a, block[a], size);
             if (te < tExit) tExit = te, axis = a;
         }
         return std::max(tExit, t);
@@ -164,16 +170,25 @@ bool CellGrid::walk(const Ray& ray, double tmin, double tmax, SegmentVisitor vis
             // the ray leaves it. A step to a neighbouring cell changes one coordinate only.
             const BrickContent& b = mImpl->content(value);
             const openvdb::Coord brick(ijk[0] & ~7, ijk[1] & ~7, ijk[2] & ~7);
+            // Each cell's exit planes, computed from the planes themselves; a step changes
+            // one coordinate, so only that axis's exit is computed anew.
+            double exits[3];
+            for (int a = 0; a < 3; ++a) exits[a] = planeExit(a, ijk[a], 1);
             while (step++ < limit) {
                 ++steps;
                 const Node* node = b.nodeAt(BrickContent::index(ijk[0] & 7, ijk[1] & 7, ijk[2] & 7));
-                const double tExit = exitOf(ijk, 1, t, axis);
+                double tExit = tmax;
+                axis = -1;
+                for (int a = 0; a < 3; ++a)
+                    if (exits[a] < tExit) tExit = exits[a], axis = a;
+                tExit = std::max(tExit, t);
                 if (!visit(context, {t, tExit, node})) return true;
                 if (axis < 0) return true;  // tmax reached inside this cell
                 t = tExit;
                 ijk[axis] += ray.dir[axis] > 0.0 ? 1 : -1;
                 if (ijk[axis] < 0 || ijk[axis] >= f.n) return true;  // left the cube
                 if ((ijk[axis] & ~7) != brick[axis]) break;          // left the brick
+                exits[axis] = planeExit(axis, ijk[axis], 1);
             }
             continue;
         }
