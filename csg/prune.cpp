@@ -166,4 +166,82 @@ Pruned pruned(const NodePtr& node, const Bounds3& box) {
     return partial(node);
 }
 
+namespace {
+
+bool decidesChoices(const Tape& tape) {
+    for (const TapeInstr& in : tape.instrs())
+        if (in.op == Op::Min || in.op == Op::Max || in.op == Op::Abs) return true;
+    return false;
+}
+
+/// prunedImplicit over many boxes for a tape with nothing to simplify: the same overlap with
+/// the bound, the same enclosure (evaluated four boxes at a time), the same states.
+void prunedImplicitMany(const NodePtr& node, const Bounds3* boxes, int count, Pruned* out) {
+    const ImplicitParams p = std::get<ImplicitParams>(node->params());
+    Interval x[kPrunedManyMax], y[kPrunedManyMax], z[kPrunedManyMax], f[kPrunedManyMax];
+    bool within[kPrunedManyMax];
+    int lanes[kPrunedManyMax];
+    int n = 0;
+    for (int k = 0; k < count; ++k) {
+        const Bounds3 overlap = Bounds3::overlap(boxes[k], p.bound);
+        if (overlap.empty()) {
+            out[k] = empty();
+            continue;
+        }
+        const IntervalVec3 region = asIntervals(overlap);
+        x[n] = region.x, y[n] = region.y, z[n] = region.z;
+        within[n] = overlap.lo == boxes[k].lo && overlap.hi == boxes[k].hi;
+        lanes[n++] = k;
+    }
+    for (int i = 0; i < n; ++i) f[i] = p.tape->evalInterval(x[i], y[i], z[i]);
+    for (int i = 0; i < n; ++i) {
+        const Classification c = f[i].classify();
+        out[lanes[i]] = c == Classification::Empty                  ? empty()
+                        : c == Classification::Filled && within[i] ? full()
+                                                                    : partial(node);
+    }
+}
+
+}  // namespace
+
+void prunedMany(const NodePtr& node, const Bounds3* boxes, int count, Pruned* out) {
+    const NodeKind kind = node->kind();
+    const bool wrapper = kind == NodeKind::Transform || kind == NodeKind::Material;
+    const bool batchable =
+        wrapper || (kind == NodeKind::Implicit &&
+                    !decidesChoices(*std::get<ImplicitParams>(node->params()).tape));
+    if (!batchable || count > kPrunedManyMax) {
+        for (int k = 0; k < count; ++k) out[k] = pruned(node, boxes[k]);
+        return;
+    }
+    // As pruned(): a box the node's bounds miss is empty.
+    Bounds3 inner[kPrunedManyMax];
+    Pruned innerOut[kPrunedManyMax];
+    int lanes[kPrunedManyMax];
+    int n = 0;
+    for (int k = 0; k < count; ++k) {
+        if (Bounds3::overlap(node->bounds(), boxes[k]).empty()) {
+            out[k] = empty();
+            continue;
+        }
+        inner[n] = boxes[k];
+        lanes[n++] = k;
+    }
+    if (kind == NodeKind::Implicit) {
+        prunedImplicitMany(node, inner, n, innerOut);
+        for (int i = 0; i < n; ++i) out[lanes[i]] = innerOut[i];
+        return;
+    }
+    const NodePtr& child = node->children()[0];
+    if (kind == NodeKind::Transform) {
+        const Affine& localFromWorld = std::get<TransformParams>(node->params()).localFromWorld;
+        for (int i = 0; i < n; ++i) inner[i] = localBox(localFromWorld, inner[i]);
+    }
+    prunedMany(child, inner, n, innerOut);
+    for (int i = 0; i < n; ++i) {
+        const Pruned& r = innerOut[i];
+        out[lanes[i]] = r.state != PruneState::Partial ? r : partial(rebuilt(node, {r.node}));
+    }
+}
+
 }  // namespace kerf

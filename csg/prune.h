@@ -43,4 +43,11 @@ struct Pruned {
 /// A Boolean left with one child becomes that child. Unchanged subtrees are shared.
 Pruned pruned(const NodePtr& node, const Bounds3& box);
 
+/// pruned(node, boxes[k]) for every k < count (at most kPrunedManyMax), with the same results.
+/// For the octree's common case, materials and transforms over one implicit whose tape has no
+/// min, max or abs to decide, the boxes are evaluated together (four at a time by
+/// Tape::evalInterval4); anything else box by box.
+constexpr int kPrunedManyMax = 8;
+void prunedMany(const NodePtr& node, const Bounds3* boxes, int count, Pruned* out);
+
 }  // namespace kerf

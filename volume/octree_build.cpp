@@ -24,20 +24,33 @@ CellCoord childCorner(const CellCoord& c, int32_t half, int i) {
             c[2] + ((i & 4) ? half : 0)};
 }
 
-/// Classifies one cell and, while it is larger than `stopSize` and the surface may cross it,
-/// its children (depth first). Cells of stopSize the surface may cross go to `reached`.
+/// Continues from a cell whose pruning `r` is known: while it is larger than `stopSize` and the
+/// surface may cross it, its 8 children are pruned together (prunedMany) and classified in
+/// turn (depth first). Cells of stopSize the surface may cross go to `reached`.
+template <class Reached, class Full>
+void classifyFrom(const GridFrame& frame, const CellCoord& corner, int32_t size, const Pruned& r,
+                  int32_t stopSize, uint64_t& classified, Reached&& reached, Full&& full) {
+    if (r.state == PruneState::Empty) return;
+    if (r.state == PruneState::Full) return full(corner, size);
+    if (size == stopSize) return reached(corner, r.node);
+    const int32_t half = size / 2;
+    Bounds3 boxes[8];
+    Pruned kids[8];
+    for (int i = 0; i < 8; ++i) boxes[i] = frame.cellBox(childCorner(corner, half, i), half);
+    prunedMany(r.node, boxes, 8, kids);
+    classified += 8;
+    for (int i = 0; i < 8; ++i)
+        classifyFrom(frame, childCorner(corner, half, i), half, kids[i], stopSize, classified,
+                     reached, full);
+}
+
+/// Classifies one cell (pruning its parent's tree over it) and what lies below it.
 template <class Reached, class Full>
 void classify(const GridFrame& frame, const Pending& cell, int32_t stopSize, uint64_t& classified,
               Reached&& reached, Full&& full) {
     const Pruned r = pruned(cell.node, frame.cellBox(cell.corner, cell.size));
     ++classified;
-    if (r.state == PruneState::Empty) return;
-    if (r.state == PruneState::Full) return full(cell.corner, cell.size);
-    if (cell.size == stopSize) return reached(cell.corner, r.node);
-    const int32_t half = cell.size / 2;
-    for (int i = 0; i < 8; ++i)
-        classify(frame, {childCorner(cell.corner, half, i), half, r.node}, stopSize, classified,
-                 reached, full);
+    classifyFrom(frame, cell.corner, cell.size, r, stopSize, classified, reached, full);
 }
 
 }  // namespace
@@ -63,14 +76,13 @@ CoarseCells classifyCoarse(const NodePtr& object, const GridFrame& frame) {
             out.bricks.push_back({t.corner, t.node});
             return;
         }
-        // The task's own cell was classified above; its children from here.
-        const int32_t half = t.size / 2;
-        for (int k = 0; k < 8; ++k)
-            classify(
-                frame, {childCorner(t.corner, half, k), half, t.node}, kBrickCells,
-                out.classified,
-                [&](const CellCoord& c, const NodePtr& n) { out.bricks.push_back({c, n}); },
-                [&](const CellCoord& c, int32_t size) { out.full.push_back({c, size}); });
+        // The task's own cell was classified above (the surface may cross it); its children
+        // from here.
+        classifyFrom(
+            frame, t.corner, t.size, Pruned{PruneState::Partial, t.node}, kBrickCells,
+            out.classified,
+            [&](const CellCoord& c, const NodePtr& n) { out.bricks.push_back({c, n}); },
+            [&](const CellCoord& c, int32_t size) { out.full.push_back({c, size}); });
     });
     for (Part& p : parts) {
         result.classified += p.cells.classified;
@@ -88,11 +100,10 @@ CoarseCells classifyCoarse(const NodePtr& object, const GridFrame& frame) {
 void classifyBrick(const GridFrame& frame, const CellCoord& corner, const NodePtr& node,
                    BrickContent& out) {
     std::unordered_map<const Node*, uint16_t> slot;  // 1 + index in out.nodes
-    const int32_t half = kBrickCells / 2;
     auto local = [&](const CellCoord& c, int a) { return c[a] - corner[a]; };
-    for (int k = 0; k < 8; ++k)
-        classify(
-            frame, {childCorner(corner, half, k), half, node}, 1, out.classified,
+    // The brick itself was classified with the coarse levels (the surface may cross it).
+    classifyFrom(
+            frame, corner, kBrickCells, Pruned{PruneState::Partial, node}, 1, out.classified,
             [&](const CellCoord& c, const NodePtr& n) {
                 auto [it, added] = slot.emplace(n.get(), uint16_t(out.nodes.size() + 1));
                 if (added) out.nodes.push_back(n);

@@ -257,3 +257,54 @@ TEST_CASE("Node: the open tree gives kinds, children, parameters and rebuilds") 
     CHECK(swapped->kind() == NodeKind::Difference);
     CHECK(booleanOp(swapped->kind()) == BoolOp::Difference);
 }
+
+TEST_CASE("prunedMany equals pruned box by box") {
+    // The octree classifies a cell's 8 children together; each result must be pruned()'s:
+    // the same state and, where partial, the same node (shared where nothing was dropped).
+    ExprGraph g;
+    const ExprId k = g.constant(6.283185307179586);
+    auto sc = [&](ExprId a, ExprId b) {
+        return g.binary(Op::Mul, g.unary(Op::Sin, g.binary(Op::Mul, k, a)),
+                        g.unary(Op::Cos, g.binary(Op::Mul, k, b)));
+    };
+    const ExprId f = g.binary(Op::Add, g.binary(Op::Add, sc(g.x(), g.y()), sc(g.y(), g.z())),
+                              g.binary(Op::Add, sc(g.z(), g.x()), g.constant(0.3)));
+    const NodePtr gyroid = makeImplicit(Tape::compile(g, f), {Vec3(-1.0), Vec3(1.2)});
+    const NodePtr withMin = makeImplicit(
+        Tape::compile(g, g.binary(Op::Min, f, g.binary(Op::Sub, g.x(), g.constant(0.5)))),
+        {Vec3(-1.0), Vec3(1.0)});
+    const Affine map = Affine::translate(Vec3(0.3, -0.2, 0.1))
+                           .after(Affine::rotateDegrees(Vec3(10.0, 25.0, -5.0)))
+                           .after(Affine::scale(Vec3(0.9)));
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-1.6, 1.6), w(0.001, 0.6);
+    for (const NodePtr& node : {gyroid, makeMaterial(makeTransform(gyroid, map), 2), withMin,
+                                makeTransform(makeBoolean(BoolOp::Union, {gyroid, withMin}), map)}) {
+        int states[3] = {0, 0, 0};
+        for (int trial = 0; trial < 400; ++trial) {
+            Bounds3 boxes[kPrunedManyMax];
+            const int count = 1 + trial % kPrunedManyMax;
+            for (int b = 0; b < count; ++b) {
+                const Vec3 lo(u(rng), u(rng), u(rng));
+                boxes[b] = {lo, lo + Vec3(w(rng), w(rng), w(rng))};
+            }
+            Pruned many[kPrunedManyMax];
+            prunedMany(node, boxes, count, many);
+            for (int b = 0; b < count; ++b) {
+                const Pruned one = pruned(node, boxes[b]);
+                INFO("trial " << trial << " box " << b);
+                REQUIRE(many[b].state == one.state);
+                ++states[int(one.state)];
+                if (one.state == PruneState::Partial && one.node == node) CHECK(many[b].node == node);
+                if (one.state == PruneState::Partial && one.node != node) {
+                    // Rebuilt nodes are new objects: compare what they compute.
+                    for (const Vec3& p : {boxes[b].lo, boxes[b].center(), boxes[b].hi})
+                        CHECK(many[b].node->value(p) == one.node->value(p));
+                }
+            }
+        }
+        INFO("empty " << states[0] << ", full " << states[1] << ", partial " << states[2]);
+        CHECK(states[0] > 0);
+        CHECK(states[2] > 0);
+    }
+}
