@@ -234,7 +234,7 @@ void prunedMany(const NodePtr& node, const Bounds3* boxes, int count, Pruned* ou
     }
     const NodePtr& child = node->children()[0];
     if (kind == NodeKind::Transform) {
-        const Affine& localFromWorld = std::get<TransformParams>(node->params()).localFromWorld;
+        const Affine localFromWorld = std::get<TransformParams>(node->params()).localFromWorld;
         for (int i = 0; i < n; ++i) inner[i] = localBox(localFromWorld, inner[i]);
     }
     prunedMany(child, inner, n, innerOut);
