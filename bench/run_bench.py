@@ -22,7 +22,7 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import bench_report  # noqa: E402 (after the line above on purpose)
 
 SCENES = ["cup", "box_minus_spheres_10", "box_minus_spheres_100", "box_minus_spheres_1000",
-          "box_minus_spheres_5000", "tori"]
+          "box_minus_spheres_5000", "tori", "torus1"]
 
 
 def run_timed(command, log_path, env=None):
