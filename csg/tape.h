@@ -39,6 +39,22 @@ public:
     long double evalExtended(const glm::tvec3<long double>& p) const;
     /// An interval holding f over the box.
     Interval evalInterval(const Interval& x, const Interval& y, const Interval& z) const;
+    /// Which implementation evalInterval4 runs (tests and benchmarks name one; Auto is the
+    /// rule below).
+    enum class Lanes4 { Auto, Scalar, Avx2 };
+    /// f over four boxes at once: out[k] holds f over x[k] × y[k] × z[k], and equals
+    /// evalInterval(x[k], y[k], z[k]) bit for bit (lo, hi and maybeNan), whichever path runs
+    /// (csg/tape_eval_interval4.cpp). The slots are kept as structures of arrays, four lanes per
+    /// instruction. Auto runs the AVX2 path (csg/tape_eval_interval4_avx2.cpp) when the CPU has
+    /// AVX2 and the environment variable KERF_SIMD is not "scalar" (both read once); the scalar
+    /// path, a loop over the lanes with evalInterval's kernels, is the reference. The AVX2 path
+    /// vectorises const, x, y, z, +, −, ×, negation, square, sin, cos, min, max and abs; a tape
+    /// with any other op runs the scalar path for all four lanes. Avx2 on a CPU without AVX2
+    /// runs the scalar path.
+    void evalInterval4(const Interval x[4], const Interval y[4], const Interval z[4],
+                       Interval out[4], Lanes4 lanes = Lanes4::Auto) const;
+    /// Whether this CPU can run evalInterval4's AVX2 path.
+    static bool hasAvx2();
     /// f and its gradient at a point (forward-mode differentiation).
     double evalGradient(const Vec3& p, Vec3& gradient) const;
     /// f at ray.at(t) (the same bits as eval) and df/dt there: forward mode with one slope per
