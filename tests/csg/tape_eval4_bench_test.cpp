@@ -83,7 +83,7 @@ size_t mismatches(const std::vector<Interval>& a, const std::vector<Interval>& b
 
 }  // namespace
 
-TEST_CASE("Tape::evalInterval4: gyroid over octree children, timings", "[.bench]") {
+TEST_CASE("bench: Tape::evalInterval4 on the gyroid over octree children", "[.bench]") {
     const char* boxesEnv = std::getenv("KERF_BENCH_BOXES");
     const size_t count = (boxesEnv ? std::stoul(boxesEnv) : 1000000) / 4 * 4;
     const char* only = std::getenv("KERF_BENCH_ONLY");
