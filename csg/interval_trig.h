@@ -108,8 +108,10 @@ inline void sinCosFast(const Interval& a, Interval& s, Interval& c) {
 /// sinCosFast when it applies (finite ends within ±kTrigFastLimit, width below 2π, where
 /// sinCos would not answer [−1, 1] anyway); false otherwise, for the caller's libm path.
 inline bool trySinCosFast(const Interval& a, Interval& s, Interval& c) {
-    // NaN or infinite ends fail every comparison below.
-    if (!(a.lo >= -kTrigFastLimit && a.hi <= kTrigFastLimit && a.hi - a.lo < 6.28)) return false;
+    // NaN or infinite ends fail every comparison below; so does a reversed interval (lo > hi,
+    // outside the contract), whose width would be negative and its quadrant walk endless.
+    if (!(a.lo >= -kTrigFastLimit && a.hi <= kTrigFastLimit && a.lo <= a.hi && a.hi - a.lo < 6.28))
+        return false;
     sinCosFast(a, s, c);
     return true;
 }

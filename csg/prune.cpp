@@ -193,7 +193,9 @@ void prunedImplicitMany(const NodePtr& node, const Bounds3* boxes, int count, Pr
         within[n] = overlap.lo == boxes[k].lo && overlap.hi == boxes[k].hi;
         lanes[n++] = k;
     }
-    for (int i = 0; i < n; ++i) f[i] = p.tape->evalInterval(x[i], y[i], z[i]);
+    int i = 0;
+    for (; i + 4 <= n; i += 4) p.tape->evalInterval4(x + i, y + i, z + i, f + i);
+    for (; i < n; ++i) f[i] = p.tape->evalInterval(x[i], y[i], z[i]);
     for (int i = 0; i < n; ++i) {
         const Classification c = f[i].classify();
         out[lanes[i]] = c == Classification::Empty                  ? empty()

@@ -177,3 +177,21 @@ TEST_CASE("interval_trig: the fast path agrees with the libm path up to its wide
     }
     CHECK(failures == 0);
 }
+
+TEST_CASE("interval_trig: intervals outside the contract end (reversed or NaN ends)") {
+    // sin of [+inf, 1] once walked quadrants about 2⁶³ times: the fast path took it, and its
+    // width overflowed. Such intervals (lo > hi, or NaN ends) come only from bugs elsewhere,
+    // but must still return, and without claiming the fast path.
+    const double inf = std::numeric_limits<double>::infinity();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (const Interval& a : {Interval(inf, 1.0), Interval(2.0, 1.0), Interval(nan, 1.0),
+                              Interval(0.0, nan), Interval(1.0, -inf)}) {
+        Interval s, c;
+        INFO("[" << a.lo << ", " << a.hi << "]");
+        CHECK_FALSE(interval_trig::trySinCosFast(a, s, c));
+        // The general path returns (no value is promised for such input; a hang fails the
+        // test by its timeout).
+        s = sin(a);
+        c = cos(a);
+    }
+}
