@@ -158,7 +158,7 @@ private:
                          SpanList& out) const {
         isolatedSpans(
             problem, r.t0, r.t1, 0.0, ctx,
-            [&](double t) { return rootBoundary(t, normalAt(ray.at(t)), ctx); },
+            [&](double t) { return rootBoundary(t, surfaceNormal(ray, t, ctx), ctx); },
             [&](bool atStart) { return endBoundary(ray, r, atStart); }, out);
     }
 
@@ -168,7 +168,7 @@ private:
         FirstSurfaceTracker tracker(tmin, tmax, ctx.relTolerance);
         tracker.search(
             problem, r.t0, r.t1, 0.0, ctx,
-            [&](double t) { return rootBoundary(t, normalAt(ray.at(t)), ctx); },
+            [&](double t) { return rootBoundary(t, surfaceNormal(ray, t, ctx), ctx); },
             [&](bool atStart) { return endBoundary(ray, r, atStart); },
             [](double tNext) { return tNext; });
         return tracker.result(hit, entering);
@@ -207,6 +207,11 @@ private:
                     if (n > maxGradient) maxGradient = n;  // NaN samples are skipped
                 }
         return std::max(1.0, 1.5 * maxGradient);
+    }
+
+    /// The normal at a crossing, unless the caller needs only where crossings are.
+    Vec3 surfaceNormal(const Ray& ray, double t, const TraceContext& ctx) const {
+        return ctx.occlusionOnly ? Vec3(0.0) : normalAt(ray.at(t));
     }
 
     Vec3 normalAt(const Vec3& p) const {

@@ -73,7 +73,9 @@ double polishRoot(P& p, double a, double b, double fa, double fb, double tOffset
         if (newton > a && newton < b) {
             // Within the tolerance already: two more quadratic steps reach double precision
             // when Newton converges; stop there if it does not.
-            if (step <= ctx.relTolerance * std::fabs(t + tOffset) && ++extraSteps > 2)
+            // (A caller that needs only where the surface is stops here.)
+            if (step <= ctx.relTolerance * std::fabs(t + tOffset) &&
+                (ctx.occlusionOnly || ++extraSteps > 2))
                 return newton;
             t = newton;
             continue;
@@ -96,16 +98,16 @@ double polishRoot(P& p, double a, double b, double fa, double fb, double tOffset
 /// the search there (a caller that wants only the first crossings). The crossings reported
 /// before the stop are bit-identical to those of a full search: each sub-interval is handled
 /// alone, in the same order.
+/// f0 is p.value(tmin), which the caller has already computed.
 template <typename P, typename Sink, typename StopBefore>
-bool isolateRoots(P& p, double tmin, double tmax, double tOffset, TraceContext& ctx, Sink&& sink,
-                  StopBefore&& stopBefore) {
+bool isolateRootsFrom(P& p, double tmin, double tmax, double f0, double tOffset,
+                      TraceContext& ctx, Sink&& sink, StopBefore&& stopBefore) {
     struct Piece {
         double a, b, fa, fb;
         int depth;
     };
     Piece stack[kRootMaxDepth + 2];
     int top = 0;
-    const double f0 = p.value(tmin);
     stack[top++] = {tmin, tmax, f0, tmax == tmin ? f0 : p.value(tmax), 0};
     while (top > 0) {
         const Piece q = stack[--top];
@@ -143,6 +145,12 @@ bool isolateRoots(P& p, double tmin, double tmax, double tOffset, TraceContext& 
     return isInside(f0);
 }
 
+template <typename P, typename Sink, typename StopBefore>
+bool isolateRoots(P& p, double tmin, double tmax, double tOffset, TraceContext& ctx, Sink&& sink,
+                  StopBefore&& stopBefore) {
+    return isolateRootsFrom(p, tmin, tmax, p.value(tmin), tOffset, ctx, sink, stopBefore);
+}
+
 /// Every crossing (no early stop).
 template <typename P, typename Sink>
 bool isolateRoots(P& p, double tmin, double tmax, double tOffset, TraceContext& ctx, Sink&& sink) {
@@ -156,16 +164,20 @@ bool isolateRoots(P& p, double tmin, double tmax, double tOffset, TraceContext& 
 template <typename P, typename Surface, typename End>
 void isolatedSpans(P& p, double tmin, double tmax, double tOffset, TraceContext& ctx,
                    Surface&& surface, End&& end, SpanList& out) {
-    bool inside = isInside(p.value(tmin));
+    const double f0 = p.value(tmin);
+    bool inside = isInside(f0);
     Boundary pending = inside ? end(true) : Boundary{};
-    isolateRoots(p, tmin, tmax, tOffset, ctx, [&](double t, bool entering) {
-        const Boundary b = surface(t);
-        if (entering)
-            pending = b;
-        else
-            out.push_back({pending, b});
-        inside = entering;
-    });
+    isolateRootsFrom(
+        p, tmin, tmax, f0, tOffset, ctx,
+        [&](double t, bool entering) {
+            const Boundary b = surface(t);
+            if (entering)
+                pending = b;
+            else
+                out.push_back({pending, b});
+            inside = entering;
+        },
+        [](double) { return false; });
     if (inside) out.push_back({pending, end(false)});
     dropThinSpans(out, ctx.relTolerance);
 }
@@ -234,10 +246,11 @@ public:
     template <typename P, typename Surface, typename End, typename Horizon>
     void search(P& p, double a, double b, double offset, TraceContext& ctx, Surface&& surface,
                 End&& end, Horizon&& horizon) {
-        const bool inside = isInside(p.value(a));
+        const double f0 = p.value(a);
+        const bool inside = isInside(f0);
         start(inside, inside ? end(true) : Boundary{});
-        isolateRoots(
-            p, a, b, offset, ctx, [&](double x, bool enters) { crossing(surface(x), enters); },
+        isolateRootsFrom(
+            p, a, b, f0, offset, ctx, [&](double x, bool enters) { crossing(surface(x), enters); },
             [&](double xNext) { return settledBefore(horizon(xNext)); });
         finish(end(false));
     }

@@ -100,6 +100,7 @@ std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double
 }
 
 bool SceneGeometry::occluded(const Ray& ray, double tmin, double tmax, TraceContext& ctx) const {
+    const OcclusionScope scope(ctx);  // whether, not where exactly nor which way it faces
     bool blocked = false;
     traverse(ray, tmin, tmax, ctx, [&](int index, double) {
         if (blocked) return -kInf;  // an empty range: the walk ends without more tests

@@ -91,8 +91,27 @@ struct TraceContext {
     /// relTolerance·|t| vanish. Closed-form primitives are exact to double precision anyway.
     double relTolerance = 1e-9;
     TraceMethod method = TraceMethod::Closed;
+    /// The caller needs only where surfaces are, within the tolerance (shadow rays): root
+    /// polishing may stop there instead of at double precision, and root-found boundaries
+    /// may leave their normal unset (zero). Set for a scope by OcclusionScope.
+    bool occlusionOnly = false;
     TraceStats stats;
     SpanScratch scratch;
+};
+
+/// Sets TraceContext::occlusionOnly for a scope (restoring the caller's value).
+class OcclusionScope {
+public:
+    explicit OcclusionScope(TraceContext& ctx) : mCtx(ctx), mWas(ctx.occlusionOnly) {
+        ctx.occlusionOnly = true;
+    }
+    ~OcclusionScope() { mCtx.occlusionOnly = mWas; }
+    OcclusionScope(const OcclusionScope&) = delete;
+    OcclusionScope& operator=(const OcclusionScope&) = delete;
+
+private:
+    TraceContext& mCtx;
+    bool mWas;
 };
 
 }  // namespace kerf

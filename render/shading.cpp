@@ -186,6 +186,8 @@ Vec3 WhittedIntegrator::transmittance(const Ray& ray, double tmax, ShadingContex
         if (mb.transmit <= 0) blocked = true;
         else pass *= mb.transmit * mb.color;
     };
+    // Only the spans' extents and materials matter here, within the tolerance.
+    const OcclusionScope scope(ctx.trace);
     mGeometry.forEachObjectSpans(ray, 0.0, tmax, ctx.trace, [&](int, const SpanList& spans) {
         for (const Span& s : spans) {
             if (blocked) return false;

@@ -38,6 +38,7 @@ struct Brick {
     CellCoord corner;
     NodePtr node;
     std::once_flag once;
+    std::atomic<bool> built{false};  ///< content is complete (checked before call_once's cost)
     std::unique_ptr<BrickContent> content;  ///< made when a ray first reaches the brick
 };
 
@@ -52,6 +53,7 @@ struct CellGrid::Impl {
     /// The brick's content, classified now if no ray has reached it before.
     const BrickContent& content(int32_t index) {
         Brick& b = *bricks[size_t(index)];
+        if (b.built.load(std::memory_order_acquire)) return *b.content;
         std::call_once(b.once, [&] {
             b.content = std::make_unique<BrickContent>();
             builder(b.corner, b.node, *b.content);
@@ -59,6 +61,7 @@ struct CellGrid::Impl {
             boundaryCells.fetch_add(b.content->boundaryCells, std::memory_order_relaxed);
             classified.fetch_add(b.content->classified, std::memory_order_relaxed);
             distinctNodes.fetch_add(b.content->nodes.size(), std::memory_order_relaxed);
+            b.built.store(true, std::memory_order_release);
         });
         return *b.content;
     }
