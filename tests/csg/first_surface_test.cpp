@@ -286,3 +286,39 @@ TEST_CASE("Union::firstSurface") {
         REQUIRE(c.hits > 0);
     }
 }
+
+TEST_CASE("Implicit::firstSurface for shadow rays (occlusion only)") {
+    // Shadow rays ask only where a surface is: the crossing may be polished to the tolerance
+    // instead of double precision, and get no normal. Found or not and the side crossed must
+    // not change, and t must stay within the tolerance of the full search's.
+    const NodePtr g = makeTransform(makeMaterial(gyroid(), 1),
+                                    Affine::rotateDegrees(Vec3(15.0, -30.0, 5.0)));
+    std::mt19937_64 rng(99);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int hits = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const double tolerance = i % 2 ? 1e-3 : 1e-7;
+        const Vec3 origin = 2.5 * Vec3(2 * unit(rng) - 1, 2 * unit(rng) - 1, 2 * unit(rng) - 1);
+        const Ray ray{origin, gaussianUnit(rng)};
+        TraceContext full, shadow;
+        full.relTolerance = shadow.relTolerance = tolerance;
+        Boundary a, b;
+        bool ea = false, eb = false;
+        const bool fa = g->firstSurface(ray, 0.0, kInf, full, a, ea);
+        bool fb;
+        {
+            const OcclusionScope scope(shadow);
+            fb = g->firstSurface(ray, 0.0, kInf, shadow, b, eb);
+        }
+        CHECK_FALSE(shadow.occlusionOnly);  // the scope restored it
+        INFO("ray " << i << " tolerance " << tolerance << ": full " << fa << " t=" << a.t
+                    << ", shadow " << fb << " t=" << b.t);
+        REQUIRE(fa == fb);
+        if (!fa) continue;
+        ++hits;
+        REQUIRE(ea == eb);
+        REQUIRE(std::fabs(a.t - b.t) <= tolerance * std::fabs(a.t));
+        REQUIRE(glm::length(a.normal) > 0.0);  // the full search's normal is there
+    }
+    CHECK(hits > 300);  // the rays do meet the surface
+}
