@@ -124,8 +124,8 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
         ->type_name("closed|interval|sphere-trace");
     cmd->add_option("--accel", line.accel,
                     "Acceleration: auto (the default: an octree for objects with an implicit "
-                    "part, a BVH over objects), none (no BVH over objects, no octree), bvh, or "
-                    "octree (an octree for every bounded object)")
+                    "part at least 8 finest cells wide, a BVH over objects), none (no BVH over "
+                    "objects, no octree), bvh, or octree (an octree for every bounded object)")
         ->type_name("auto|none|bvh|octree");
     cmd->add_option("--accel-depth", line.accelDepth,
                     "The octree's finest level: 2^N cells along an object's longest side "

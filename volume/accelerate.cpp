@@ -25,7 +25,8 @@ AcceleratedObjects accelerate(const std::vector<NodePtr>& objects, Accel accel,
     out.objectBvh = accel != Accel::None;
     out.objects.reserve(objects.size());
     for (const NodePtr& o : objects) {
-        const bool octree = accel == Accel::Octree || (accel == Accel::Auto && hasImplicitLeaf(o));
+        const bool octree =
+            accel == Accel::Octree || (accel == Accel::Auto && octreePays(o, options));
         out.objects.push_back(octree ? withOctree(o, options) : o);
     }
     return out;

@@ -11,8 +11,8 @@
 namespace kerf {
 
 enum class Accel {
-    /// The default rule: an octree for every bounded object with an implicit leaf (where
-    /// interval root isolation is the cost and pruning pays), a BVH over the objects.
+    /// The default rule: an octree for every bounded object with an implicit leaf wide
+    /// enough for cells to shorten its search (octreePays), a BVH over the objects.
     Auto,
     /// Objects tested one after the other; no object BVH, no octree (Booleans keep theirs).
     None,

@@ -361,6 +361,45 @@ bool hasImplicitLeaf(const NodePtr& node) {
     return found;
 }
 
+namespace {
+
+/// The longest side of any implicit leaf's bounds, in the object's space: each leaf's own
+/// bound scaled by the largest column norm of the transforms above it (an upper bound on how
+/// much they stretch it; rotations keep it). Each (node, scale) is visited once.
+double largestImplicitExtent(const NodePtr& object) {
+    double largest = 0.0;
+    std::vector<std::pair<const Node*, double>> stack{{object.get(), 1.0}};
+    std::unordered_map<const Node*, double> seen;  // the largest scale a node was seen at
+    while (!stack.empty()) {
+        const auto [n, scale] = stack.back();
+        stack.pop_back();
+        auto [it, added] = seen.emplace(n, scale);
+        if (!added) {
+            if (scale <= it->second) continue;
+            it->second = scale;
+        }
+        double childScale = scale;
+        if (n->kind() == NodeKind::Transform) {
+            const Mat3& m = std::get<TransformParams>(n->params()).worldFromLocal.linear;
+            childScale *= std::max({glm::length(m[0]), glm::length(m[1]), glm::length(m[2])});
+        }
+        if (n->kind() == NodeKind::Implicit) {
+            const Vec3 e = n->bounds().extent();
+            largest = std::max(largest, scale * std::max({e.x, e.y, e.z}));
+        }
+        for (const NodePtr& c : n->children()) stack.push_back({c.get(), childScale});
+    }
+    return largest;
+}
+
+}  // namespace
+
+bool octreePays(const NodePtr& object, const OctreeOptions& options) {
+    const Bounds3& b = object->bounds();
+    if (b.empty() || !b.finite() || !hasImplicitLeaf(object)) return false;
+    return largestImplicitExtent(object) >= kMinImplicitCells * frameFor(b, options).h;
+}
+
 NodePtr withOctree(const NodePtr& object, const OctreeOptions& options) {
     const Bounds3& b = object->bounds();
     if (b.empty() || !b.finite()) return object;

@@ -47,8 +47,18 @@ struct OctreeStats {
     OctreeStats& operator+=(const OctreeStats& o);
 };
 
-/// Whether `node` holds an implicit leaf (the rule for the default acceleration).
+/// Whether `node` holds an implicit leaf.
 bool hasImplicitLeaf(const NodePtr& node);
+
+/// An implicit leaf narrower than this many finest cells gains nothing from the octree: its
+/// own bound box already confines its search to about as few cells (10,000 small blobs in a
+/// union, which the union's BVH finds; measured slower with the octree).
+constexpr double kMinImplicitCells = 8.0;
+
+/// The default rule (`--accel auto`): an octree for a bounded object with an implicit leaf
+/// at least kMinImplicitCells finest cells wide, where interval root isolation over long
+/// ranges is the cost and cells shorten them and prune the tree.
+bool octreePays(const NodePtr& object, const OctreeOptions& options);
 
 /// `object` (finite bounds) under an octree; the result answers spans, firstSurface and the
 /// values exactly as the object does, within the root finder's tolerance. The coarse levels

@@ -217,9 +217,34 @@ object implicit { f x^2 + y^2 * z^2 - k^2 + 0*sin(x) bound box { min <-10, -10, 
     options.width = 8;
     options.height = 6;
     options.threads = 1;
+    options.accel = Accel::Octree;  // at 8 × 6 the default rule would not build one
     const RenderResult r = render(scene, options);
     CHECK(r.stats.octree.objects == 1);
     CHECK(r.stats.octree.maxDepth <= 4);
     // And the image is the plain tree's, pixel for pixel in hit or miss.
-    requireSame(compare(scene, 8, 6, Accel::Auto, 0));
+    requireSame(compare(scene, 8, 6, Accel::Octree, 0));
+}
+
+TEST_CASE("the default rule: an octree where an implicit spans many cells, not for small blobs",
+          "[octree]") {
+    const Scene ball = compiled(kGyroidBall);
+    OctreeOptions options;
+    options.eye = ball.camera.eye;
+    options.footprintPerDistance = 2.0 * std::tan(0.5 * 35.0 * 3.14159265358979323846 / 180.0) / 600;
+    CHECK(octreePays(ball.objects[0], options));   // the gyroid ball: 130 cells wide
+    CHECK_FALSE(octreePays(ball.objects[1], options));  // the floor: unbounded, no implicit
+    // A union of small implicit blobs, each about one finest cell wide at this footprint.
+    std::string blobs = "object union {\n";
+    for (int i = 0; i < 40; ++i)
+        blobs += "  implicit { f x^2 + y^2 + z^2 - 0.0025 bound box { min <-0.05, -0.05, -0.05> "
+                 "max <0.05, 0.05, 0.05> } } translate <" +
+                 std::to_string(-3.0 + 0.15 * i) + ", " + std::to_string((i * 7) % 11 * 0.5) +
+                 ", 0>\n";
+    blobs += "};\ncamera { eye <0, 3, -12> look_at <0, 2, 0> up <0, 1, 0> fov 35 }\n";
+    const Scene small = compiled(blobs);
+    CHECK_FALSE(octreePays(small.objects[0], options));
+    // With a 20 times finer pixel footprint (a larger image) the cells are finer and the same
+    // blobs span enough of them.
+    options.footprintPerDistance /= 20.0;
+    CHECK(octreePays(small.objects[0], options));
 }
