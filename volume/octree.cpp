@@ -213,12 +213,24 @@ private:
                 slack;
             const double first = runStart - slack, last = runEnd + slack;
             const double hi = std::min(tmax, runEnd + margin);
-            double from = std::max(tmin, runStart - margin);
-            while (from < hi) {
-                if (!tree.firstSurface(*ray, from, hi, *ctx, *hit, *entering)) return false;
-                if (hit->t > last) return false;  // the next run's: it decides there
-                if (hit->t > first) return found = true;
-                from = hit->t;  // the previous run's: look on past it
+            const double lo = std::max(tmin, runStart - margin);
+            // The run's spans over it and the margins (thin spans dropped on their whole
+            // extent, as the whole tree's search drops them), then the first surface boundary
+            // within the run. Boundaries in the margins are the neighbours'. (Searching for
+            // the first crossing and restarting past one found in the margin would judge the
+            // span it opens on its far end alone, and re-find a crossing at its own start.)
+            ScratchSpans spans(ctx->scratch);
+            tree.spans(*ray, lo, hi, *ctx, *spans);
+            for (const Span& sp : *spans) {
+                if (!(sp.in.t < sp.out.t)) continue;  // a zero-width touch is not a crossing
+                for (const bool in : {true, false}) {
+                    const Boundary& b = in ? sp.in : sp.out;
+                    if (!b.isSurface() || !(b.t > first) || !(b.t > tmin)) continue;
+                    if (b.t > last || b.t > tmax) return false;  // the next run's
+                    *hit = b;
+                    *entering = in;
+                    return found = true;
+                }
             }
             return false;
         }
