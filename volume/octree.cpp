@@ -214,11 +214,16 @@ private:
             const double first = runStart - slack, last = runEnd + slack;
             const double hi = std::min(tmax, runEnd + margin);
             const double lo = std::max(tmin, runStart - margin);
-            // The run's spans over it and the margins (thin spans dropped on their whole
-            // extent, as the whole tree's search drops them), then the first surface boundary
-            // within the run. Boundaries in the margins are the neighbours'. (Searching for
-            // the first crossing and restarting past one found in the margin would judge the
-            // span it opens on its far end alone, and re-find a crossing at its own start.)
+            // The first crossing over the run and its margins (thin spans judged on their
+            // whole extent, as the whole tree's search judges them); one in the margin after
+            // the run is the next run's.
+            if (!tree.firstSurface(*ray, lo, hi, *ctx, *hit, *entering)) return false;
+            if (hit->t > last) return false;
+            if (hit->t > first) return found = true;
+            // Rarely, the first crossing lies in the margin before the run, the previous
+            // run's, which did not take it. Then the run's spans decide: the first surface
+            // boundary inside the run. (Restarting the search past that crossing would judge
+            // the span it opens on its far end alone, and can find it again at its own start.)
             ScratchSpans spans(ctx->scratch);
             tree.spans(*ray, lo, hi, *ctx, *spans);
             for (const Span& sp : *spans) {
