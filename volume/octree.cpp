@@ -135,7 +135,7 @@ public:
                       bool& entering) const override {
         double t0 = tmin, t1 = tmax;
         if (!clipRayExact(mCube, ray, t0, t1)) return false;
-        FirstSearch s{this, &ray, &ctx, tmin, tmax, slackFor(ray), &hit, &entering};
+        FirstSearch s{{&ray, &ctx, tmin, tmax, slackFor(ray)}, &hit, &entering};
         uint64_t steps = 0;
         const bool complete = mGrid->walk(ray, t0, t1, &FirstSearch::visit, &s, steps);
         ctx.stats.cellsVisited += steps;
@@ -154,7 +154,7 @@ public:
         double t0 = tmin, t1 = tmax;
         if (!clipRayExact(mCube, ray, t0, t1)) return;
         ScratchSpans runSpans(ctx.scratch);
-        SpanSearch s{this, &ray, &ctx, t0, t1, slackFor(ray), &*runSpans, &out};
+        SpanSearch s{{&ray, &ctx, t0, t1, slackFor(ray)}, &*runSpans, &out};
         uint64_t steps = 0;
         const bool complete = mGrid->walk(ray, t0, t1, &SpanSearch::visit, &s, steps);
         ctx.stats.cellsVisited += steps;
@@ -184,17 +184,31 @@ public:
     }
 
 private:
-    /// The state of one first-surface search along the walk: consecutive segments of the same
-    /// boundary cell tree form a run, searched as one range.
-    struct FirstSearch {
-        const OctreeNode* node;
+    /// What both searches along the walk share: the ray and its range, and the run being
+    /// gathered (consecutive segments of the same boundary cell tree, searched as one range).
+    struct RunWalk {
         const Ray* ray;
         TraceContext* ctx;
         double tmin, tmax, slack;
-        Boundary* hit;
-        bool* entering;
         const Node* runNode = nullptr;
         double runStart = -kInf, runEnd = -kInf;
+
+        /// The run's range widened by a margin of 4× the tolerance (plus the walk's rounding
+        /// slack) past both ends, so that a span the run's ends cut is judged thin or not on
+        /// its real extent, as the whole tree's search would judge it; within [tmin, tmax].
+        void searchRange(double& lo, double& hi) const {
+            const double margin =
+                4.0 * ctx->relTolerance * std::max(std::fabs(runStart), std::fabs(runEnd)) +
+                slack;
+            lo = std::max(tmin, runStart - margin);
+            hi = std::min(tmax, runEnd + margin);
+        }
+    };
+
+    /// The state of one first-surface search along the walk.
+    struct FirstSearch : RunWalk {
+        Boundary* hit;
+        bool* entering;
         bool found = false;
 
         double resumeFrom = -kInf;  ///< where a search of the rest would have to start
@@ -208,12 +222,9 @@ private:
             const Node& tree = *runNode;
             runNode = nullptr;
             resumeFrom = runEnd;
-            const double margin =
-                4.0 * ctx->relTolerance * std::max(std::fabs(runStart), std::fabs(runEnd)) +
-                slack;
             const double first = runStart - slack, last = runEnd + slack;
-            const double hi = std::min(tmax, runEnd + margin);
-            const double lo = std::max(tmin, runStart - margin);
+            double lo, hi;
+            searchRange(lo, hi);
             // The first crossing over the run and its margins (thin spans judged on their
             // whole extent, as the whole tree's search judges them); one in the margin after
             // the run is the next run's.
@@ -261,15 +272,9 @@ private:
     /// The state of one spans() walk: each run's spans, from its tree over the run and
     /// margins past both ends (so that thinness is judged on real extents), cut at the run's
     /// ends and joined to the previous run's where the ray stays inside across the cut.
-    struct SpanSearch {
-        const OctreeNode* node;
-        const Ray* ray;
-        TraceContext* ctx;
-        double tmin, tmax, slack;
+    struct SpanSearch : RunWalk {
         SpanList* runSpans;
         SpanList* out;
-        const Node* runNode = nullptr;
-        double runStart = 0.0, runEnd = 0.0;
         bool anyRun = false;
         /// The last output span ends at a cut (the ray was inside at the run's end); `realEnd`
         /// is where that run's tree ended it (a surface in the margin, or a clip).
@@ -287,11 +292,8 @@ private:
             if (!runNode) return;
             const Node& tree = *runNode;
             runNode = nullptr;
-            const double margin =
-                4.0 * ctx->relTolerance * std::max(std::fabs(runStart), std::fabs(runEnd)) +
-                slack;
-            const double lo = std::max(tmin, runStart - margin);
-            const double hi = std::min(tmax, runEnd + margin);
+            double lo, hi;
+            searchRange(lo, hi);
             tree.spans(*ray, lo, hi, *ctx, *runSpans);
             const bool firstRun = !anyRun;
             anyRun = true;

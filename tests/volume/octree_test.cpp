@@ -103,6 +103,18 @@ Comparison compare(const Scene& scene, int width, int height, Accel accel, int d
     Comparison m;
     SpanList a, b;
     auto close = [&](double x, double y) { return std::fabs(x - y) <= 4.0 * tolerance * std::fabs(x); };
+    // Object o's span crossings on the ray, plain against accelerated.
+    auto compareSpans = [&](size_t o, const Ray& ray, const std::string& where) {
+        scene.objects[o]->spans(ray, 0.0, kInf, ctx, a);
+        fastObjects[o]->spans(ray, 0.0, kInf, ctx, b);
+        const auto ca = crossings(a), cb = crossings(b);
+        bool equal = ca.size() == cb.size();
+        for (size_t k = 0; equal && k < ca.size(); ++k)
+            equal = close(ca[k].first, cb[k].first) && ca[k].second == cb[k].second;
+        if (!equal && m.spanMismatches++ == 0)
+            m.firstSpan = where + " of object " + std::to_string(o) + ": plain" + describe(ca) +
+                          "; octree" + describe(cb);
+    };
     for (int j = 0; j < height; ++j) {
         for (int i = 0; i < width; ++i) {
             ++m.pixels;
@@ -115,18 +127,9 @@ Comparison compare(const Scene& scene, int width, int height, Accel accel, int d
                 m.firstHit = "pixel " + std::to_string(i) + "," + std::to_string(j) + ": plain " +
                              (ha ? std::to_string(ha->t) : std::string("miss")) + ", octree " +
                              (hb ? std::to_string(hb->t) : std::string("miss"));
-            for (size_t o = 0; o < scene.objects.size(); ++o) {
-                if (fastObjects[o] == scene.objects[o]) continue;  // not accelerated
-                scene.objects[o]->spans(ray, 0.0, kInf, ctx, a);
-                fastObjects[o]->spans(ray, 0.0, kInf, ctx, b);
-                const auto ca = crossings(a), cb = crossings(b);
-                bool equal = ca.size() == cb.size();
-                for (size_t k = 0; equal && k < ca.size(); ++k)
-                    equal = close(ca[k].first, cb[k].first) && ca[k].second == cb[k].second;
-                if (!equal && m.spanMismatches++ == 0)
-                    m.firstSpan = "object " + std::to_string(o) + " pixel " + std::to_string(i) + "," + std::to_string(j) +
-                                  ": plain" + describe(ca) + "; octree" + describe(cb);
-            }
+            for (size_t o = 0; o < scene.objects.size(); ++o)
+                if (fastObjects[o] != scene.objects[o])  // accelerated
+                    compareSpans(o, ray, "pixel " + std::to_string(i) + "," + std::to_string(j));
         }
     }
     // Rays from inside the objects' bounds in every direction: refraction and shadow rays
@@ -151,16 +154,7 @@ Comparison compare(const Scene& scene, int width, int height, Accel accel, int d
             if (same && fa) same = close(ba.t, bb.t) && ea == eb;
             if (!same && m.hitMismatches++ == 0)
                 m.firstHit = "inner ray " + std::to_string(k) + " of object " + std::to_string(o);
-            scene.objects[o]->spans(ray, 0.0, kInf, ctx, a);
-            fastObjects[o]->spans(ray, 0.0, kInf, ctx, b);
-            const auto ca = crossings(a), cb = crossings(b);
-            bool equal = ca.size() == cb.size();
-            for (size_t q = 0; equal && q < ca.size(); ++q)
-                equal = close(ca[q].first, cb[q].first) && ca[q].second == cb[q].second;
-            if (!equal && m.spanMismatches++ == 0)
-                m.firstSpan = "inner ray " + std::to_string(k) + " of object " +
-                              std::to_string(o) + ": plain" + describe(ca) + "; octree" +
-                              describe(cb);
+            compareSpans(o, ray, "inner ray " + std::to_string(k));
         }
     }
     return m;
