@@ -399,7 +399,7 @@ double largestImplicitExtent(const NodePtr& object) {
         }
         double childScale = scale;
         if (n->kind() == NodeKind::Transform) {
-            const Mat3& m = std::get<TransformParams>(n->params()).worldFromLocal.linear;
+            const Mat3 m = std::get<TransformParams>(n->params()).worldFromLocal.linear;
             childScale *= std::max({glm::length(m[0]), glm::length(m[1]), glm::length(m[2])});
         }
         if (n->kind() == NodeKind::Implicit) {
