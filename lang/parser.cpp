@@ -1,10 +1,10 @@
 // The recursive-descent parser. Each parse function consumes one construct; on a syntax error
 // it reports and throws SyntaxError, which the statement loop catches before resynchronising.
 #include "lang/parser.h"
+#include "lang/token_window.h"
 
 #include <algorithm>
 #include <array>
-#include <deque>
 #include <functional>
 
 namespace kerf {
@@ -22,32 +22,6 @@ bool contains(const std::array<const char*, N>& words, const std::string& w) {
 }
 
 struct SyntaxError {};
-
-/// The tokens the parser may still look at, lexed on demand. A deque, so that references to
-/// tokens stay valid while more are lexed; the tokens before a statement are dropped.
-class TokenWindow {
-public:
-    explicit TokenWindow(std::function<Token()> source) : mSource(std::move(source)) {}
-
-    /// Token i of the file (absolute index, not dropped yet); End past the end.
-    const Token& at(size_t i) {
-        while (mBase + mTokens.size() <= i && (mTokens.empty() || mTokens.back().kind != TokenKind::End))
-            mTokens.push_back(mSource());
-        return i - mBase < mTokens.size() ? mTokens[i - mBase] : mTokens.back();
-    }
-    /// Forgets the tokens before index i.
-    void dropBefore(size_t i) {
-        while (mBase < i && mTokens.size() > 1) {
-            mTokens.pop_front();
-            ++mBase;
-        }
-    }
-
-private:
-    std::function<Token()> mSource;
-    std::deque<Token> mTokens;
-    size_t mBase = 0;  // index of mTokens.front()
-};
 
 class Parser {
 public:
