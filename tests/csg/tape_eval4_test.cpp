@@ -2,6 +2,7 @@
 // and the AVX2 path must be the same bits (lo, hi, maybeNan) as evalInterval over that lane's
 // box, on random tapes and on each vectorised op alone, over boxes of every awkward kind.
 // The AVX2 path runs only where the CPU has AVX2 (a WARN says when it does not).
+#include "util/interval_checks.h"
 #include "csg/tape.h"
 
 #include <catch2/catch.hpp>
@@ -30,17 +31,8 @@ bool isBinary(Op op) {
            op == Op::Max;
 }
 
-bool sameBits(const Interval& a, const Interval& b) {
-    return std::memcmp(&a.lo, &b.lo, sizeof(double)) == 0 &&
-           std::memcmp(&a.hi, &b.hi, sizeof(double)) == 0 && a.maybeNan == b.maybeNan;
-}
-
-std::string describe(const Interval& a) {
-    std::ostringstream s;
-    s.precision(17);
-    s << "[" << a.lo << ", " << a.hi << (a.maybeNan ? "] nan?" : "]");
-    return s.str();
-}
+using kerf::test::describe;
+using kerf::test::sameBits;
 
 /// j·π/2 moved by `ulps` steps of one ulp (the ends where the quadrant test is decided).
 double nearHalfPiMultiple(std::mt19937_64& rng, double maxMultiple) {

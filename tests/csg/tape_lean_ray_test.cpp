@@ -2,6 +2,7 @@
 // negation, square, sin, cos over constants and axes) against the general evaluator: the same
 // bits on random tapes, rays and t-intervals of every awkward kind; tapes with other ops keep
 // the general path.
+#include "util/interval_checks.h"
 #include "csg/tape.h"
 
 #include <catch2/catch.hpp>
@@ -68,17 +69,8 @@ Ray randomRay(std::mt19937_64& rng) {
     return Ray{Vec3(u(rng), u(rng), u(rng)), d};
 }
 
-bool sameBits(const Interval& a, const Interval& b) {
-    return std::memcmp(&a.lo, &b.lo, sizeof(double)) == 0 &&
-           std::memcmp(&a.hi, &b.hi, sizeof(double)) == 0 && a.maybeNan == b.maybeNan;
-}
-
-std::string describe(const Interval& a) {
-    std::ostringstream s;
-    s.precision(17);
-    s << "[" << a.lo << ", " << a.hi << (a.maybeNan ? "] nan?" : "]");
-    return s.str();
-}
+using kerf::test::describe;
+using kerf::test::sameBits;
 
 void checkSameAsReference(const std::vector<Op>& ops, uint64_t seed) {
     std::mt19937_64 rng(seed);
