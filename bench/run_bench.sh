@@ -18,22 +18,8 @@ if [[ -n "${KERF:-}" ]]; then KERF="$(absolute "$KERF")"; fi
 if [[ -n "${BENCH_BUILD:-}" ]]; then BENCH_BUILD="$(absolute "$BENCH_BUILD")"; fi
 cd "$root"
 
-for tool in povray python3 cmake; do
-    command -v "$tool" >/dev/null || { echo "run_bench.sh: '$tool' is missing (apt-get install $tool)" >&2; exit 1; }
-done
-
-if [[ -z "${KERF:-}" ]]; then
-    if [[ -x scripts/build ]]; then
-        scripts/build
-    else
-        cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-        cmake --build build --target kerf -j"$(nproc)"
-    fi
-    for candidate in build/kerf build/app/kerf; do
-        if [[ -x "$candidate" ]]; then KERF="$candidate"; break; fi
-    done
-fi
-[[ -x "${KERF:-}" ]] || { echo "run_bench.sh: no kerf executable (looked for build/kerf)" >&2; exit 1; }
+source bench/bench_setup.sh
+bench_setup run_bench.sh
 
 bench_build="${BENCH_BUILD:-$root/build/bench-reference}"
 cmake -S bench -B "$bench_build" -DCMAKE_BUILD_TYPE=Release >/dev/null
