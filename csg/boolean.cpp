@@ -50,6 +50,13 @@ public:
             mUseBvh = true;
             mBvh = Bvh(std::vector<Bounds3>(boxes.begin() + mFirstSearched, boxes.end()));
         }
+        // An intersection of a root-found operand with a closed-form one is searched inside
+        // the closed-form operand's spans only (guidedFirstSurface).
+        if (mOp == BoolOp::Intersection && mChildren.size() == 2) {
+            const bool found0 = hasRootFoundLeaf(*mChildren[0]);
+            const bool found1 = hasRootFoundLeaf(*mChildren[1]);
+            if (found0 != found1) mGuide = found0 ? 1 : 0;
+        }
     }
 
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
@@ -71,6 +78,8 @@ public:
     /// point (the ray is inside it throughout), the spans decide as for every other node.
     bool firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx, Boundary& hit,
                       bool& entering) const override {
+        if (mOp == BoolOp::Intersection && mGuide >= 0)
+            return guidedFirstSurface(ray, tmin, tmax, ctx, hit, entering);
         if (mOp != BoolOp::Union) return Node::firstSurface(ray, tmin, tmax, ctx, hit, entering);
         constexpr int kMaxSilent = 16;
         size_t silent[kMaxSilent];
@@ -144,6 +153,87 @@ public:
     }
 
 private:
+    /// Whether finding where the ray crosses `node` takes root isolation (an implicit or a
+    /// torus below it), as opposed to closed forms only.
+    static bool hasRootFoundLeaf(const Node& node) {
+        const NodeKind k = node.kind();
+        if (k == NodeKind::Implicit || k == NodeKind::Torus) return true;
+        for (const NodePtr& c : node.children())
+            if (hasRootFoundLeaf(*c)) return true;
+        return false;
+    }
+
+    /// X's state over [a, b] where it reported no crossing: 1 inside, 0 outside, −1 where its
+    /// ends disagree (a crossing its spans dropped with a span thinner than the tolerance).
+    static int stateThroughout(const Node& x, const Ray& ray, double a, double b) {
+        const bool inA = x.value(ray.at(a)) <= 0.0, inB = x.value(ray.at(b)) <= 0.0;
+        return inA != inB ? -1 : inA ? 1 : 0;
+    }
+
+    /// The first surface of G ∩ X, where G (the guide, closed form) has cheap spans and X is
+    /// searched by root isolation: X is searched only inside G's spans, and only up to its
+    /// first crossing there. In a span (a, b] of G, X's first crossing c decides: X entering
+    /// at c means X is outside on (a, c), so the intersection is entered at c; X leaving at c
+    /// means X is inside on (a, c), so the intersection is entered at a (or, where the ray
+    /// starts inside G, left at c). Without a crossing X keeps its state at a throughout.
+    /// The combined spans would drop a span or close a gap thinner than the tolerance; where
+    /// another boundary lies that close after the candidate, the spans decide instead.
+    bool guidedFirstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
+                            Boundary& hit, bool& entering) const {
+        const Node& other = *mChildren[size_t(1 - mGuide)];
+        ScratchSpans scratch(ctx.scratch);
+        SpanList& gs = *scratch;
+        if (!childSpans(size_t(mGuide), ray, nullptr, tmin, tmax, ctx, gs)) return false;
+        for (int k = 0; k < gs.size(); ++k) {
+            const Span& s = gs[k];
+            if (s.in.t > tmax) break;
+            if (!(s.in.t < s.out.t) || !(s.out.t > tmin)) continue;
+            const bool entersGuide = s.in.t > tmin && s.in.isSurface();
+            const bool leavesGuide = s.out.t <= tmax && s.out.isSurface();
+            const double a = std::max(s.in.t, tmin), b = std::min(s.out.t, tmax);
+            double t0 = a, t1 = b;
+            ++ctx.stats.boundsTests;
+            if (!clipRayExact(other.bounds(), ray, t0, t1)) continue;  // X is outside here
+            Boundary c;
+            bool xEnters = true;
+            if (other.firstSurface(ray, a, b, ctx, c, xEnters)) {
+                if (xEnters || !entersGuide) {
+                    hit = c;  // entering X inside G, or leaving X while inside both
+                    entering = xEnters;
+                } else {
+                    hit = s.in;
+                    entering = true;
+                }
+            } else if (const int state = stateThroughout(other, ray, a, std::min(b, t1));
+                       state != 1) {
+                if (state == 0) continue;  // X outside throughout the span
+                return Node::firstSurface(ray, tmin, tmax, ctx, hit, entering);
+            } else if (entersGuide) {
+                hit = s.in;
+                entering = true;
+            } else if (leavesGuide) {
+                hit = s.out;
+                entering = false;
+            } else {
+                continue;
+            }
+            // A span entered at hit ends (a gap left at hit closes) within the tolerance only
+            // if a boundary of G or X lies that close after it, or (leaving) hit lies that
+            // close to where the ray started inside.
+            const double near = 2.0 * ctx.relTolerance * std::fabs(hit.t);
+            const double guideNext = entering ? s.out.t : (k + 1 < gs.size() ? gs[k + 1].in.t : kInf);
+            Boundary d;
+            bool dEnters = true;
+            const bool crowded =
+                guideNext - hit.t <= near ||
+                (!entering && hit.t - tmin <= near) ||
+                other.firstSurface(ray, hit.t, std::min(tmax, hit.t + near), ctx, d, dEnters);
+            if (crowded) return Node::firstSurface(ray, tmin, tmax, ctx, hit, entering);
+            return true;
+        }
+        return false;
+    }
+
     void spansWith(const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
                    TraceContext& ctx, SpanList& out) const {
         switch (mOp) {
@@ -214,10 +304,14 @@ private:
 
     void intersectionSpans(const Ray& ray, const RayReciprocal* rec, double tmin, double tmax,
                            TraceContext& ctx, SpanList& out) const {
-        if (!childSpans(0, ray, rec, tmin, tmax, ctx, out)) return;
+        // A closed-form guide goes first: the root-found operand is then searched only over
+        // the guide's extent.
+        const size_t first = mGuide > 0 ? size_t(mGuide) : 0;
+        if (!childSpans(first, ray, rec, tmin, tmax, ctx, out)) return;
         ScratchSpans scratch(ctx.scratch);
         SpanList& child = *scratch;
-        for (size_t i = 1; i < mChildren.size() && !out.empty(); ++i) {
+        for (size_t k = 1; k < mChildren.size() && !out.empty(); ++k) {
+            const size_t i = k == first ? 0 : k;
             // Only where every earlier operand is inside can the result be.
             const double lo = std::max(tmin, out[0].in.t), hi = std::min(tmax, out.back().out.t);
             if (!childSpans(i, ray, rec, lo, hi, ctx, child)) {
@@ -257,6 +351,7 @@ private:
     BoolOp mOp;
     std::vector<NodePtr> mChildren;
     size_t mFirstSearched = 0;
+    int mGuide = -1;  ///< an intersection's closed-form operand that guides the search, or -1
     bool mUseBvh = false;
     Bvh mBvh;
 };

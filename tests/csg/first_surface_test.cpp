@@ -322,3 +322,51 @@ TEST_CASE("Implicit::firstSurface for shadow rays (occlusion only)") {
     }
     CHECK(hits > 300);  // the rays do meet the surface
 }
+
+TEST_CASE("Intersection::firstSurface guided by a closed-form operand") {
+    // A root-found operand (implicit, torus) intersected with a closed-form one is searched
+    // only inside the closed-form operand's spans, up to its first crossing there. Found or
+    // not and the side crossed must be what the intersection's spans give, and t within the
+    // tolerance (the root-found operand is searched over shorter ranges, so its polish may
+    // end an ulp elsewhere). Both operand orders, rays from outside and from inside, ranges
+    // cut short, and guides that cut the surface in several places.
+    const NodePtr g = gyroid();
+    const NodePtr guides[] = {
+        makeSphere(Vec3(0.0), 0.8), makeSphere(Vec3(0.3, -0.2, 0.1), 0.45),
+        makeBox(Vec3(-0.7, -0.3, -0.9), Vec3(0.6, 0.5, 0.2)),
+        makeCylinder(Vec3(0.0, -1.0, 0.0), Vec3(0.0, 1.0, 0.0), 0.6),
+        makeHalfSpace(Vec3(0.2, 1.0, -0.3), 0.1)};
+    int guided = 0;
+    uint64_t earlyEvals = 0, fullEvals = 0;
+    for (const NodePtr& guide : guides) {
+        for (bool guideFirst : {false, true}) {
+            std::vector<NodePtr> kids{makeMaterial(g, 1), makeMaterial(guide, 2)};
+            if (guideFirst) std::swap(kids[0], kids[1]);
+            const NodePtr both = makeBoolean(BoolOp::Intersection, kids);
+            const Comparison c = compareRandom(*both, Vec3(0.0), 1.0, 1500,
+                                               300 + uint64_t(guided), true);
+            INFO("guide " << guided << (guideFirst ? " first" : " second") << ": "
+                          << c.firstMismatch);
+            REQUIRE(c.mismatches == 0);
+            REQUIRE(c.hits > c.rays / 10);
+            earlyEvals += c.early.intervalEvals;
+            fullEvals += c.full.intervalEvals;
+        }
+        ++guided;
+    }
+    // Searching the implicit only inside the guide, up to its first crossing there, saves
+    // evaluations over these guides (on a small guide the checks for slivers can cost more).
+    CHECK(earlyEvals <= fullEvals * 9 / 10);
+    SECTION("a torus clipped by a half-space, and tangent rays along the clip") {
+        const NodePtr clipped = makeBoolean(
+            BoolOp::Intersection, {makeTorus(1.0, 0.3), makeHalfSpace(Vec3(1.0, 0.0, 0.0), 0.5)});
+        Comparison c = compareRandom(*clipped, Vec3(0.0), 1.3, 2000, 41, true);
+        const Vec3 z(0.0, 0.0, 1.0);
+        compareOne(*clipped, {Vec3(0.5, 0.0, -3.0), z}, 0.0, kInf, 1e-9, c, true);  // on the plane
+        compareOne(*clipped, {Vec3(1.0, 0.3, -3.0), z}, 0.0, kInf, 1e-9, c, true);  // tangent
+        compareOne(*clipped, {Vec3(1.0, 0.0, 0.0), z}, 0.0, kInf, 1e-9, c, true);   // inside
+        INFO(c.firstMismatch);
+        REQUIRE(c.mismatches == 0);
+        REQUIRE(c.hits > c.rays / 10);
+    }
+}
