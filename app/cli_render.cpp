@@ -93,6 +93,9 @@ RenderOptions renderOptions(const RenderCommandLine& line, const OutputPlan& pla
                          std::to_string(kMaxOctreeDepth) + " (got " +
                          std::to_string(line.accelDepth) + ")");
     options.accelDepth = line.accelDepth;
+    const std::optional<BeamMode> beams = parseBeamMode(line.beams);
+    if (!beams) throw UsageError("--beams must be auto, on or off (got '" + line.beams + "')");
+    options.beams = *beams;
     for (const AovRequest& aov : plan.aovs) {
         if (aov.kind == AovRequest::Kind::Depth) options.wantDepth = true;
         if (aov.kind == AovRequest::Kind::Normal) options.wantNormal = true;
@@ -130,6 +133,11 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
     cmd->add_option("--accel-depth", line.accelDepth,
                     "The octree's finest level: 2^N cells along an object's longest side "
                     "(3-10); 0, the default, derives it from the pixel footprint");
+    cmd->add_option("--beams", line.beams,
+                    "Coherent camera rays: each tile's rays start where an interval test of "
+                    "the tile's frustum proved space empty. auto (the default: on for scenes "
+                    "with an implicit part and at most 64 primitives), on, or off")
+        ->type_name("auto|on|off");
     cmd->add_option("--aov", line.aovs,
                     "Also write an output variable: depth=FILE.exr (eye-to-hit distance) or "
                     "normal=FILE.exr (world normal); may be repeated")

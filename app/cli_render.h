@@ -26,6 +26,7 @@ struct RenderCommandLine {
     std::string method = "closed";
     std::string accel = "auto";
     int accelDepth = 0;
+    std::string beams = "auto";
     std::vector<std::string> aovs;
     bool stats = false;
     bool quiet = false;

@@ -69,6 +69,12 @@ void printStats(const RunReport& report, std::ostream& out) {
                                                                       double(std::max<uint64_t>(rays, 1))));
         out << line("octree build", seconds(s.secondsAccel) + " (coarse levels; bricks during trace)");
     }
+    if (s.beamsUsed && s.beams.pixels > 0)
+        out << line("camera beams", count(s.beams.slices) + " slices classified, " +
+                                        formatDouble("%.3g per pixel", double(s.beams.slices) /
+                                                                           double(s.beams.pixels)) +
+                                        formatDouble(", mean start %.3g", s.beams.startSum /
+                                                                              double(s.beams.pixels)));
     if (rays > 0)
         out << line("interval evals / ray",
                     formatDouble("%.3g", double(s.trace.intervalEvals) / double(rays)));

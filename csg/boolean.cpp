@@ -196,6 +196,7 @@ private:
             if (!clipRayExact(other.bounds(), ray, t0, t1)) continue;  // X is outside here
             Boundary c;
             bool xEnters = true;
+            double spanEnd = kInf;  // where a span entered at hit ends, if known
             if (other.firstSurface(ray, a, b, ctx, c, xEnters)) {
                 if (xEnters || !entersGuide) {
                     hit = c;  // entering X inside G, or leaving X while inside both
@@ -203,6 +204,7 @@ private:
                 } else {
                     hit = s.in;
                     entering = true;
+                    spanEnd = c.t;
                 }
             } else if (const int state = stateThroughout(other, ray, a, std::min(b, t1));
                        state != 1) {
@@ -217,17 +219,15 @@ private:
             } else {
                 continue;
             }
-            // A span entered at hit ends (a gap left at hit closes) within the tolerance only
-            // if a boundary of G or X lies that close after it, or (leaving) hit lies that
-            // close to where the ray started inside.
+            // The combined spans drop a span, or close a gap, no wider than the tolerance. X's
+            // own spans already did so with its own crossings, so only G's boundaries and the
+            // span from G's entry to X's exit can make one here (or, leaving, the start of
+            // the range): where they lie that close, the spans decide.
             const double near = 2.0 * ctx.relTolerance * std::fabs(hit.t);
-            const double guideNext = entering ? s.out.t : (k + 1 < gs.size() ? gs[k + 1].in.t : kInf);
-            Boundary d;
-            bool dEnters = true;
-            const bool crowded =
-                guideNext - hit.t <= near ||
-                (!entering && hit.t - tmin <= near) ||
-                other.firstSurface(ray, hit.t, std::min(tmax, hit.t + near), ctx, d, dEnters);
+            const double guideNext =
+                entering ? s.out.t : (k + 1 < gs.size() ? gs[k + 1].in.t : kInf);
+            const bool crowded = guideNext - hit.t <= near || spanEnd - hit.t <= near ||
+                                 (!entering && hit.t - tmin <= near);
             if (crowded) return Node::firstSurface(ray, tmin, tmax, ctx, hit, entering);
             return true;
         }

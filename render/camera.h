@@ -21,6 +21,14 @@ public:
     Ray rayThrough(double x, double y) const;
 
     const Vec3& eye() const { return mEye; }
+    /// The angle one pixel spans near the image centre (radians, small-angle): 2·tan(fov/2)/H.
+    double pixelAngle() const { return 2.0 * mTanHalfFov / mHeight; }
+
+    /// A box holding eye + t·d for every ray d through the film rectangle [x0, x1] × [y0, y1]
+    /// (pixels, any position inside) and every t in [ta, tb] (0 ≤ ta ≤ tb < inf): the hull of
+    /// the rectangle's corner directions scaled to the nearest and farthest reach, widened
+    /// outward by a bound on the rounding of rayThrough and of the box itself.
+    Bounds3 frustumSlice(double x0, double y0, double x1, double y1, double ta, double tb) const;
 
 private:
     Vec3 mEye;

@@ -42,12 +42,14 @@ struct FrameJob {
     const PixelSampler& sampler;
     const SceneGeometry& geometry;
     const WhittedIntegrator& integrator;
+    const PrimaryBeams* beams;  ///< null when camera rays start at the eye
     RenderResult& result;
     bool wantDepth;
     bool wantNormal;
 };
 
-void renderPixel(const FrameJob& job, int i, int j, ShadingContext& ctx) {
+/// tStart: where the pixel's camera rays may start (render/primary_beams.h).
+void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContext& ctx) {
     RenderResult& out = job.result;
     const uint64_t pixel = uint64_t(j) * uint64_t(out.color.width) + uint64_t(i);
     const bool wantAov = job.wantDepth || job.wantNormal;
@@ -59,10 +61,12 @@ void renderPixel(const FrameJob& job, int i, int j, ShadingContext& ctx) {
     Vec3 sum(0.0);
     for (int s = 0; s < count; ++s) {
         if (count == 1) {
-            sum += job.integrator.traceCamera(centreRay, ctx, wantAov ? &centreHit : nullptr);
+            sum += job.integrator.traceCamera(centreRay, ctx, wantAov ? &centreHit : nullptr,
+                                              tStart);
         } else {
             const SubPixel sp = job.sampler.position(pixel, s);
-            sum += job.integrator.traceCamera(job.camera.rayThrough(i + sp.x, j + sp.y), ctx);
+            sum += job.integrator.traceCamera(job.camera.rayThrough(i + sp.x, j + sp.y), ctx,
+                                              nullptr, tStart);
         }
     }
     const Vec3 c = sum / double(count);
@@ -71,7 +75,7 @@ void renderPixel(const FrameJob& job, int i, int j, ShadingContext& ctx) {
     if (!wantAov) return;
     if (count > 1) {
         ++ctx.rays.camera;
-        centreHit = job.geometry.nearestHit(centreRay, 0.0, kInf, ctx.trace);
+        centreHit = job.geometry.nearestHit(centreRay, tStart, kInf, ctx.trace);
     }
     if (job.wantDepth)
         out.depth.at(i, j, 0) =
@@ -80,7 +84,7 @@ void renderPixel(const FrameJob& job, int i, int j, ShadingContext& ctx) {
         for (int k = 0; k < 3; ++k) out.normal.at(i, j, k) = float(centreHit->normal[k]);
 }
 
-void renderTile(const FrameJob& job, int tile, ShadingContext& ctx) {
+void renderTile(const FrameJob& job, int tile, ShadingContext& ctx, BeamStats& beamStats) {
     const int width = job.result.color.width;
     const int height = job.result.color.height;
     const int tilesAcross = (width + kTileSize - 1) / kTileSize;
@@ -88,8 +92,12 @@ void renderTile(const FrameJob& job, int tile, ShadingContext& ctx) {
     const int y0 = (tile / tilesAcross) * kTileSize;
     const int x1 = std::min(x0 + kTileSize, width);
     const int y1 = std::min(y0 + kTileSize, height);
+    double starts[kTileSize * kTileSize];
+    std::fill(starts, starts + kTileSize * kTileSize, 0.0);
+    if (job.beams) job.beams->tileStarts(x0, y0, x1, y1, starts, beamStats);
     for (int j = y0; j < y1; ++j)
-        for (int i = x0; i < x1; ++i) renderPixel(job, i, j, ctx);
+        for (int i = x0; i < x1; ++i)
+            renderPixel(job, i, j, starts[(j - y0) * (x1 - x0) + (i - x0)], ctx);
 }
 
 /// Calls the user's progress callback from the tile loop: rarely, and from one thread at a
@@ -167,13 +175,22 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     const PixelSampler sampler(spp);
     result.stats.samplesPerPixel = sampler.sampleCount();
     const WhittedIntegrator integrator(scene, geometry, scene.settings.maxDepth);
-    const FrameJob job{camera, sampler, geometry, integrator, result,
-                       options.wantDepth, options.wantNormal};
+    const PrimaryBeams beams(camera, scene.objects);
+    // Beams bound rays from the eye: a lens (issue 10) would start them elsewhere.
+    const bool useBeams =
+        beams.enabled() && scene.camera.aperture == 0.0 &&
+        (options.beams == BeamMode::On ||
+                            (options.beams == BeamMode::Auto &&
+                             beamsPay(scene.objects, octreeOptions)));
+    result.stats.beamsUsed = useBeams;
+    const FrameJob job{camera,  sampler, geometry,           integrator,        useBeams ? &beams : nullptr,
+                       result,  options.wantDepth, options.wantNormal};
     result.stats.secondsSetup = secondsSince(setupStart);
 
     const auto traceStart = Clock::now();
     const double tolerance = result.stats.tolerance;
     const TraceMethod method = options.method;
+    tbb::enumerable_thread_specific<BeamStats> beamStats;
     tbb::enumerable_thread_specific<ShadingContext> contexts([tolerance, method] {
         ShadingContext ctx;
         ctx.trace.relTolerance = tolerance;
@@ -190,8 +207,9 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
             tbb::blocked_range<int>(0, tileCount, 1),
             [&](const tbb::blocked_range<int>& range) {
                 ShadingContext& ctx = contexts.local();
+                BeamStats& beamCounts = beamStats.local();
                 for (int tile = range.begin(); tile != range.end(); ++tile) {
-                    renderTile(job, tile, ctx);
+                    renderTile(job, tile, ctx, beamCounts);
                     progress.tileDone();
                 }
             },
@@ -206,6 +224,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         result.stats.refractionRays += ctx.rays.refraction;
         result.stats.trace += ctx.trace.stats;
     }
+    for (const BeamStats& b : beamStats) result.stats.beams += b;
     result.stats.secondsTrace = secondsSince(traceStart);
     result.stats.octree = octreeStats(geometry.objects());
     return result;

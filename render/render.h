@@ -5,6 +5,7 @@
 #include "scene/scene.h"
 #include "csg/trace_context.h"
 #include "io/image.h"
+#include "render/primary_beams.h"
 #include "volume/accelerate.h"
 
 #include <functional>
@@ -20,6 +21,7 @@ struct RenderOptions {
     TraceMethod method = TraceMethod::Closed;  ///< how primitives find crossings
     Accel accel = Accel::Auto;  ///< acceleration structures (volume/accelerate.h)
     int accelDepth = 0;         ///< the octree's finest level; 0: from the pixel footprint
+    BeamMode beams = BeamMode::Auto;  ///< coherent camera rays (render/primary_beams.h)
     bool wantDepth = false;   ///< fill RenderResult::depth
     bool wantNormal = false;  ///< fill RenderResult::normal
     /// Called now and then with the fraction done (0..1); may be empty.
@@ -33,6 +35,8 @@ struct RenderStats {
     uint64_t refractionRays = 0;
     TraceStats trace;
     OctreeStats octree;       ///< what the octrees cost and hold (none: all zero)
+    bool beamsUsed = false;   ///< whether camera rays started where their beams said
+    BeamStats beams;
     double secondsSetup = 0;  ///< parse excluded: camera, acceleration structures
     double secondsAccel = 0;  ///< of secondsSetup, building the octrees
     double secondsTrace = 0;

@@ -70,15 +70,15 @@ Vec3 WhittedIntegrator::applyMist(const Vec3& c, double distance) const {
 }
 
 Vec3 WhittedIntegrator::traceCamera(const Ray& ray, ShadingContext& ctx,
-                                    std::optional<Hit>* firstHit) const {
+                                    std::optional<Hit>* firstHit, double tStart) const {
     ++ctx.rays.camera;
-    return trace(ray, ray.origin, 0, Vec3(1.0), kRayBudget, ctx, firstHit);
+    return trace(ray, ray.origin, 0, Vec3(1.0), kRayBudget, ctx, firstHit, tStart);
 }
 
 Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int depth,
                               const Vec3& weight, uint64_t budget, ShadingContext& ctx,
-                              std::optional<Hit>* firstHit) const {
-    const std::optional<Hit> hit = mGeometry.nearestHit(ray, 0.0, kInf, ctx.trace);
+                              std::optional<Hit>* firstHit, double tStart) const {
+    const std::optional<Hit> hit = mGeometry.nearestHit(ray, tStart, kInf, ctx.trace);
     if (firstHit) *firstHit = hit;
     if (!hit) return missColor();
 

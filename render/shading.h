@@ -76,16 +76,18 @@ public:
     WhittedIntegrator(const Scene& scene, const SceneGeometry& geometry, int maxDepth);
 
     /// The radiance seen along a camera ray. When firstHit is given, it receives the ray's
-    /// first hit (or nullopt on a miss), for the depth and normal outputs.
+    /// first hit (or nullopt on a miss), for the depth and normal outputs. tStart: a distance
+    /// before which the ray is known to be outside every object (render/primary_beams.h).
     Vec3 traceCamera(const Ray& ray, ShadingContext& ctx,
-                     std::optional<Hit>* firstHit = nullptr) const;
+                     std::optional<Hit>* firstHit = nullptr, double tStart = 0.0) const;
 
 private:
     /// Radiance arriving along `ray`, whose segment starts at `segmentStart` (the un-offset
     /// point the ray left, for lengths), after `depth` bounces, with path weight `weight`,
     /// allowed to spawn at most `budget` secondary rays below it.
     Vec3 trace(const Ray& ray, const Vec3& segmentStart, int depth, const Vec3& weight,
-               uint64_t budget, ShadingContext& ctx, std::optional<Hit>* firstHit) const;
+               uint64_t budget, ShadingContext& ctx, std::optional<Hit>* firstHit,
+               double tStart = 0.0) const;
     /// Direct light at p (normal n toward the viewer, unit view direction d).
     Vec3 directLight(const Material& m, const Vec3& p, const Vec3& n, const Vec3& d,
                      double errorBound, ShadingContext& ctx) const;
