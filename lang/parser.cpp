@@ -255,6 +255,8 @@ private:
     std::string foreignHint(const Token& t) {
         if (t.kind != TokenKind::Identifier) return {};
         if (peek(1).kind == TokenKind::LParen) return callSyntaxHint(t.text);
+        if (const std::string solid = foreignSolidHint(t.text); !solid.empty() && peek(1).kind == TokenKind::LBrace)
+            return solid + "; a solid is put into the scene with 'object …;'";  // POV-Ray's `plane { … }`
         return foreignStatementHint(t.text);
     }
 

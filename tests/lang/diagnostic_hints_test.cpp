@@ -230,7 +230,7 @@ TEST_CASE("hints: a named solid as the bound of an implicit") {
     requireBounds(c.scene->objects[0]->bounds(), Vec3(-1), Vec3(1));
 }
 
-TEST_CASE("hints: OpenSCAD's call syntax") {
+TEST_CASE("hints: OpenSCAD's call syntax and POV-Ray's statements") {
     CHECK(oneError("cube([1, 2, 3]);", 1, 1, "expected a statement, found 'cube'").hint ==
           "kerf has no call syntax for solids; a box is box { min <0, 0, 0> max <s, s, s> }");
     CHECK(oneError("translate([1, 0, 0]) sphere(1);", 1, 1, "expected a statement, found 'translate'").hint ==
@@ -239,6 +239,9 @@ TEST_CASE("hints: OpenSCAD's call syntax") {
           "kerf has no call syntax for solids; a sphere is sphere { center <x, y, z> radius r }");
     CHECK_THAT(oneError("object union { rotate([0, 90, 0]) box {} };", 1, 16, "expected a solid, found 'rotate'").hint,
                StartsWith("kerf has no call syntax for solids; transforms follow the solid"));
+    CHECK(oneError("plane { <0, 1, 0>, 0 }", 1, 1, "expected a statement, found 'plane'").hint ==
+          "use 'halfspace': POV-Ray's plane { n, d } is halfspace { normal n offset d }: all p with n·p <= d; "
+          "a solid is put into the scene with 'object …;'");
     CHECK(oneError("light_source { <0, 10, 0> }", 1, 1, "expected a statement, found 'light_source'").hint ==
           "a light is light point { at <x, y, z> color <r, g, b> }");
 }
