@@ -188,6 +188,14 @@ std::string namedForm(const std::string& kind, const std::vector<std::string>& v
     return "";
 }
 
+std::string positionalHint(const std::string& kind, const std::vector<std::string>& values,
+                           const std::string& flag) {
+    const std::string form = namedForm(kind, values);
+    std::string hint = form.empty() ? kind + " takes named properties" : "kerf names each property: write '" + form + "'";
+    if (const std::string note = foreignPropertyNote(flag); !flag.empty() && !note.empty()) hint += "; " + note;
+    return hint;
+}
+
 std::string callSyntaxHint(const std::string& name) {
     static const std::pair<const char*, const char*> kCalls[] = {
         {"cube", "a box is box { min <0, 0, 0> max <s, s, s> }"},

@@ -42,6 +42,11 @@ bool isForeignFlag(const std::string& property);
 /// kind with no positional form.
 std::string namedForm(const std::string& kind, const std::vector<std::string>& values);
 
+/// The hint for POV-Ray's positional values in a kerf primitive: kerf's form with them, and
+/// the note on a POV-Ray `flag` written after them (e.g. open), if any.
+std::string positionalHint(const std::string& kind, const std::vector<std::string>& values,
+                           const std::string& flag);
+
 /// The hint for OpenSCAD's call syntax `name(…)` where kerf expects a solid or a statement,
 /// or empty when `name` is none of OpenSCAD's solids, Booleans or transforms.
 std::string callSyntaxHint(const std::string& name);

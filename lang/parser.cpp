@@ -2,6 +2,7 @@
 // it reports and throws SyntaxError, which the statement loop catches before resynchronising.
 #include "lang/parser.h"
 #include "lang/diagnostic_hints.h"
+#include "lang/positional_values.h"
 #include "lang/token_window.h"
 
 #include <algorithm>
@@ -260,71 +261,6 @@ private:
         return foreignStatementHint(t.text);
     }
 
-    /// At the start of a block: the text of each of POV-Ray's comma-separated values
-    /// (`<0, 0, 0>, 1`), up to the closing brace or the first keyword after a value (`open`,
-    /// `pigment`); empty when the block starts with a property name. Nothing is consumed.
-    std::vector<std::string> positionalValues() {
-        const auto startsValue = [&](size_t i) {
-            const TokenKind k = peek(i).kind;
-            return k == TokenKind::Number || k == TokenKind::Less || k == TokenKind::Minus ||
-                   k == TokenKind::Plus || k == TokenKind::LParen || k == TokenKind::LBracket ||
-                   (k == TokenKind::Identifier && peek(i + 1).kind == TokenKind::Comma);
-        };
-        std::vector<std::string> values;
-        if (!startsValue(0)) return values;
-        int depth = 0;
-        size_t first = 0;
-        for (size_t i = 0;; ++i) {
-            const Token& t = peek(i);
-            const bool afterOperand = i > first && (peek(i - 1).kind == TokenKind::Number ||
-                                                    peek(i - 1).kind == TokenKind::Identifier ||
-                                                    peek(i - 1).kind == TokenKind::RParen ||
-                                                    peek(i - 1).kind == TokenKind::RBracket ||
-                                                    peek(i - 1).kind == TokenKind::Greater);
-            const bool ends = t.kind == TokenKind::End || t.kind == TokenKind::Semicolon ||
-                              (depth == 0 && (t.kind == TokenKind::RBrace || t.kind == TokenKind::Comma ||
-                                              (t.kind == TokenKind::Identifier && afterOperand)));
-            if (ends) {
-                if (i > first) {
-                    const Token& last = peek(i - 1);
-                    const SourcePos start = peek(first).pos;
-                    values.push_back(oneLine(mSink.textAt(start, last.pos.offset + last.length - start.offset)));
-                }
-                if (depth != 0 || t.kind != TokenKind::Comma) return values;
-                first = i + 1;
-                continue;
-            }
-            switch (t.kind) {
-                case TokenKind::LParen: case TokenKind::LBracket: case TokenKind::Less: case TokenKind::LBrace:
-                    ++depth; break;
-                case TokenKind::RParen: case TokenKind::RBracket: case TokenKind::Greater: case TokenKind::RBrace:
-                    --depth; break;
-                default: break;
-            }
-        }
-    }
-
-    /// The hint for positional values in a kerf primitive: its form with the user's values.
-    std::string positionalHint(const std::string& kind, const std::vector<std::string>& values) {
-        const std::string form = namedForm(kind, values);
-        std::string hint = form.empty() ? kind + " takes named properties"
-                                        : "kerf names each property: write '" + form + "'";
-        // The word after the values, e.g. POV-Ray's `open`.
-        size_t i = 0;
-        for (int depth = 0; !(depth == 0 && peek(i).kind == TokenKind::RBrace) && peek(i).kind != TokenKind::End &&
-                            peek(i).kind != TokenKind::Semicolon;
-             ++i) {
-            const TokenKind k = peek(i).kind;
-            depth += k == TokenKind::LBrace ? 1 : k == TokenKind::RBrace ? -1 : 0;
-            if (depth == 0 && k == TokenKind::Identifier && isForeignFlag(peek(i).text)) {
-                const std::string note = foreignPropertyNote(peek(i).text);
-                if (!note.empty()) hint += "; " + note;
-                break;
-            }
-        }
-        return hint;
-    }
-
     /// Past the balanced block that starts here (or to the end of the file).
     void skipBlock() {
         int depth = 0;
@@ -332,17 +268,6 @@ private:
             depth += check(TokenKind::LBrace) ? 1 : check(TokenKind::RBrace) ? -1 : 0;
             next();
         } while (depth > 0 && !check(TokenKind::End));
-    }
-
-    /// Runs of white space (line breaks too) as one blank, so a hint stays on one line.
-    static std::string oneLine(const std::string& text) {
-        std::string out;
-        for (const char c : text) {
-            const bool blank = c == ' ' || c == '\t' || c == '\n' || c == '\r';
-            if (!blank) out += c;
-            else if (!out.empty() && out.back() != ' ') out += ' ';
-        }
-        return out;
     }
 
     // ---- solids ----
@@ -362,7 +287,8 @@ private:
             const SourceLoc open = peek().loc;
             next();
             if (!isSolidKind(solid.name))  // else its contents (solids, POV-Ray values) read as properties
-                fail(t.loc, "unknown solid '" + solid.name + "'", unknownSolidHint(solid.name, positionalValues()));
+                fail(t.loc, "unknown solid '" + solid.name + "'",
+                     unknownSolidHint(solid.name, readPositionalValues(mTokens, mPos, mSink).values));
             if (contains(kBooleanWords, solid.name)) {
                 solid.kind = Solid::Kind::Boolean;
                 std::vector<Solid> children;
@@ -375,9 +301,9 @@ private:
                 solid.children = list(children);
             } else {
                 solid.kind = Solid::Kind::Primitive;
-                if (const std::vector<std::string> values = positionalValues(); !values.empty())
+                if (const PositionalValues p = readPositionalValues(mTokens, mPos, mSink); !p.values.empty())
                     fail(peek().loc, "expected a property name in " + solid.name + ", found " + describe(peek()),
-                         positionalHint(solid.name, values));
+                         positionalHint(solid.name, p.values, p.flag));
                 solid.properties = parseProperties(open);
             }
         } else {
