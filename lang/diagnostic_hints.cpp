@@ -2,10 +2,10 @@
 // makes about kerf must stay true (docs/language.md, "Messages for habits from other modellers").
 #include "lang/diagnostic_hints.h"
 
-#include "lang/names.h"
-
 #include <algorithm>
 #include <iterator>
+
+#include "lang/names.h"
 
 namespace kerf {
 
@@ -20,14 +20,17 @@ struct ForeignSolid {
 // POV-Ray's and OpenSCAD's solids that kerf names differently or does not have.
 const ForeignSolid kForeignSolids[] = {
     {"merge", "union", "kerf's union keeps no inner surfaces, like POV-Ray's merge"},
-    {"plane", "halfspace", "POV-Ray's plane { n, d } is halfspace { normal n offset d }: all p with n·p <= d"},
+    {"plane", "halfspace",
+     "POV-Ray's plane { n, d } is halfspace { normal n offset d }: all p with n·p <= d"},
     {"cube", "box", "write box { min <0, 0, 0> max <s, s, s> }"},
     {"cuboid", "box", "write box { min <x0, y0, z0> max <x1, y1, z1> }"},
     {"ellipsoid", "sphere", "write sphere { radius 1 } scale <a, b, c>"},
     {"spheroid", "sphere", "write sphere { radius 1 } scale <a, b, c>"},
-    {"isosurface", "implicit", "write implicit { f EXPR bound box { min … max … } }; f <= 0 is inside"},
+    {"isosurface", "implicit",
+     "write implicit { f EXPR bound box { min … max … } }; f <= 0 is inside"},
     {"superellipsoid", "implicit",
-     "write its function in an implicit { f … }, e.g. pow(abs(x), p) + pow(abs(y), p) + pow(abs(z), p) - 1"},
+     "write its function in an implicit { f … }, e.g. pow(abs(x), p) + pow(abs(y), p) + "
+     "pow(abs(z), p) - 1"},
     {"quadric", "implicit", "write the polynomial in x, y, z as implicit { f … bound box { … } }"},
     {"cubic", "implicit", "write the polynomial in x, y, z as implicit { f … bound box { … } }"},
     {"quartic", "implicit", "write the polynomial in x, y, z as implicit { f … bound box { … } }"},
@@ -79,7 +82,7 @@ std::vector<std::string> allSolidKinds() {
 
 struct PositionalForm {
     const char* kind;
-    std::vector<const char*> names;         ///< kerf's property for each POV-Ray value, in its order
+    std::vector<const char*> names;  ///< kerf's property for each POV-Ray value, in its order
     std::vector<const char*> placeholders;  ///< shown when the count does not match
 };
 
@@ -105,8 +108,10 @@ const ForeignProperty kForeignProperties[] = {
     {"contained_by", "an implicit's search box is its bound: bound box { min … max … }"},
     {"function", "an implicit's function is its property f"},
     {"threshold", "write the threshold into f: f EXPR - threshold"},
-    {"pigment", "colours are materials: material NAME { color … } and 'material NAME' after the solid"},
-    {"texture", "colours are materials: material NAME { color … } and 'material NAME' after the solid"},
+    {"pigment",
+     "colours are materials: material NAME { color … } and 'material NAME' after the solid"},
+    {"texture",
+     "colours are materials: material NAME { color … } and 'material NAME' after the solid"},
     {"finish", "surface finish is a material: material NAME { diffuse … specular … }"},
     {"interior", "glass is a material: material NAME { transmit … ior … }"},
     {"location", "the camera's position is eye"},
@@ -117,8 +122,8 @@ const ForeignProperty kForeignProperties[] = {
 }  // namespace
 
 const std::vector<std::string>& primitiveKinds() {
-    static const std::vector<std::string> kinds = {"sphere", "box", "cylinder", "cone", "torus", "halfspace",
-                                                   "implicit"};
+    static const std::vector<std::string> kinds = {"sphere", "box",       "cylinder", "cone",
+                                                   "torus",  "halfspace", "implicit"};
     return kinds;
 }
 
@@ -128,7 +133,9 @@ const std::vector<std::string>& booleanKinds() {
 }
 
 bool isSolidKind(const std::string& name) {
-    const auto has = [&](const std::vector<std::string>& v) { return std::find(v.begin(), v.end(), name) != v.end(); };
+    const auto has = [&](const std::vector<std::string>& v) {
+        return std::find(v.begin(), v.end(), name) != v.end();
+    };
     return has(primitiveKinds()) || has(booleanKinds());
 }
 
@@ -158,14 +165,18 @@ std::string foreignSolidHint(const std::string& name) {
 }
 
 bool isForeignFlag(const std::string& property) {
-    static const char* const kFlags[] = {"open", "sturm", "hollow", "inverse", "no_shadow", "no_image",
-                                         "no_reflection", "double_illuminate", "smooth"};
-    return std::any_of(std::begin(kFlags), std::end(kFlags), [&](const char* f) { return property == f; });
+    static const char* const kFlags[] = {
+        "open",      "sturm",    "hollow",        "inverse",
+        "no_shadow", "no_image", "no_reflection", "double_illuminate",
+        "smooth"};
+    return std::any_of(std::begin(kFlags), std::end(kFlags),
+                       [&](const char* f) { return property == f; });
 }
 
 std::string foreignStatementHint(const std::string& word) {
     if (word == "light_source") return "a light is light point { at <x, y, z> color <r, g, b> }";
-    if (word == "global_settings") return "image settings are render { width … height … spp … max_depth … }";
+    if (word == "global_settings")
+        return "image settings are render { width … height … spp … max_depth … }";
     if (word == "module") return "a named solid is solid NAME = …; and is placed with object NAME;";
     return "";
 }
@@ -191,8 +202,10 @@ std::string namedForm(const std::string& kind, const std::vector<std::string>& v
 std::string positionalHint(const std::string& kind, const std::vector<std::string>& values,
                            const std::string& flag) {
     const std::string form = namedForm(kind, values);
-    std::string hint = form.empty() ? kind + " takes named properties" : "kerf names each property: write '" + form + "'";
-    if (const std::string note = foreignPropertyNote(flag); !flag.empty() && !note.empty()) hint += "; " + note;
+    std::string hint = form.empty() ? kind + " takes named properties"
+                                    : "kerf names each property: write '" + form + "'";
+    if (const std::string note = foreignPropertyNote(flag); !flag.empty() && !note.empty())
+        hint += "; " + note;
     return hint;
 }
 
@@ -200,17 +213,20 @@ std::string callSyntaxHint(const std::string& name) {
     static const std::pair<const char*, const char*> kCalls[] = {
         {"cube", "a box is box { min <0, 0, 0> max <s, s, s> }"},
         {"sphere", "a sphere is sphere { center <x, y, z> radius r }"},
-        {"cylinder", "a cylinder is cylinder { from <x0, y0, z0> to <x1, y1, z1> radius r }, and one with "
-                     "two radii is cone { from … to … radius1 r1 radius2 r2 }"},
+        {"cylinder",
+         "a cylinder is cylinder { from <x0, y0, z0> to <x1, y1, z1> radius r }, and one with "
+         "two radii is cone { from … to … radius1 r1 radius2 r2 }"},
         {"union", "a Boolean lists its solids in braces: union { A B }"},
         {"difference", "a Boolean lists its solids in braces: difference { A B }"},
         {"intersection", "a Boolean lists its solids in braces: intersection { A B }"},
         {"translate", "transforms follow the solid: sphere { … } translate <x, y, z>"},
         {"rotate", "transforms follow the solid: sphere { … } rotate <x, y, z> (degrees)"},
         {"scale", "transforms follow the solid: sphere { … } scale <x, y, z>"},
-        {"mirror", "transforms follow the solid: mirror with a negative scale, e.g. scale <-1, 1, 1>"},
+        {"mirror",
+         "transforms follow the solid: mirror with a negative scale, e.g. scale <-1, 1, 1>"},
         {"multmatrix", "transforms follow the solid: sphere { … } matrix [12 numbers, row-major]"},
-        {"color", "colours are materials: material NAME { color … } and 'material NAME' after the solid"},
+        {"color",
+         "colours are materials: material NAME { color … } and 'material NAME' after the solid"},
     };
     for (const auto& [call, hint] : kCalls)
         if (name == call) return std::string("kerf has no call syntax for solids; ") + hint;
@@ -218,9 +234,12 @@ std::string callSyntaxHint(const std::string& name) {
 }
 
 std::string implicitBoundHint() {
-    return "the bound is an axis-aligned box in the implicit's own coordinates, read when the model is "
-           "compiled: the solid is the part of it where f <= 0, and the surface is searched only inside it. "
-           "A named solid is a finished solid (perhaps moved, rotated or not a box), so write the box in "
+    return "the bound is an axis-aligned box in the implicit's own coordinates, read when the "
+           "model is "
+           "compiled: the solid is the part of it where f <= 0, and the surface is searched only "
+           "inside it. "
+           "A named solid is a finished solid (perhaps moved, rotated or not a box), so write the "
+           "box in "
            "place; to share corners, put them in lets: bound box { min lo max hi }";
 }
 

@@ -13,8 +13,10 @@ std::string oneLine(const std::string& text) {
     std::string out;
     for (const char c : text) {
         const bool blank = c == ' ' || c == '\t' || c == '\n' || c == '\r';
-        if (!blank) out += c;
-        else if (!out.empty() && out.back() != ' ') out += ' ';
+        if (!blank)
+            out += c;
+        else if (!out.empty() && out.back() != ' ')
+            out += ' ';
     }
     return out;
 }
@@ -26,20 +28,31 @@ bool endsOperand(TokenKind k) {
 
 int depthChange(TokenKind k) {
     switch (k) {
-        case TokenKind::LParen: case TokenKind::LBracket: case TokenKind::Less: case TokenKind::LBrace: return 1;
-        case TokenKind::RParen: case TokenKind::RBracket: case TokenKind::Greater: case TokenKind::RBrace: return -1;
-        default: return 0;
+        case TokenKind::LParen:
+        case TokenKind::LBracket:
+        case TokenKind::Less:
+        case TokenKind::LBrace:
+            return 1;
+        case TokenKind::RParen:
+        case TokenKind::RBracket:
+        case TokenKind::Greater:
+        case TokenKind::RBrace:
+            return -1;
+        default:
+            return 0;
     }
 }
 
 }  // namespace
 
-PositionalValues readPositionalValues(TokenWindow& tokens, size_t first, const DiagnosticSink& sink) {
+PositionalValues readPositionalValues(TokenWindow& tokens, size_t first,
+                                      const DiagnosticSink& sink) {
     PositionalValues out;
     const auto kind = [&](size_t i) { return tokens.at(i).kind; };
     const TokenKind k0 = kind(first);
-    const bool startsValue = k0 == TokenKind::Number || k0 == TokenKind::Less || k0 == TokenKind::Minus ||
-                             k0 == TokenKind::Plus || k0 == TokenKind::LParen || k0 == TokenKind::LBracket ||
+    const bool startsValue = k0 == TokenKind::Number || k0 == TokenKind::Less ||
+                             k0 == TokenKind::Minus || k0 == TokenKind::Plus ||
+                             k0 == TokenKind::LParen || k0 == TokenKind::LBracket ||
                              (k0 == TokenKind::Identifier && kind(first + 1) == TokenKind::Comma);
     if (!startsValue) return out;
     int depth = 0;
@@ -47,9 +60,10 @@ PositionalValues readPositionalValues(TokenWindow& tokens, size_t first, const D
     size_t i = first;
     for (;; ++i) {
         const TokenKind k = kind(i);
-        const bool stop = k == TokenKind::End || k == TokenKind::Semicolon ||
-                          (depth == 0 && (k == TokenKind::RBrace || k == TokenKind::Comma ||
-                                          (k == TokenKind::Identifier && i > start && endsOperand(kind(i - 1)))));
+        const bool stop =
+            k == TokenKind::End || k == TokenKind::Semicolon ||
+            (depth == 0 && (k == TokenKind::RBrace || k == TokenKind::Comma ||
+                            (k == TokenKind::Identifier && i > start && endsOperand(kind(i - 1)))));
         if (!stop) {
             depth += depthChange(k);
             continue;
@@ -57,7 +71,8 @@ PositionalValues readPositionalValues(TokenWindow& tokens, size_t first, const D
         if (i > start) {
             const Token& last = tokens.at(i - 1);
             const SourcePos from = tokens.at(start).pos;
-            out.values.push_back(oneLine(sink.textAt(from, last.pos.offset + last.length - from.offset)));
+            out.values.push_back(
+                oneLine(sink.textAt(from, last.pos.offset + last.length - from.offset)));
         }
         if (k != TokenKind::Comma) break;
         start = i + 1;

@@ -4,11 +4,11 @@
 /// (lang/diagnostic_hints.h). Kept out of the parser: it only looks ahead.
 #pragma once
 
-#include "lang/diagnostic.h"
-#include "lang/token_window.h"
-
 #include <string>
 #include <vector>
+
+#include "lang/diagnostic.h"
+#include "lang/token_window.h"
 
 namespace kerf {
 
@@ -23,6 +23,7 @@ struct PositionalValues {
 /// Reads the block whose first token (after its '{') is token `first` of `tokens`: values up
 /// to the closing brace, a ';', or the first keyword after a value (`open`, `pigment`).
 /// `sink` holds the source text the values are copied from.
-PositionalValues readPositionalValues(TokenWindow& tokens, size_t first, const DiagnosticSink& sink);
+PositionalValues readPositionalValues(TokenWindow& tokens, size_t first,
+                                      const DiagnosticSink& sink);
 
 }  // namespace kerf

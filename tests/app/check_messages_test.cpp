@@ -1,11 +1,10 @@
 // `kerf check` as a user coming from another modeller sees it: bounds printed without the
 // rounding residue of transforms, and a hint for a POV-Ray habit, with caret and exit code 2.
+#include <catch2/catch.hpp>
+#include <limits>
+
 #include "csg/format.h"
 #include "kerf_runner.h"
-
-#include <catch2/catch.hpp>
-
-#include <limits>
 
 using namespace kerf::test;
 
@@ -45,16 +44,18 @@ TEST_CASE("formatDoubleAtScale: residues within 16 ulps of the scale print as 0"
 
 TEST_CASE("kerf check: bounds of rotated solids print without rounding residue") {
     // Printed before: z [-1, 2.22045e-16]. (x, y, z) -> (z, y, -x) maps [0,1]^3 to z in [-1, 0].
-    CHECK(boundsLine("object box { min <0, 0, 0> max <1, 1, 1> } rotate <0, 60, 0> rotate <0, 30, 0>;") ==
+    CHECK(boundsLine(
+              "object box { min <0, 0, 0> max <1, 1, 1> } rotate <0, 60, 0> rotate <0, 30, 0>;") ==
           "bounds:      x [0, 1]  y [0, 1]  z [-1, 0]");
     // Printed before: z [-4.94066e-324, 1]. About x by 90: the axis y in [0, 1] becomes z.
     CHECK(boundsLine("object cone { from <0, 0, 0> to <0, 1, 0> radius1 1 } rotate <90, 0, 0>;") ==
           "bounds:      x [-1, 1]  y [-1, 1]  z [0, 1]");
     // Printed before: z [-2.22045e-16, 1].
-    CHECK(boundsLine("object cylinder { from <0, 0, 0> to <0, 1, 0> radius 1 } rotate <45, 0, 0> rotate <45, 0, 0>;") ==
-          "bounds:      x [-1, 1]  y [-1, 1]  z [0, 1]");
+    CHECK(boundsLine("object cylinder { from <0, 0, 0> to <0, 1, 0> radius 1 } rotate <45, 0, 0> "
+                     "rotate <45, 0, 0>;") == "bounds:      x [-1, 1]  y [-1, 1]  z [0, 1]");
     // The same model scaled by 1e-300: the rule is relative to the bounds, not to 1.
-    CHECK(boundsLine("object box { min <0, 0, 0> max <1, 1, 1> } rotate <0, 60, 0> rotate <0, 30, 0> scale 1e-300;") ==
+    CHECK(boundsLine("object box { min <0, 0, 0> max <1, 1, 1> } rotate <0, 60, 0> rotate <0, 30, "
+                     "0> scale 1e-300;") ==
           "bounds:      x [0, 1e-300]  y [0, 1e-300]  z [-1e-300, 0]");
 }
 
