@@ -17,23 +17,28 @@ namespace kerf::app {
 
 namespace {
 
-std::string number(double v) {
+/// A coordinate of a box whose largest finite coordinate has magnitude `scale`, without the
+/// rounding residue of transforms (csg/format.h).
+std::string number(double v, double scale) {
     if (std::isinf(v)) return v < 0 ? "-unbounded" : "unbounded";
-    return formatDouble("%.6g", v);
+    return formatDoubleAtScale("%.6g", v, scale);
 }
 
 /// One axis of a box: "[lo, hi]", "unbounded" when both ends are infinite, and "unbounded"
 /// in place of an infinite end otherwise.
-std::string axisRange(double lo, double hi) {
+std::string axisRange(double lo, double hi, double scale) {
     if (std::isinf(lo) && std::isinf(hi)) return "unbounded";
-    return "[" + (std::isinf(lo) ? std::string("unbounded") : number(lo)) + ", " +
-           (std::isinf(hi) ? std::string("unbounded") : number(hi)) + "]";
+    return "[" + (std::isinf(lo) ? std::string("unbounded") : number(lo, scale)) + ", " +
+           (std::isinf(hi) ? std::string("unbounded") : number(hi, scale)) + "]";
 }
 
 std::string describeBounds(const Bounds3& b) {
     if (b.empty()) return "empty";
-    return "x " + axisRange(b.lo.x, b.hi.x) + "  y " + axisRange(b.lo.y, b.hi.y) + "  z " +
-           axisRange(b.lo.z, b.hi.z);
+    double scale = 0.0;  // the largest finite coordinate
+    for (const double v : {b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z})
+        if (std::isfinite(v)) scale = std::max(scale, std::fabs(v));
+    return "x " + axisRange(b.lo.x, b.hi.x, scale) + "  y " + axisRange(b.lo.y, b.hi.y, scale) + "  z " +
+           axisRange(b.lo.z, b.hi.z, scale);
 }
 
 }  // namespace

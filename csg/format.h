@@ -4,6 +4,7 @@
 /// (0 · −inf gives one), which reads like a negative number.
 #pragma once
 
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -16,6 +17,16 @@ inline std::string formatDouble(const char* pattern, double value) {
     char text[64];
     std::snprintf(text, sizeof text, pattern, value);
     return text;
+}
+
+/// `value` as `pattern` prints it among values of magnitude up to `scale` (e.g. the corners of
+/// one box): a value within 16 ulps of `scale` from 0 prints as "0", as does -0. Rotations and
+/// outward rounding leave such residues (-2.22045e-16 beside 1, or -4.94066e-324) where the
+/// exact value is 0; the digits %g shows are far coarser. The value itself is not changed, and
+/// the rule is relative, so a scene scaled by 1e-300 prints the same digits.
+inline std::string formatDoubleAtScale(const char* pattern, double value, double scale) {
+    if (std::fabs(value) <= 16 * DBL_EPSILON * std::fabs(scale)) value = 0.0;  // also turns -0 into 0
+    return formatDouble(pattern, value);
 }
 
 }  // namespace kerf

@@ -6,6 +6,7 @@
 #include "csg/affine_check.h"
 #include "csg/solids.h"
 #include "csg/tape.h"
+#include "lang/diagnostic_hints.h"
 #include "lang/names.h"
 
 #include <algorithm>
@@ -86,6 +87,7 @@ NodePtr Lowering::solidByName(const std::string& name, SourcePos use) {
         std::string hint = didYouMean(name, candidates);
         if (hint.empty()) hint = didYouMean(name, kPrimitiveKinds);
         if (hint.empty()) hint = didYouMean(name, kBooleanKinds);
+        if (hint.empty()) hint = foreignSolidHint(name);  // `object cube;`
         error(use, "undefined solid '" + name + "'", hint);
         return nullptr;
     }
@@ -166,10 +168,7 @@ NodePtr Lowering::lowerPrimitive(const Solid& s) {
     if (s.name == "torus") return lowerTorus(s);
     if (s.name == "halfspace") return lowerHalfSpace(s);
     if (s.name == "implicit") return lowerImplicit(s);
-    std::string hint = didYouMean(s.name, kPrimitiveKinds);
-    if (hint.empty()) hint = didYouMean(s.name, kBooleanKinds);
-    if (hint.empty()) hint = "the solids are " + joinNames(kPrimitiveKinds) + ", " + joinNames(kBooleanKinds);
-    error(s.loc, "unknown solid '" + s.name + "'", hint);
+    error(s.loc, "unknown solid '" + s.name + "'", unknownSolidHint(s.name));  // the parser reports most
     return nullptr;
 }
 
@@ -323,7 +322,10 @@ NodePtr Lowering::lowerImplicit(const Solid& s) {
     }
     std::optional<Bounds3> bound;
     if (const Property* p = b.find("bound")) {
-        if (p->expr) {
+        if (p->expr && p->expr->kind == Expr::Kind::Name && mSolids.count(p->expr->name())) {
+            error(p->expr->start, "a named solid is not allowed as the bound of an implicit: write box { min … max … } "
+                                  "in place of '" + p->expr->name() + "'", implicitBoundHint());
+        } else if (p->expr) {
             error(p->expr->start, "property 'bound' of implicit expects box { min … max … }");
         } else if (p->solid->kind != Solid::Kind::Primitive || p->solid->name != "box") {
             error(p->solid->loc, "property 'bound' of implicit expects box { min … max … }, got '" +

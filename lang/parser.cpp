@@ -1,6 +1,8 @@
 // The recursive-descent parser. Each parse function consumes one construct; on a syntax error
 // it reports and throws SyntaxError, which the statement loop catches before resynchronising.
 #include "lang/parser.h"
+#include "lang/diagnostic_hints.h"
+#include "lang/positional_values.h"
 #include "lang/token_window.h"
 
 #include <algorithm>
@@ -142,6 +144,7 @@ private:
                                "mist, background, render or include";
             if (t.kind == TokenKind::Identifier && peek(1).kind == TokenKind::LBrace)
                 hint = "to put a solid into the scene write 'object " + t.text + " { … };'";
+            if (const std::string foreign = foreignHint(t); !foreign.empty()) hint = foreign;
             fail(t.loc, "expected a statement, found " + describe(t), hint);
         }
         Statement s;
@@ -233,13 +236,38 @@ private:
             Property p;
             p.name = mArena->intern(name.text);
             p.loc = name.pos;
-            if (check(TokenKind::Identifier) && peek(1).kind == TokenKind::LBrace)
+            // A property without a value (POV-Ray's `open`), or with a block for a value
+            // (`pigment { … }`), is left to the block's check, which knows whether the name is a
+            // property at all; the block is skipped.
+            const bool noValue = check(TokenKind::RBrace) || check(TokenKind::End) || check(TokenKind::LBrace) ||
+                                 (isForeignFlag(p.name) && check(TokenKind::Identifier));
+            if (check(TokenKind::LBrace)) skipBlock();
+            if (!noValue && check(TokenKind::Identifier) && peek(1).kind == TokenKind::LBrace)
                 p.solid = store(parseSolid(false));
-            else
+            else if (!noValue)
                 p.expr = store(parseExpr());
             properties.push_back(p);
         }
         return list(properties);
+    }
+
+    // ---- habits from other modellers (lang/diagnostic_hints.h) ----
+    /// The hint for another modeller's word where a statement or a solid belongs, or empty.
+    std::string foreignHint(const Token& t) {
+        if (t.kind != TokenKind::Identifier) return {};
+        if (peek(1).kind == TokenKind::LParen) return callSyntaxHint(t.text);
+        if (const std::string solid = foreignSolidHint(t.text); !solid.empty() && peek(1).kind == TokenKind::LBrace)
+            return solid + "; a solid is put into the scene with 'object …;'";  // POV-Ray's `plane { … }`
+        return foreignStatementHint(t.text);
+    }
+
+    /// Past the balanced block that starts here (or to the end of the file).
+    void skipBlock() {
+        int depth = 0;
+        do {
+            depth += check(TokenKind::LBrace) ? 1 : check(TokenKind::RBrace) ? -1 : 0;
+            next();
+        } while (depth > 0 && !check(TokenKind::End));
     }
 
     // ---- solids ----
@@ -251,11 +279,16 @@ private:
         solid.loc = t.pos;
         if (t.kind != TokenKind::Identifier || contains(kModifierWords, t.text) ||
             (contains(kStatementWords, t.text) && peek(1).kind != TokenKind::LBrace))
-            fail(t.loc, "expected a solid, found " + describe(t));
+            fail(t.loc, "expected a solid, found " + describe(t), foreignHint(t));
         solid.name = mArena->intern(next().text);
+        if (check(TokenKind::LParen) && isSolidKind(solid.name))  // OpenSCAD's sphere(1)
+            fail(peek().loc, "expected '{' after '" + solid.name + "', found '('", callSyntaxHint(solid.name));
         if (check(TokenKind::LBrace)) {
             const SourceLoc open = peek().loc;
             next();
+            if (!isSolidKind(solid.name))  // else its contents (solids, POV-Ray values) read as properties
+                fail(t.loc, "unknown solid '" + solid.name + "'",
+                     unknownSolidHint(solid.name, readPositionalValues(mTokens, mPos, mSink).values));
             if (contains(kBooleanWords, solid.name)) {
                 solid.kind = Solid::Kind::Boolean;
                 std::vector<Solid> children;
@@ -268,6 +301,9 @@ private:
                 solid.children = list(children);
             } else {
                 solid.kind = Solid::Kind::Primitive;
+                if (const PositionalValues p = readPositionalValues(mTokens, mPos, mSink); !p.values.empty())
+                    fail(peek().loc, "expected a property name in " + solid.name + ", found " + describe(peek()),
+                         positionalHint(solid.name, p.values, p.flag));
                 solid.properties = parseProperties(open);
             }
         } else {

@@ -131,7 +131,7 @@ object sphere {} matrix [1, 0, 0, -1, 0, 1, 0, 0, 0, 0, 1, 0];
 
 TEST_CASE("parse: recovery reports several errors") {
     DiagnosticSink sink;
-    const Program p = parseText("let a = ;\nlet b = 2;\nobject sphere { radius } ;\nlet c = (1;\nlet d = 4;", sink);
+    const Program p = parseText("let a = ;\nlet b = 2;\nobject sphere { radius * } ;\nlet c = (1;\nlet d = 4;", sink);
     REQUIRE(sink.errorCount() == 3);
     CHECK(sink.diagnostics()[0].loc.line == 1);
     CHECK(sink.diagnostics()[1].loc.line == 3);
