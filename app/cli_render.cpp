@@ -96,6 +96,12 @@ RenderOptions renderOptions(const RenderCommandLine& line, const OutputPlan& pla
     const std::optional<BeamMode> beams = parseBeamMode(line.beams);
     if (!beams) throw UsageError("--beams must be auto, on or off (got '" + line.beams + "')");
     options.beams = *beams;
+    if (!line.sampler.empty()) {
+        options.sampler = parseSampler(line.sampler);
+        if (!options.sampler)
+            throw UsageError("--sampler must be regular, random, jittered or lattice (got '" +
+                             line.sampler + "')");
+    }
     for (const AovRequest& aov : plan.aovs) {
         if (aov.kind == AovRequest::Kind::Depth) options.wantDepth = true;
         if (aov.kind == AovRequest::Kind::Normal) options.wantNormal = true;
@@ -133,6 +139,10 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
     cmd->add_option("--accel-depth", line.accelDepth,
                     "The octree's finest level: 2^N cells along an object's longest side "
                     "(3-10); 0, the default, derives it from the pixel footprint");
+    cmd->add_option("--sampler", line.sampler,
+                    "How each pixel's samples are placed: regular, random, jittered (the "
+                    "default) or lattice (low discrepancy); overrides the model's render setting")
+        ->type_name("regular|random|jittered|lattice");
     cmd->add_option("--beams", line.beams,
                     "Coherent camera rays: each tile's rays start where an interval test of "
                     "the tile's frustum proved space empty. auto (the default: on for scenes "

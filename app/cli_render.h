@@ -27,6 +27,7 @@ struct RenderCommandLine {
     std::string accel = "auto";
     int accelDepth = 0;
     std::string beams = "auto";
+    std::string sampler;  ///< empty: the model's render settings
     std::vector<std::string> aovs;
     bool stats = false;
     bool quiet = false;

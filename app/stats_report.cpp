@@ -35,7 +35,7 @@ void printStats(const RunReport& report, std::ostream& out) {
     std::string samples = std::to_string(s.samplesPerPixel);
     if (s.samplesPerPixel != report.spp)
         samples += " (requested " + std::to_string(report.spp) + ")";
-    out << line("samples per pixel", samples);
+    out << line("samples per pixel", samples + ", " + samplerName(s.sampler));
     out << line("threads", std::to_string(report.threads));
     out << line("tolerance", formatDouble("%.3g (relative)", s.tolerance));
     out << line("camera rays", count(s.cameraRays));

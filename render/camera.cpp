@@ -20,6 +20,33 @@ Camera::Camera(const CameraDesc& desc, int width, int height)
     // Overflow-safe: eye and look_at may be 1e300 apart, and up may be as long.
     mRight = normalizeSafe(glm::cross(mForward, normalizeSafe(desc.up)));
     mUp = glm::cross(mRight, mForward);
+    mLensRadius = 0.5 * desc.aperture;
+    mFocusDistance =
+        desc.focusDistance > 0.0 ? desc.focusDistance : glm::length(desc.lookAt - desc.eye);
+}
+
+Ray Camera::rayThrough(double x, double y, double lensU, double lensV) const {
+    const Ray pinhole = rayThrough(x, y);
+    if (mLensRadius <= 0.0) return pinhole;
+    // Shirley and Chiu's concentric map: the unit square onto the unit disc, area-preserving
+    // and with little distortion, so stratified lens samples stay stratified.
+    const double a = 2.0 * lensU - 1.0, b = 2.0 * lensV - 1.0;
+    double r = 0.0, phi = 0.0;
+    const double quarter = 0.25 * glm::pi<double>();
+    if (a == 0.0 && b == 0.0) {
+        r = 0.0;
+    } else if (std::fabs(a) > std::fabs(b)) {
+        r = a;
+        phi = quarter * (b / a);
+    } else {
+        r = b;
+        phi = 2.0 * quarter - quarter * (a / b);
+    }
+    const Vec3 offset =
+        mLensRadius * r * (std::cos(phi) * mRight + std::sin(phi) * mUp);
+    const Vec3 focus = pinhole.origin + (mFocusDistance / glm::dot(pinhole.dir, mForward)) * pinhole.dir;
+    const Vec3 origin = mEye + offset;
+    return Ray{origin, glm::normalize(focus - origin)};
 }
 
 Ray Camera::rayThrough(double x, double y) const {

@@ -1,5 +1,5 @@
 /// @file render/camera.h
-/// @brief The pinhole camera: film positions to world rays, by exactly the formula of the
+/// @brief The camera (a pinhole, or a thin lens): film positions to world rays, by exactly the formula of the
 /// documentation (right-handed world, vertical field of view, pixel (0, 0) at the top left).
 #pragma once
 
@@ -20,6 +20,13 @@ public:
     /// d = normalize(f + (x/W·2 − 1)·tan(fov/2)·(W/H)·r + (1 − y/H·2)·tan(fov/2)·u).
     Ray rayThrough(double x, double y) const;
 
+    /// The thin lens (Shirley §13.4.3): the ray through film position (x, y) that leaves the
+    /// lens at `lens` (a point of the unit square, mapped to the aperture's disc) and passes
+    /// where the pinhole ray meets the plane of focus (perpendicular to the view direction at
+    /// the focus distance). A pinhole camera (aperture 0) gives rayThrough(x, y).
+    Ray rayThrough(double x, double y, double lensU, double lensV) const;
+    bool hasLens() const { return mLensRadius > 0.0; }
+
     const Vec3& eye() const { return mEye; }
     /// The angle one pixel spans near the image centre (radians, small-angle): 2·tan(fov/2)/H.
     double pixelAngle() const { return 2.0 * mTanHalfFov / mHeight; }
@@ -36,6 +43,8 @@ private:
     Vec3 mRight;    ///< r = normalize(f × up)
     Vec3 mUp;       ///< u = r × f
     double mTanHalfFov = 0;
+    double mLensRadius = 0;     ///< half the aperture
+    double mFocusDistance = 0;  ///< along the view direction
     double mWidth = 0;
     double mHeight = 0;
 };

@@ -55,25 +55,31 @@ void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContex
     const bool wantAov = job.wantDepth || job.wantNormal;
     const int count = job.sampler.sampleCount();
 
-    // With one sample the camera ray is the pixel-centre ray, and its hit serves the AOVs.
+    // With one sample through a pinhole the camera ray is the pixel-centre ray, and its hit
+    // serves the AOVs; otherwise they come from that ray traced once more.
     const Ray centreRay = job.camera.rayThrough(i + 0.5, j + 0.5);
+    const bool lens = job.camera.hasLens();
+    const bool centreServes = count == 1 && !lens;
     std::optional<Hit> centreHit;
     Vec3 sum(0.0);
+    ctx.sampler = &job.sampler;
+    ctx.pixel = pixel;
     for (int s = 0; s < count; ++s) {
-        if (count == 1) {
-            sum += job.integrator.traceCamera(centreRay, ctx, wantAov ? &centreHit : nullptr,
-                                              tStart);
-        } else {
-            const SubPixel sp = job.sampler.position(pixel, s);
-            sum += job.integrator.traceCamera(job.camera.rayThrough(i + sp.x, j + sp.y), ctx,
-                                              nullptr, tStart);
+        ctx.sample = s;
+        Ray ray = centreRay;
+        if (!centreServes) {
+            const SubPixel film = job.sampler.position(pixel, s);
+            const SubPixel at = lens ? job.sampler.get2D(pixel, s, sample_dim::kLens) : SubPixel{};
+            ray = job.camera.rayThrough(i + film.x, j + film.y, at.x, at.y);
         }
+        sum += job.integrator.traceCamera(ray, ctx, centreServes && wantAov ? &centreHit : nullptr,
+                                          tStart);
     }
     const Vec3 c = sum / double(count);
     for (int k = 0; k < 3; ++k) out.color.at(i, j, k) = float(c[k]);
 
     if (!wantAov) return;
-    if (count > 1) {
+    if (!centreServes) {
         ++ctx.rays.camera;
         centreHit = job.geometry.nearestHit(centreRay, tStart, kInf, ctx.trace);
     }
@@ -172,8 +178,9 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     });
     result.stats.secondsAccel = secondsSince(accelStart);
     const SceneGeometry geometry(std::move(accelerated.objects), accelerated.objectBvh);
-    const PixelSampler sampler(spp);
+    const PixelSampler sampler(spp, options.sampler.value_or(scene.settings.sampler));
     result.stats.samplesPerPixel = sampler.sampleCount();
+    result.stats.sampler = sampler.kind();
     const WhittedIntegrator integrator(scene, geometry, scene.settings.maxDepth);
     const PrimaryBeams beams(camera, scene.objects);
     // Beams bound rays from the eye: a lens (issue 10) would start them elsewhere.

@@ -9,6 +9,7 @@
 #include "volume/accelerate.h"
 
 #include <functional>
+#include <optional>
 
 namespace kerf {
 
@@ -16,6 +17,7 @@ struct RenderOptions {
     int width = 0;        ///< 0: take the scene's render settings
     int height = 0;       ///< 0: take the scene's render settings
     int spp = 0;          ///< 0: take the scene's render settings
+    std::optional<SamplerKind> sampler;  ///< unset: take the scene's render settings
     int threads = 0;      ///< 0: all hardware threads
     double tolerance = 0; ///< relative hit-distance tolerance; 0: derived from the pixel footprint
     TraceMethod method = TraceMethod::Closed;  ///< how primitives find crossings
@@ -41,7 +43,8 @@ struct RenderStats {
     double secondsAccel = 0;  ///< of secondsSetup, building the octrees
     double secondsTrace = 0;
     double tolerance = 0;  ///< the relative tolerance in force
-    int samplesPerPixel = 0;  ///< traced per pixel: the requested spp rounded up to n×n
+    int samplesPerPixel = 0;  ///< traced per pixel (the requested spp, clamped to the limit)
+    SamplerKind sampler = SamplerKind::Jittered;
 };
 
 struct RenderResult {

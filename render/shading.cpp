@@ -2,6 +2,7 @@
 /// @brief The Whitted integrator (see shading.h for the material model).
 #include "render/shading.h"
 
+#include "render/light_sample.h"
 #include "render/ray_offset.h"
 
 #include <glm/gtc/constants.hpp>
@@ -31,6 +32,9 @@ double schlick(double n1, double n2, double cosine) {
     const double m = 1.0 - cosine;
     return f0 + (1.0 - f0) * (m * m) * (m * m) * m;
 }
+
+/// The translucency dimension of a bounce: its gloss dimension with this bit set.
+constexpr uint32_t kTranslucentDim = 1u << 30;
 
 }  // namespace
 
@@ -90,7 +94,7 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
     const double err = hitErrorBound(ray, hit->t, p, hit->relError);
 
     Vec3 c = m.emit + (1.0 - m.transmit) * m.ambient * m.color;
-    c += directLight(m, p, n, d, err, ctx);
+    c += directLight(m, p, n, d, err, depth, ctx);
 
     if (depth < mMaxDepth && budget > 0) {
         const double cosIn = -glm::dot(d, n);  // ≥ 0 with the face-forward normal
@@ -118,11 +122,17 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
             splitRayBudget(budget, maxComponent(wReflect), maxComponent(wRefract));
         if (split.reflect > 0) {
             ++ctx.rays.reflection;
-            const Ray r{offsetRayOrigin(p, n, err), d + 2.0 * cosIn * n};
+            Vec3 dir = d + 2.0 * cosIn * n;
+            if (m.glossy > 0.0)
+                dir = sampleConeAbove(dir, n, m.glossy, ctx.sample2D(sample_dim::gloss(depth)));
+            const Ray r{offsetRayOrigin(p, n, err), dir};
             c += reflectWeight * trace(r, p, depth + 1, wReflect, split.reflect - 1, ctx, nullptr);
         }
         if (split.refract > 0) {
             ++ctx.rays.refraction;
+            if (m.translucent > 0.0)
+                refractDir = sampleConeAbove(refractDir, -n, m.translucent,
+                                         ctx.sample2D(sample_dim::gloss(depth) | kTranslucentDim));
             const Ray r{offsetRayOrigin(p, -n, err), refractDir};
             c += refractWeight * trace(r, p, depth + 1, wRefract, split.refract - 1, ctx, nullptr);
         }
@@ -135,25 +145,21 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
 }
 
 Vec3 WhittedIntegrator::directLight(const Material& m, const Vec3& p, const Vec3& n,
-                                    const Vec3& d, double errorBound,
+                                    const Vec3& d, double errorBound, int depth,
                                     ShadingContext& ctx) const {
     Vec3 sum(0.0);
     const Vec3 origin = offsetRayOrigin(p, n, errorBound);
-    for (const Light& light : mScene.lights) {
-        Vec3 l;
-        Vec3 radiance;
-        double tmax;
-        if (light.kind == Light::Kind::Point) {
-            const Vec3 toLight = light.position - p;
-            const double dist2 = glm::dot(toLight, toLight);
-            l = toLight / std::sqrt(dist2);
-            radiance = light.color * (light.power / (4.0 * glm::pi<double>() * dist2));
-            tmax = glm::length(light.position - origin);
-        } else {
-            l = -glm::normalize(light.direction);
-            radiance = light.color;
-            tmax = kInf;
-        }
+    for (size_t k = 0; k < mScene.lights.size(); ++k) {
+        const Light& light = mScene.lights[k];
+        const bool sampled = light.kind == Light::Kind::Area || light.kind == Light::Kind::Sphere;
+        // Each light of each bounce draws from its own dimension.
+        const SubPixel u =
+            sampled ? ctx.sample2D(sample_dim::light(depth) + (uint32_t(k) << 16)) : SubPixel{};
+        const LightSample ls = sampleLight(light, p, origin, u);
+        const Vec3& l = ls.direction;
+        const Vec3& radiance = ls.radiance;
+        const double tmax = ls.distance;
+        if (maxComponent(radiance) <= 0) continue;
         const double cosL = glm::dot(n, l);
         if (cosL <= 0) continue;  // the light is behind the surface as seen
 

@@ -32,6 +32,7 @@
 #include "scene/scene.h"
 #include "csg/scene_geometry.h"
 #include "csg/trace_context.h"
+#include "render/sampler.h"
 
 #include <cstdint>
 #include <optional>
@@ -46,10 +47,19 @@ struct RayCounters {
     uint64_t refraction = 0;
 };
 
-/// What one thread needs to shade: its trace context and its counters. Never shared.
+/// What one thread needs to shade: its trace context, its counters, and which sample of
+/// which pixel it is tracing (for the light, gloss and translucency samples). Never shared.
 struct ShadingContext {
     TraceContext trace;
     RayCounters rays;
+    const PixelSampler* sampler = nullptr;  ///< null: area lights and cones take their centre
+    uint64_t pixel = 0;
+    int sample = 0;
+
+    /// The current sample's point in dimension `dim` (render/sampler.h).
+    SubPixel sample2D(uint32_t dim) const {
+        return sampler ? sampler->get2D(pixel, sample, dim) : SubPixel{};
+    }
 };
 
 /// Secondary rays whose weight is below this in every channel are not traced.
@@ -90,7 +100,7 @@ private:
                double tStart = 0.0) const;
     /// Direct light at p (normal n toward the viewer, unit view direction d).
     Vec3 directLight(const Material& m, const Vec3& p, const Vec3& n, const Vec3& d,
-                     double errorBound, ShadingContext& ctx) const;
+                     double errorBound, int depth, ShadingContext& ctx) const;
     /// The fraction of light that passes from ray.origin along ray.dir (unit) up to tmax.
     Vec3 transmittance(const Ray& ray, double tmax, ShadingContext& ctx) const;
     Vec3 missColor() const;

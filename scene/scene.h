@@ -7,6 +7,7 @@
 
 #include "csg/node.h"
 #include "csg/types.h"
+#include "scene/sampling.h"
 
 #include <string>
 #include <vector>
@@ -25,23 +26,35 @@ struct Material {
     double ior = 1.5;
     Vec3 absorb{0.0};       ///< Beer absorption coefficient per unit length inside
     Vec3 emit{0.0};         ///< emitted radiance, added unlit
+    /// Glossy reflection: the mirror ray is spread uniformly over a cone of this half-angle
+    /// (degrees) about the mirror direction; 0 is a perfect mirror.
+    double glossy = 0.0;
+    /// Translucency (frosted glass): the refracted ray spread over a cone of this half-angle.
+    double translucent = 0.0;
     /// Reserved for textures: a texture's name, empty for the flat `color` (the only kind
     /// rendered yet). A texture will modulate `color`, so flat materials stay as they are.
     std::string texture;
 };
 
 struct Light {
-    /// Area lights will be a third kind using `edgeU`/`edgeV`; point and directional lights
-    /// leave those zero.
-    enum class Kind { Point, Directional };
+    /// Point: a point at `position`. Directional: parallel light along `direction`. Area: the
+    /// parallelogram position + u·edgeU + v·edgeV (u, v in [0, 1]), emitting from both faces.
+    /// Sphere: the ball of `radius` about `position`. Area and sphere lights are sampled per
+    /// shading point, so their shadows are soft.
+    enum class Kind { Point, Directional, Area, Sphere };
     Kind kind = Kind::Point;
-    Vec3 position{0.0};            ///< point lights
+    Vec3 position{0.0};            ///< point and sphere lights: the centre; area: a corner
     Vec3 direction{0.0, -1.0, 0.0};  ///< directional lights: the direction light travels
     Vec3 color{1.0};
-    /// Point lights: irradiance at distance d is color·power / (4π d²). Directional: color.
+    /// Point lights: irradiance at distance d is color·power / (4π d²). Area and sphere lights
+    /// emit the same total power as Lambertian emitters (radiance power / (2π·area) from each
+    /// face of a parallelogram, power / (4π²r²) from a sphere), so far away they light as a
+    /// point light of that power (a sphere exactly; a parallelogram facing the point within
+    /// a factor 2·cos). Directional: color.
     double power = 1.0;
-    Vec3 edgeU{0.0};  ///< reserved for area lights: the parallelogram's edges from `position`
+    Vec3 edgeU{0.0};  ///< area lights: the parallelogram's edges from `position`
     Vec3 edgeV{0.0};
+    double radius = 0.0;  ///< sphere lights
 };
 
 struct CameraDesc {
@@ -75,7 +88,8 @@ struct SectionPlane {
 struct RenderSettings {
     int width = 640;
     int height = 480;
-    int spp = 1;       ///< samples per pixel, taken as an n×n jittered grid, n = ceil(sqrt(spp))
+    int spp = 1;       ///< samples per pixel, exactly
+    SamplerKind sampler = SamplerKind::Jittered;  ///< how they are placed (scene/sampling.h)
     int maxDepth = 8;  ///< bounces of reflection and refraction
 };
 

@@ -54,10 +54,10 @@ TEST_CASE("kerf render --stats") {
     INFO("stderr:\n" << run.err);
     REQUIRE(run.exitCode == 0);
     CHECK(statsValue(run.err, "image") == "20 x 10");
-    CHECK(statsValue(run.err, "samples per pixel") == "4");
+    CHECK(statsValue(run.err, "samples per pixel") == "4, jittered");
     CHECK(statsValue(run.err, "threads") == "2");
     CHECK(statsValue(run.err, "tolerance") == "1e-06 (relative)");
-    // spp 4 is a 2×2 grid: 4 camera rays per pixel.
+    // spp 4: 4 camera rays per pixel.
     CHECK(statsValue(run.err, "camera rays") == std::to_string(20 * 10 * 4));
     CHECK(statsValue(run.err, "reflection rays") == "0");
     CHECK(statsValue(run.err, "refraction rays") == "0");
@@ -69,20 +69,22 @@ TEST_CASE("kerf render --stats") {
 }
 
 TEST_CASE("kerf render --stats: samples per pixel as traced") {
-    // The sampler takes an n×n grid, n = ceil(sqrt(spp)): the report gives the traced count
-    // and, when it differs, the requested one; the camera rays agree with the traced count.
+    // spp means what it says: exactly that many samples (and camera rays) per pixel, placed
+    // by the sampler the report names.
     TempDir dir;
     dir.write("matte.kerf", kMatteModel);
     struct Case {
         const char* spp;
+        const char* sampler;
         const char* printed;
         int traced;
     };
-    for (const Case& c : {Case{"5", "9 (requested 5)", 9}, Case{"9", "9", 9},
-                          Case{"2", "4 (requested 2)", 4}, Case{"1", "1", 1}}) {
-        INFO("--spp " << c.spp);
-        const KerfRun run =
-            runKerf(dir, {"render", "matte.kerf", "-o", "m.png", "--stats", "--spp", c.spp});
+    for (const Case& c : {Case{"5", "", "5, jittered", 5}, Case{"9", "lattice", "9, lattice", 9},
+                          Case{"2", "random", "2, random", 2}, Case{"1", "regular", "1, regular", 1}}) {
+        INFO("--spp " << c.spp << " --sampler " << c.sampler);
+        std::vector<std::string> args{"render", "matte.kerf", "-o", "m.png", "--stats", "--spp", c.spp};
+        if (*c.sampler) args.insert(args.end(), {"--sampler", c.sampler});
+        const KerfRun run = runKerf(dir, args);
         REQUIRE(run.exitCode == 0);
         CHECK(statsValue(run.err, "samples per pixel") == c.printed);
         CHECK(statsValue(run.err, "camera rays") == std::to_string(20 * 10 * c.traced));
@@ -93,7 +95,14 @@ TEST_CASE("kerf render --stats: samples per pixel as traced") {
         dir.write("spp3.kerf", model);
         const KerfRun run = runKerf(dir, {"render", "spp3.kerf", "-o", "m.png", "--stats"});
         REQUIRE(run.exitCode == 0);
-        CHECK(statsValue(run.err, "samples per pixel") == "4 (requested 3)");
+        CHECK(statsValue(run.err, "samples per pixel") == "3, jittered");
+    }
+    SECTION("an unknown sampler is a usage error") {
+        const KerfRun run =
+            runKerf(dir, {"render", "matte.kerf", "-o", "m.png", "--sampler", "sobol"});
+        CHECK(run.exitCode == 2);
+        CHECK(run.err.find("--sampler must be regular, random, jittered or lattice (got 'sobol')") !=
+              std::string::npos);
     }
 }
 

@@ -191,7 +191,7 @@ TEST_CASE("render: statistics, options and progress") {
     Scene scene = sceneAtScale(1.0);
     scene.settings.width = 20;
     scene.settings.height = 10;
-    scene.settings.spp = 2;  // rounded up to a 2×2 grid
+    scene.settings.spp = 2;  // exactly two samples
 
     SECTION("the scene's settings apply when the options leave them at 0") {
         const RenderResult r = render(scene, RenderOptions{});
@@ -199,7 +199,7 @@ TEST_CASE("render: statistics, options and progress") {
         CHECK(r.color.height == 10);
         CHECK(r.color.channels == 3);
         CHECK(r.depth.pixels.empty());
-        CHECK(r.stats.cameraRays == 20u * 10u * 4u);
+        CHECK(r.stats.cameraRays == 20u * 10u * 2u);
         CHECK(r.stats.shadowRays > 0);
         CHECK(r.stats.reflectionRays > 0);
         CHECK(r.stats.refractionRays == 0);

@@ -1,0 +1,221 @@
+// Distribution effects (issue 10) against closed forms: the thin lens's circle of confusion,
+// a sphere light's irradiance (exactly a point light's for a point facing it), the umbra and
+// penumbra of a rectangular light behind an edge, cones uniform in solid angle, and glossy
+// and translucent rays conserving energy in a white furnace.
+#include "render/camera.h"
+#include "render/light_sample.h"
+#include "render/render.h"
+#include "render_test_util.h"
+
+#include <catch2/catch.hpp>
+
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
+#include <random>
+
+using namespace kerf;
+using namespace kerf::test;
+
+TEST_CASE("thin lens: rays meet at the focus plane; the circle of confusion is the formula's") {
+    CameraDesc desc;
+    desc.eye = Vec3(1.0, 2.0, -7.0);
+    desc.lookAt = Vec3(1.0, 2.0, 0.0);
+    desc.fovDegrees = 30.0;
+    desc.aperture = 0.4;
+    desc.focusDistance = 5.0;
+    const Camera camera(desc, 64, 48);
+    const Vec3 f(0.0, 0.0, 1.0);
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int k = 0; k < 200; ++k) {
+        const double x = unit(rng) * 64, y = unit(rng) * 48;
+        const Ray pinhole = camera.rayThrough(x, y);
+        const Vec3 focus = pinhole.at(5.0 / glm::dot(pinhole.dir, f));
+        const Ray r = camera.rayThrough(x, y, unit(rng), unit(rng));
+        // Leaves the lens disc, passes the pinhole ray's point on the plane of focus.
+        CHECK(glm::dot(r.origin - desc.eye, f) == Approx(0.0).margin(1e-12));
+        CHECK(glm::length(r.origin - desc.eye) <= 0.2 + 1e-12);
+        const Vec3 at = r.at(glm::dot(focus - r.origin, f) / glm::dot(r.dir, f));
+        CHECK(glm::length(at - focus) < 1e-12);
+    }
+    // A ray from the rim of the lens (u = 1, v = ½: radius 1, angle 0) through the image
+    // centre is off the axis by (A/2)·|1 − D/F| at depth D: the thin-lens circle of confusion.
+    const Ray rim = camera.rayThrough(32.0, 24.0, 1.0, 0.5);
+    for (double depth : {2.0, 5.0, 9.0, 40.0}) {
+        const Vec3 p = rim.at((depth - glm::dot(rim.origin - desc.eye, f)) / glm::dot(rim.dir, f));
+        const Vec3 axisPoint = desc.eye + depth * f;
+        INFO("depth " << depth);
+        CHECK(glm::length(p - axisPoint) == Approx(0.2 * std::fabs(1.0 - depth / 5.0)).margin(1e-12));
+    }
+    // Aperture 0: the pinhole ray, bit for bit.
+    desc.aperture = 0.0;
+    const Camera pin(desc, 64, 48);
+    const Ray a = pin.rayThrough(10.3, 7.7), b = pin.rayThrough(10.3, 7.7, 0.9, 0.1);
+    CHECK(a.origin == b.origin);
+    CHECK(a.dir == b.dir);
+}
+
+TEST_CASE("sampleCone: uniform in solid angle within the cone") {
+    const Vec3 axis = glm::normalize(Vec3(0.3, -1.0, 0.2));
+    const double alpha = 0.5;
+    const PixelSampler sampler(1024, SamplerKind::Jittered);
+    double sumCos = 0.0;
+    for (int s = 0; s < 1024; ++s) {
+        const Vec3 d = sampleCone(axis, alpha, sampler.get2D(3, s, 5));
+        REQUIRE(glm::length(d) == Approx(1.0).epsilon(1e-12));
+        REQUIRE(glm::dot(d, axis) >= std::cos(alpha) - 1e-12);
+        sumCos += glm::dot(d, axis);
+    }
+    // Uniform in solid angle: E[cos θ] = (1 + cos α)/2.
+    CHECK(sumCos / 1024 == Approx(0.5 * (1.0 + std::cos(alpha))).epsilon(1e-4));
+}
+
+namespace {
+
+/// A white diffuse floor (y ≤ 0) seen from above, lit by `light` only.
+Scene floorUnder(const Light& light) {
+    Scene scene;
+    Material white = blackMaterial();
+    white.diffuse = 1.0;
+    const int32_t m = addMaterial(scene, white);
+    addObject(scene, makeHalfSpace(Vec3(0.0, 1.0, 0.0), 0.0), m);
+    scene.camera.eye = Vec3(0.0, 10.0, -0.001);
+    scene.camera.lookAt = Vec3(0.0, 0.0, 0.0);
+    scene.camera.fovDegrees = 60.0;
+    scene.lights.push_back(light);
+    return scene;
+}
+
+}  // namespace
+
+TEST_CASE("a sphere light lights a facing point exactly as a point light of its power") {
+    // A Lambertian sphere of radiance L gives E = π L (r/d)² cos θ at a point whose horizon
+    // it is above: with L = P/(4π²r²) that is P cos θ/(4π d²), a point light's. The estimate
+    // from 256 jittered samples per pixel must match it within 1 %.
+    Light point;
+    point.kind = Light::Kind::Point;
+    point.position = Vec3(0.5, 3.0, 0.2);
+    point.power = 400.0;
+    Light sphere = point;
+    sphere.kind = Light::Kind::Sphere;
+    sphere.radius = 0.8;
+    // Both with the same 256 film positions per pixel: only the light's estimate differs.
+    RenderOptions options = smallImage(16, 12, 2);
+    options.spp = 256;
+    const RenderResult exact = render(floorUnder(point), options);
+    const RenderResult soft = render(floorUnder(sphere), options);
+    for (int j = 0; j < 12; ++j)
+        for (int i = 0; i < 16; ++i) {
+            INFO("pixel " << i << "," << j);
+            CHECK(soft.color.at(i, j, 0) == Approx(exact.color.at(i, j, 0)).epsilon(0.01));
+        }
+}
+
+TEST_CASE("a rectangular light behind an edge: umbra and penumbra where geometry puts them") {
+    // A 2 × 2 light at height 4 (x in [−1, 1]) and a thin opaque plate at height 2 filling
+    // x ≤ 0: by similar triangles the plate's edge, seen from light point x_L, shadows the
+    // floor for x < −x_L (the heights are in ratio 1): umbra for x < −1, penumbra for
+    // −1 < x < 1, lit for x > 1. Rendered with and without the wall, with the same light samples, the ratio
+    // is exactly 0 in the umbra, exactly 1 in the lit part, and strictly between in the
+    // penumbra (away from its ends by a pixel).
+    Light area;
+    area.kind = Light::Kind::Area;
+    area.position = Vec3(-1.0, 4.0, -1.0);
+    area.edgeU = Vec3(2.0, 0.0, 0.0);
+    area.edgeV = Vec3(0.0, 0.0, 2.0);
+    area.power = 300.0;
+    Scene open = floorUnder(area);
+    // From below the plate, so that only the floor is seen (rays going down from y = 1).
+    open.camera.eye = Vec3(3.5, 1.9, 0.0);
+    open.camera.lookAt = Vec3(-1.0, 0.0, 0.0);
+    Scene walled = open;
+    addObject(walled, makeBox(Vec3(-50.0, 2.0 - 1e-3, -50.0), Vec3(0.0, 2.0, 50.0)), 1);
+    RenderOptions options = smallImage(60, 40, 2);
+    options.spp = 64;
+    const RenderResult lit = render(open, options);
+    const RenderResult shadowed = render(walled, options);
+    const Camera camera(open.camera, 60, 40);
+    int umbra = 0, penumbra = 0, full = 0;
+    for (int j = 0; j < 40; ++j)
+        for (int i = 0; i < 60; ++i) {
+            const Ray ray = camera.rayThrough(i + 0.5, j + 0.5);
+            if (!(ray.dir.y < -0.05)) continue;  // the sky, or the floor too far to resolve
+            const double t = -ray.origin.y / ray.dir.y;
+            const double x = ray.at(t).x;  // the floor point
+            // A pixel covers a patch of floor about this wide (and then some).
+            const double half = 2.0 * t * camera.pixelAngle() / std::fabs(ray.dir.y);
+            const double a = lit.color.at(i, j, 0), b = shadowed.color.at(i, j, 0);
+            if (std::fabs(x) > 6.0) continue;
+            REQUIRE(a > 0.0);
+            const double ratio = b / a;
+            INFO("pixel " << i << "," << j << " floor x " << x << " ratio " << ratio);
+            if (x < -1.0 - half) {
+                CHECK(ratio == 0.0);
+                ++umbra;
+            } else if (x > 1.0 + half) {
+                CHECK(ratio == 1.0);
+                ++full;
+            } else if (x > -1.0 + half && x < 1.0 - half) {
+                CHECK(ratio > 0.0);
+                CHECK(ratio < 1.0);
+                ++penumbra;
+            }
+        }
+    CHECK(umbra > 100);
+    CHECK(penumbra > 100);
+    CHECK(full > 100);
+}
+
+TEST_CASE("white furnace: glossy and translucent rays neither gain nor lose energy") {
+    // Everything black but a uniform white sky: a perfect reflector (reflect 1) or a clear
+    // dielectric (transmit 1: Fresnel's two parts sum to 1) shows the sky at 1, whatever the
+    // cone its rays are spread over. The dielectric is a half-space, so every refracted ray
+    // runs on to the sky inside it (a closed glass body would trap rays spread past the
+    // critical angle until the depth limit).
+    auto furnace = [](const Material& m, NodePtr solid) {
+        Scene scene;
+        const int32_t id = addMaterial(scene, m);
+        addObject(scene, std::move(solid), id);
+        scene.background = Vec3(1.0);
+        scene.camera.eye = Vec3(0.0, 3.0, -6.0);
+        scene.camera.lookAt = Vec3(0.0, 0.0, 0.0);
+        scene.settings.maxDepth = 8;
+        return scene;
+    };
+    RenderOptions options = smallImage(24, 18, 2);
+    options.spp = 16;
+    const NodePtr ground = makeHalfSpace(Vec3(0.0, 1.0, 0.0), 0.0);
+    for (double cone : {0.0, 10.0, 45.0, 89.0}) {
+        INFO("cone " << cone);
+        Material mirror = blackMaterial();
+        mirror.reflect = 1.0;
+        mirror.glossy = cone;
+        for (float v : render(furnace(mirror, ground), options).color.pixels)
+            CHECK(v == Approx(1.0f).epsilon(1e-6));
+        Material glass = blackMaterial();
+        glass.transmit = 1.0;
+        glass.ior = 1.5;
+        glass.translucent = cone;
+        glass.glossy = cone;
+        for (float v : render(furnace(glass, ground), options).color.pixels)
+            CHECK(v == Approx(1.0f).epsilon(1e-6));
+    }
+}
+
+TEST_CASE("sampleConeAbove: within the cone or its mirror image, never below the surface") {
+    const PixelSampler sampler(4096, SamplerKind::Jittered);
+    const Vec3 n(0.0, 1.0, 0.0);
+    for (double grazing : {0.0, 5.0, 40.0}) {  // the axis's angle above the surface, degrees
+        const double a = grazing * glm::pi<double>() / 180.0;
+        const Vec3 axis(std::cos(a), std::sin(a), 0.0);
+        for (int s = 0; s < 4096; ++s) {
+            const Vec3 d = sampleConeAbove(axis, n, 30.0, sampler.get2D(1, s, 9));
+            REQUIRE(glm::dot(d, n) >= 0.0);
+            // d or its mirror image below the surface lies in the cone.
+            const Vec3 mirrored = d - 2.0 * glm::dot(d, n) * n;
+            const double c = std::max(glm::dot(d, axis), glm::dot(mirrored, axis));
+            REQUIRE(c >= std::cos(30.0 * glm::pi<double>() / 180.0) - 1e-12);
+        }
+    }
+}
