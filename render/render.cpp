@@ -177,11 +177,22 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         accelerated = accelerate(scene.objects, options.accel, octreeOptions);
     });
     result.stats.secondsAccel = secondsSince(accelStart);
+    // Objects marked no_shadow are left out of a second geometry that shadow rays use.
+    std::optional<SceneGeometry> shadowGeometry;
+    {
+        std::vector<NodePtr> casters;
+        for (size_t k = 0; k < accelerated.objects.size(); ++k)
+            if (k >= scene.objectFlags.size() || scene.objectFlags[k].castsShadow)
+                casters.push_back(accelerated.objects[k]);
+        if (casters.size() != accelerated.objects.size())
+            shadowGeometry.emplace(std::move(casters), accelerated.objectBvh);
+    }
     const SceneGeometry geometry(std::move(accelerated.objects), accelerated.objectBvh);
     const PixelSampler sampler(spp, options.sampler.value_or(scene.settings.sampler));
     result.stats.samplesPerPixel = sampler.sampleCount();
     result.stats.sampler = sampler.kind();
-    const WhittedIntegrator integrator(scene, geometry, scene.settings.maxDepth);
+    const WhittedIntegrator integrator(scene, geometry, scene.settings.maxDepth,
+                                       shadowGeometry ? &*shadowGeometry : nullptr);
     const PrimaryBeams beams(camera, scene.objects);
     // Beams bound rays from the eye: a lens (issue 10) would start them elsewhere.
     const bool useBeams =

@@ -33,6 +33,26 @@ double schlick(double n1, double n2, double cosine) {
     return f0 + (1.0 - f0) * (m * m) * (m * m) * m;
 }
 
+/// The light's falloff against the inverse square that sampleLight applies: at distance d
+/// from the light (its centre; an area light's corner region is near enough to one distance
+/// for this to be a scale of its samples, exact for its nearest point as d grows).
+double falloffScale(const Light& light, const Vec3& p) {
+    if (light.kind == Light::Kind::Directional) return 1.0;
+    if (light.falloff == Falloff::InverseSquare && light.fadeDistance <= 0.0) return 1.0;
+    Vec3 centre = light.position;
+    if (light.kind == Light::Kind::Area) centre += 0.5 * (light.edgeU + light.edgeV);
+    const double d = glm::length(centre - p);
+    if (!(d > 0.0)) return 1.0;
+    const double k = light.falloff == Falloff::InverseSquare ? 2.0
+                     : light.falloff == Falloff::Linear      ? 1.0
+                                                             : 0.0;
+    // The irradiance at distance 1 times the falloff's law, over the 1/d² already applied.
+    const double law = light.fadeDistance > 0.0
+                           ? 2.0 / (1.0 + std::pow(d / light.fadeDistance, k))
+                           : std::pow(d, -k);
+    return law * d * d;
+}
+
 /// The translucency dimension of a bounce: its gloss dimension with this bit set.
 constexpr uint32_t kTranslucentDim = 1u << 30;
 
@@ -52,8 +72,11 @@ RayBudgetSplit splitRayBudget(uint64_t budget, double reflectWeight, double refr
 }
 
 WhittedIntegrator::WhittedIntegrator(const Scene& scene, const SceneGeometry& geometry,
-                                     int maxDepth)
-    : mScene(scene), mGeometry(geometry), mMaxDepth(std::max(0, maxDepth)) {
+                                     int maxDepth, const SceneGeometry* shadowGeometry)
+    : mScene(scene),
+      mGeometry(geometry),
+      mShadowGeometry(shadowGeometry ? *shadowGeometry : geometry),
+      mMaxDepth(std::max(0, maxDepth)) {
     for (const Material& m : scene.materials)
         if (m.transmit > 0) mAnyTransmissive = true;
 }
@@ -63,8 +86,13 @@ const Material& WhittedIntegrator::material(int32_t index) const {
     return mScene.materials[size_t(index)];
 }
 
-Vec3 WhittedIntegrator::missColor() const {
-    return mScene.mist.enabled ? mScene.mist.color : mScene.background;
+Vec3 WhittedIntegrator::missColor(const Vec3& d) const {
+    if (mScene.mist.enabled) return mScene.mist.color;
+    const Sky& sky = mScene.sky;
+    if (!sky.gradient) return mScene.background;
+    const double h = glm::dot(d, sky.up);
+    return h >= 0.0 ? sky.horizon + h * (sky.zenith - sky.horizon)
+                    : sky.horizon - h * (sky.nadir - sky.horizon);
 }
 
 Vec3 WhittedIntegrator::applyMist(const Vec3& c, double distance) const {
@@ -84,7 +112,7 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
                               std::optional<Hit>* firstHit, double tStart) const {
     const std::optional<Hit> hit = mGeometry.nearestHit(ray, tStart, kInf, ctx.trace);
     if (firstHit) *firstHit = hit;
-    if (!hit) return missColor();
+    if (!hit) return missColor(glm::normalize(ray.dir));
 
     const Material& m = material(hit->material);
     const Vec3 p = ray.at(hit->t);
@@ -155,7 +183,8 @@ Vec3 WhittedIntegrator::directLight(const Material& m, const Vec3& p, const Vec3
         // Each light of each bounce draws from its own dimension.
         const SubPixel u =
             sampled ? ctx.sample2D(sample_dim::light(depth) + (uint32_t(k) << 16)) : SubPixel{};
-        const LightSample ls = sampleLight(light, p, origin, u);
+        LightSample ls = sampleLight(light, p, origin, u);
+        ls.radiance *= falloffScale(light, p);
         const Vec3& l = ls.direction;
         const Vec3& radiance = ls.radiance;
         const double tmax = ls.distance;
@@ -163,9 +192,12 @@ Vec3 WhittedIntegrator::directLight(const Material& m, const Vec3& p, const Vec3
         const double cosL = glm::dot(n, l);
         if (cosL <= 0) continue;  // the light is behind the surface as seen
 
-        ++ctx.rays.shadow;
-        const Vec3 pass = transmittance(Ray{origin, l}, tmax, ctx);
-        if (maxComponent(pass) <= 0) continue;
+        Vec3 pass(1.0);
+        if (light.shadows) {
+            ++ctx.rays.shadow;
+            pass = transmittance(Ray{origin, l}, tmax, ctx);
+            if (maxComponent(pass) <= 0) continue;
+        }
 
         Vec3 term = (1.0 - m.transmit) * m.diffuse * cosL * m.color;
         if (m.specular > 0) {
@@ -180,7 +212,7 @@ Vec3 WhittedIntegrator::directLight(const Material& m, const Vec3& p, const Vec3
 
 Vec3 WhittedIntegrator::transmittance(const Ray& ray, double tmax, ShadingContext& ctx) const {
     if (!mAnyTransmissive)
-        return mGeometry.occluded(ray, 0.0, tmax, ctx.trace) ? Vec3(0.0) : Vec3(1.0);
+        return mShadowGeometry.occluded(ray, 0.0, tmax, ctx.trace) ? Vec3(0.0) : Vec3(1.0);
 
     Vec3 pass(1.0);
     bool blocked = false;
@@ -194,7 +226,7 @@ Vec3 WhittedIntegrator::transmittance(const Ray& ray, double tmax, ShadingContex
     };
     // Only the spans' extents and materials matter here, within the tolerance.
     const OcclusionScope scope(ctx.trace);
-    mGeometry.forEachObjectSpans(ray, 0.0, tmax, ctx.trace, [&](int, const SpanList& spans) {
+    mShadowGeometry.forEachObjectSpans(ray, 0.0, tmax, ctx.trace, [&](int, const SpanList& spans) {
         for (const Span& s : spans) {
             if (blocked) return false;
             const double a = std::max(s.in.t, 0.0);

@@ -83,7 +83,9 @@ class WhittedIntegrator {
 public:
     /// The scene and geometry must outlive the integrator. maxDepth bounds the number of
     /// reflection/refraction bounces (0: none).
-    WhittedIntegrator(const Scene& scene, const SceneGeometry& geometry, int maxDepth);
+    /// shadowGeometry: the objects that cast shadows (all of them where null).
+    WhittedIntegrator(const Scene& scene, const SceneGeometry& geometry, int maxDepth,
+                      const SceneGeometry* shadowGeometry = nullptr);
 
     /// The radiance seen along a camera ray. When firstHit is given, it receives the ray's
     /// first hit (or nullopt on a miss), for the depth and normal outputs. tStart: a distance
@@ -103,12 +105,14 @@ private:
                      double errorBound, int depth, ShadingContext& ctx) const;
     /// The fraction of light that passes from ray.origin along ray.dir (unit) up to tmax.
     Vec3 transmittance(const Ray& ray, double tmax, ShadingContext& ctx) const;
-    Vec3 missColor() const;
+    /// What a ray along the unit direction d that hits nothing sees.
+    Vec3 missColor(const Vec3& d) const;
     Vec3 applyMist(const Vec3& c, double distance) const;
     const Material& material(int32_t index) const;
 
     const Scene& mScene;
     const SceneGeometry& mGeometry;
+    const SceneGeometry& mShadowGeometry;
     int mMaxDepth;
     bool mAnyTransmissive = false;  ///< else shadow rays only ask for any hit
 };

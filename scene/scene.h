@@ -36,6 +36,14 @@ struct Material {
     std::string texture;
 };
 
+/// How a light's irradiance falls off with distance d (scaled so that every choice gives the
+/// same irradiance at distance 1).
+enum class Falloff : uint8_t {
+    InverseSquare,  ///< physical: ∝ 1/d² (kerf's default)
+    Linear,         ///< ∝ 1/d
+    None,           ///< constant, as POV-Ray's lights by default
+};
+
 struct Light {
     /// Point: a point at `position`. Directional: parallel light along `direction`. Area: the
     /// parallelogram position + u·edgeU + v·edgeV (u, v in [0, 1]), emitting from both faces.
@@ -55,6 +63,26 @@ struct Light {
     Vec3 edgeU{0.0};  ///< area lights: the parallelogram's edges from `position`
     Vec3 edgeV{0.0};
     double radius = 0.0;  ///< sphere lights
+    Falloff falloff = Falloff::InverseSquare;
+    /// POV-Ray's fade_distance F (> 0): the irradiance at distance 1 times 2/(1 + (d/F)^k),
+    /// k = 2 for inverse_square, 1 for linear (POV-Ray's fade_power); 0: the falloff alone.
+    double fadeDistance = 0.0;
+    bool shadows = true;  ///< false: this light's shadow rays are not traced (nothing blocks it)
+};
+
+/// The sky rays that hit nothing see: a flat colour, or a gradient from the horizon to the
+/// zenith (and to the nadir below the horizon) along `up`.
+struct Sky {
+    bool gradient = false;
+    Vec3 horizon{0.0};
+    Vec3 zenith{0.0};
+    Vec3 nadir{0.0};
+    Vec3 up{0.0, 1.0, 0.0};  ///< unit length
+};
+
+/// Per-object options beside the object's tree.
+struct ObjectFlags {
+    bool castsShadow = true;  ///< false (`no_shadow`): shadow rays pass through the object
 };
 
 struct CameraDesc {
@@ -99,12 +127,15 @@ struct Scene {
     /// materials[0] is the default (grey, diffuse) that objects without a material get.
     std::vector<Material> materials{Material{}};
     Mist mist;
-    Vec3 background{0.0};
+    Vec3 background{0.0};  ///< the sky's colour where `sky.gradient` is false
+    Sky sky;
     std::vector<SectionPlane> sections;
     RenderSettings settings;
     /// Each object's tree already holds its transforms and materials; objects are separate
     /// (overlapping objects are not merged), the nearest surface of any of them is seen.
     std::vector<NodePtr> objects;
+    /// objectFlags[i] for objects[i]; empty (or shorter) means the defaults.
+    std::vector<ObjectFlags> objectFlags;
 };
 
 }  // namespace kerf

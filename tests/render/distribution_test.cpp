@@ -219,3 +219,65 @@ TEST_CASE("sampleConeAbove: within the cone or its mirror image, never below the
         }
     }
 }
+
+TEST_CASE("light controls: falloff laws, fade_distance, shadows off, no_shadow objects") {
+    // A white floor under a point light at height 4 over the image centre: the centre pixel's
+    // irradiance is power/(4π)·law(4) with law the falloff's, at distance 1 all agree.
+    Light point;
+    point.kind = Light::Kind::Point;
+    point.position = Vec3(0.0, 4.0, 0.0);
+    point.power = 100.0;
+    const double base = 100.0 / (4.0 * glm::pi<double>());
+    auto centre = [&](const Light& light, bool blocker, bool blockerCasts) {
+        Scene scene = floorUnder(light);
+        if (blocker) {
+            addObject(scene, makeBox(Vec3(-0.2, 1.0, -0.2), Vec3(0.2, 1.2, 0.2)), 1);
+            scene.objectFlags.resize(2);
+            scene.objectFlags[1].castsShadow = blockerCasts;
+            // Keep the box out of the camera's view: look from below it, off to the side.
+            scene.camera.eye = Vec3(3.0, 0.5, 0.0);
+            scene.camera.lookAt = Vec3(0.0, 0.0, 0.0);
+        }
+        const RenderResult r = render(scene, smallImage(33, 33, 1));
+        return double(r.color.at(16, 16, 0));
+    };
+    // The camera looks straight down at the origin, so the centre pixel's cosine is 1.
+    CHECK(centre(point, false, true) == Approx(base / 16.0).epsilon(1e-6));
+    Light linear = point;
+    linear.falloff = Falloff::Linear;
+    CHECK(centre(linear, false, true) == Approx(base / 4.0).epsilon(1e-6));
+    Light none = point;
+    none.falloff = Falloff::None;
+    CHECK(centre(none, false, true) == Approx(base).epsilon(1e-6));
+    // POV-Ray's fade: 2/(1 + (d/F)^2) at d = 4, F = 2: 2/5.
+    Light faded = point;
+    faded.fadeDistance = 2.0;
+    CHECK(centre(faded, false, true) == Approx(base * 0.4).epsilon(1e-6));
+    // A box between the light and the floor's centre blocks it, unless the light casts no
+    // shadows or the box is no_shadow.
+    CHECK(centre(point, true, true) == 0.0);
+    CHECK(centre(point, true, false) > 0.0);
+    Light unshadowed = point;
+    unshadowed.shadows = false;
+    CHECK(centre(unshadowed, true, true) > 0.0);
+}
+
+TEST_CASE("a gradient sky: horizon, zenith and nadir colours along up") {
+    Scene scene;
+    scene.sky.gradient = true;
+    scene.sky.horizon = Vec3(1.0, 0.0, 0.0);
+    scene.sky.zenith = Vec3(0.0, 0.0, 1.0);
+    scene.sky.nadir = Vec3(0.0, 1.0, 0.0);
+    scene.camera.eye = Vec3(0.0);
+    scene.camera.fovDegrees = 90.0;
+    for (double pitch : {-60.0, -20.0, 0.0, 30.0, 80.0}) {
+        const double a = pitch * glm::pi<double>() / 180.0;
+        scene.camera.lookAt = Vec3(0.0, std::sin(a), std::cos(a));
+        const RenderResult r = render(scene, smallImage(3, 3, 1));
+        const double h = std::sin(a);  // the centre ray's height: its cosine to up
+        INFO("pitch " << pitch);
+        CHECK(r.color.at(1, 1, 0) == Approx(1.0 - std::fabs(h)).margin(1e-6));
+        CHECK(r.color.at(1, 1, 2) == Approx(std::max(0.0, h)).margin(1e-6));
+        CHECK(r.color.at(1, 1, 1) == Approx(std::max(0.0, -h)).margin(1e-6));
+    }
+}
