@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 
 namespace kerf {
 
@@ -127,14 +128,19 @@ std::optional<Value> Lowering::evaluate(const Expr& e, ExprGraph* field) {
             if (!a) return std::nullopt;
             if (a->type == Value::Type::Number) return Value::ofNumber(-a->number);
             if (a->type == Value::Type::Vector) return Value::ofVector(-a->vector);
-            return Value::ofField(field->unary(Op::Neg, a->field));
+            if (a->type == Value::Type::Field) return Value::ofField(field->unary(Op::Neg, a->field));
+            error(e.loc, "cannot negate " + typeName(a->type));
+            return std::nullopt;
         }
         case Expr::Kind::Binary: {
+            if (e.op == '&' || e.op == '|') return logic(e, field);
             const auto a = evaluate(e.args()[0], field);
             const auto b = evaluate(e.args()[1], field);
             if (!a || !b) return std::nullopt;
+            if (std::strchr("<>lgen", e.op)) return compare(e.op, *a, *b, e.loc);
             return arithmetic(e.op, *a, *b, e.loc, field);
         }
+        default: return evaluateValue(e, field);
     }
     return std::nullopt;
 }
@@ -150,6 +156,18 @@ std::optional<Value> Lowering::arithmetic(char op, const Value& a, const Value& 
               hint);
         return std::nullopt;
     };
+    if (op == '+' && a.type == b.type && (a.type == T::String || a.type == T::List)) return concatenate(a, b, at);
+    const auto plain = [](T t) { return t == T::Number || t == T::Vector || t == T::Field; };
+    if (!plain(a.type) || !plain(b.type)) return mistyped();
+    if (op == '%') {  // floored: the result has the sign of b, so i % 2 is 0 or 1 for every integer i
+        if (a.type != T::Number || b.type != T::Number) return mistyped();
+        if (b.number == 0) {
+            error(at, "remainder of a division by 0: " + formatNumber(a.number) + " % 0");
+            return std::nullopt;
+        }
+        const double r = a.number - b.number * std::floor(a.number / b.number);
+        return finite(Value::ofNumber(r), at, formatNumber(a.number) + " % " + formatNumber(b.number));
+    }
     if (a.type == T::Number && b.type == T::Number) {
         const double r = applyConstant(operatorOp(op), a.number, b.number);
         return finite(Value::ofNumber(r), at,
@@ -172,13 +190,29 @@ std::optional<Value> Lowering::arithmetic(char op, const Value& a, const Value& 
     return finite(Value::ofVector(r), at, "the result is " + formatVector(r));
 }
 
+std::optional<double> Lowering::numberValue(const Expr& e, const char* what) {
+    const auto v = evaluate(e, nullptr);
+    if (!v) return std::nullopt;
+    if (v->type != Value::Type::Number) {
+        error(e.start, std::string(what) + " must be a number, got " + typeName(v->type));
+        return std::nullopt;
+    }
+    return v->number;
+}
+
 std::optional<Value> Lowering::evaluateName(const Expr& e, ExprGraph* field) {
+    if (const Value* v = local(e.name())) return *v;
     if (field && (e.name() == "x" || e.name() == "y" || e.name() == "z"))
         return Value::ofField(e.name() == "x" ? field->x() : e.name() == "y" ? field->y() : field->z());
     if (e.name() == "pi") return Value::ofNumber(M_PI);
     if (mLets.count(e.name())) return letValue(e.name(), e.loc);
     if (mSolids.count(e.name())) {
-        error(e.loc, "'" + e.name() + "' is a solid, not a number or vector");
+        NodePtr node = solidByName(e.name(), e.loc);
+        if (!node) return std::nullopt;
+        return Value::ofSolid(node);
+    }
+    if (mFunctions.count(e.name())) {
+        error(e.loc, "'" + e.name() + "' is a function, not a value", "call it: " + e.name() + "(…)");
         return std::nullopt;
     }
     if (mMaterials.count(e.name())) {
@@ -187,6 +221,7 @@ std::optional<Value> Lowering::evaluateName(const Expr& e, ExprGraph* field) {
     }
     std::vector<std::string> candidates{"pi"};
     for (const auto& [name, entry] : mLets) candidates.push_back(name);
+    for (size_t i = mFrameBase; i < mLocals.size(); ++i) candidates.push_back(mLocals[i].first);
     std::string hint = didYouMean(e.name(), candidates);
     if (!field && (e.name() == "x" || e.name() == "y" || e.name() == "z"))
         hint = "x, y and z exist only inside the f of an implicit solid";
@@ -210,7 +245,10 @@ std::optional<Value> Lowering::letValue(const std::string& name, SourcePos use) 
     }
     entry.state = State::Busy;
     mBusyLets.push_back(name);
+    // A top-level let sees the top level only, wherever it is first used.
+    const size_t frameBase = std::exchange(mFrameBase, mLocals.size());
     const auto v = evaluate(*entry.def->expr, nullptr);  // lets are constants, even inside f
+    mFrameBase = frameBase;
     mBusyLets.pop_back();
     LetEntry& done = mLets[name];
     done.state = v ? State::Done : State::Failed;
@@ -219,6 +257,34 @@ std::optional<Value> Lowering::letValue(const std::string& name, SourcePos use) 
 }
 
 std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
+    if (const auto user = mFunctions.find(e.name()); user != mFunctions.end())
+        return callFunction(*user->second, e, field);
+    for (const Expr& a : e.args()) {
+        if (a.kind == Expr::Kind::NamedArg) {
+            error(a.loc, "the built-in function '" + e.name() + "' takes no named arguments");
+            return std::nullopt;
+        }
+    }
+    {
+        static const char* const kValueBuiltins[] = {"len", "dot", "cross", "length", "normalize",
+                                                     "deg", "rad", "random", "str"};
+        bool isValueBuiltin = false;
+        for (const char* b : kValueBuiltins) isValueBuiltin = isValueBuiltin || e.name() == b;
+        if (isValueBuiltin) {
+            std::vector<Value> args;
+            for (const Expr& a : e.args()) {
+                auto v = evaluate(a, field);
+                if (!v) return std::nullopt;
+                if (v->type == Value::Type::Field) {
+                    error(a.start, "'" + e.name() + "' cannot take a function of x, y, z");
+                    return std::nullopt;
+                }
+                args.push_back(std::move(*v));
+            }
+            bool handled = false;
+            return builtinValue(e, args, handled);
+        }
+    }
     const Function* fn = nullptr;
     for (const Function& f : kFunctions)
         if (e.name() == f.name && f.arity > 0) fn = &f;
@@ -226,6 +292,9 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
         std::vector<std::string> names;
         for (const Function& f : kFunctions)
             if (f.arity > 0) names.emplace_back(f.name);
+        for (const char* b : {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
+            names.emplace_back(b);
+        for (const auto& [name, def] : mFunctions) names.push_back(name);
         std::string hint = didYouMean(e.name(), names);
         error(e.loc, "unknown function '" + e.name() + "'",
               hint.empty() ? "the functions are " + joinNames(names) : hint);
@@ -253,8 +322,8 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
     }
     if (name == "pow") return arithmetic('^', args[0], args[1], e.loc, field);
     for (size_t i = 0; i < args.size(); ++i) {
-        if (args[i].type == Value::Type::Vector) {
-            error(e.args()[i].start, "'" + name + "' expects a number, got a vector");
+        if (args[i].type != Value::Type::Number && args[i].type != Value::Type::Field) {
+            error(e.args()[i].start, "'" + name + "' expects a number, got " + typeName(args[i].type));
             return std::nullopt;
         }
     }
