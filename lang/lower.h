@@ -34,9 +34,17 @@
 
 namespace kerf {
 
+/// The evaluation limits (scene/limits.h); tests lower them to reach them quickly.
+struct EvalLimits {
+    int callDepth = kMaxCallDepth;
+    int64_t iterations = kMaxLoopIterations;
+    int64_t listLength = kMaxListLength;
+    int64_t primitives = kMaxPrimitives;
+};
+
 class Lowering {
 public:
-    explicit Lowering(DiagnosticSink& sink) : mSink(sink) {}
+    explicit Lowering(DiagnosticSink& sink, EvalLimits limits = {}) : mSink(sink), mLimits(limits) {}
 
     /// Lowers the program; nullopt if it reported any error. The syntax tree of each `solid`
     /// definition and `object` is freed once it is lowered (Statement::releaseTree), so the
@@ -174,6 +182,7 @@ private:
     void lowerBackground(const Statement& s, Vec3& background);
 
     DiagnosticSink& mSink;
+    EvalLimits mLimits;
     std::map<std::string, const Statement*> mFunctions;
     /// Locals, innermost last; a function call hides those below mFrameBase.
     std::vector<std::pair<std::string, Value>> mLocals;

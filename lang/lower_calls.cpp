@@ -55,10 +55,10 @@ const Value* Lowering::local(const std::string& name) const {
 std::optional<Value> Lowering::callFunction(const Statement& fn, const Expr& call, ExprGraph* field) {
     if (fn.broken) return std::nullopt;  // its syntax error is reported
     const SourceLoc at = mSink.locate(call.loc);
-    if (static_cast<int>(mCalls.size()) >= kMaxCallDepth) {
+    if (static_cast<int>(mCalls.size()) >= mLimits.callDepth) {
         if (!mLimitReported) {
             mLimitReported = true;
-            error(call.loc, "recursion deeper than " + std::to_string(kMaxCallDepth) + " in call to " + fn.name +
+            error(call.loc, "recursion deeper than " + std::to_string(mLimits.callDepth) + " in call to " + fn.name +
                                 " at line " + std::to_string(at.line),
                   "a recursive function needs a case that stops, e.g. level == 0 ? … : …");
         }
@@ -141,6 +141,10 @@ std::optional<Value> Lowering::callFunction(const Statement& fn, const Expr& cal
             leave();
             return hit->second;
         }
+    }
+    if (!countIteration(call.loc)) {  // calls share the loops' budget: no runaway recursion
+        leave();
+        return std::nullopt;
     }
     auto result = evaluate(*fn.expr, field);
     leave();

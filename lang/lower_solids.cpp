@@ -194,10 +194,10 @@ NodePtr Lowering::limitDepth(NodePtr node, SourcePos at) {
 }
 
 bool Lowering::countPrimitive(SourcePos at) {
-    if (++mPrimitives <= kMaxPrimitives) return true;
+    if (++mPrimitives <= mLimits.primitives) return true;
     if (!mLimitReported) {
         mLimitReported = true;
-        error(at, "this model makes more than " + std::to_string(kMaxPrimitives) + " primitives",
+        error(at, "this model makes more than " + std::to_string(mLimits.primitives) + " primitives",
               "the limit stops a model before it runs out of memory; see docs/language.md, Limits");
     }
     return false;

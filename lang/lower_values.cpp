@@ -6,6 +6,8 @@
 #include "csg/normalize.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 namespace kerf {
@@ -69,8 +71,8 @@ std::optional<Value> Lowering::evaluateValue(const Expr& e, ExprGraph* field) {
         case Expr::Kind::Range: {
             ValueList items;
             bool ok = iterate(e, std::string(), e.loc, [&]() {
-                if (static_cast<int64_t>(items.size()) >= kMaxListLength) {
-                    error(e.loc, "list longer than " + std::to_string(kMaxListLength) + " elements");
+                if (static_cast<int64_t>(items.size()) >= mLimits.listLength) {
+                    error(e.loc, "list longer than " + std::to_string(mLimits.listLength) + " elements");
                     return false;
                 }
                 items.push_back(mLocals.back().second);
@@ -168,8 +170,8 @@ std::optional<Value> Lowering::concatenate(const Value& a, const Value& b, Sourc
         }
         return Value::ofString(a.string() + b.string());
     }
-    if (static_cast<int64_t>(a.list().size() + b.list().size()) > kMaxListLength) {
-        error(at, "list longer than " + std::to_string(kMaxListLength) + " elements");
+    if (static_cast<int64_t>(a.list().size() + b.list().size()) > mLimits.listLength) {
+        error(at, "list longer than " + std::to_string(mLimits.listLength) + " elements");
         return std::nullopt;
     }
     ValueList items = a.list();
@@ -178,8 +180,8 @@ std::optional<Value> Lowering::concatenate(const Value& a, const Value& b, Sourc
 }
 
 std::optional<Value> Lowering::listOf(const Expr& e, ExprGraph* field) {
-    if (static_cast<int64_t>(e.args().size()) > kMaxListLength) {
-        error(e.loc, "list longer than " + std::to_string(kMaxListLength) + " elements");
+    if (static_cast<int64_t>(e.args().size()) > mLimits.listLength) {
+        error(e.loc, "list longer than " + std::to_string(mLimits.listLength) + " elements");
         return std::nullopt;
     }
     ValueList items;
@@ -208,8 +210,8 @@ std::optional<Value> Lowering::comprehension(const Expr& e, ExprGraph* field) {
         }
         auto v = evaluate(e.args()[1], field);
         if (!v) return false;
-        if (static_cast<int64_t>(items.size()) >= kMaxListLength) {
-            error(e.start, "list longer than " + std::to_string(kMaxListLength) + " elements");
+        if (static_cast<int64_t>(items.size()) >= mLimits.listLength) {
+            error(e.start, "list longer than " + std::to_string(mLimits.listLength) + " elements");
             return false;
         }
         items.push_back(std::move(*v));
@@ -220,10 +222,10 @@ std::optional<Value> Lowering::comprehension(const Expr& e, ExprGraph* field) {
 }
 
 bool Lowering::countIteration(SourcePos at) {
-    if (++mIterations <= kMaxLoopIterations) return true;
+    if (++mIterations <= mLimits.iterations) return true;
     if (!mLimitReported) {
         mLimitReported = true;
-        error(at, "more than " + std::to_string(kMaxLoopIterations) + " loop iterations in this model",
+        error(at, "more than " + std::to_string(mLimits.iterations) + " loop iterations and function calls in this model",
               "the limit keeps a runaway loop from hanging; see docs/language.md, Limits");
     }
     return false;
@@ -398,10 +400,30 @@ std::optional<Value> Lowering::builtinValue(const Expr& e, const std::vector<Val
     return Value::ofString(std::move(out));
 }
 
+namespace {
+
+/// The shortest text that reads back as the same double (whole numbers below 2^53 as
+/// integers), so echo shows exactly what a value is: 0.1 * 3 prints 0.30000000000000004.
+std::string exactNumber(double v) {
+    char buf[32];
+    if (v == std::floor(v) && std::fabs(v) < 9007199254740992.0) {
+        std::snprintf(buf, sizeof buf, "%.0f", v == 0 ? 0.0 : v);  // no "-0"
+        return buf;
+    }
+    for (int precision = 1; precision <= 17; ++precision) {
+        std::snprintf(buf, sizeof buf, "%.*g", precision, v);
+        if (std::strtod(buf, nullptr) == v) break;
+    }
+    return buf;
+}
+
+}  // namespace
+
 std::string Lowering::show(const Value& v) const {
     switch (v.type) {
-        case Value::Type::Number: return formatNumber(v.number);
-        case Value::Type::Vector: return formatVector(v.vector);
+        case Value::Type::Number: return exactNumber(v.number);
+        case Value::Type::Vector:
+            return "<" + exactNumber(v.vector.x) + ", " + exactNumber(v.vector.y) + ", " + exactNumber(v.vector.z) + ">";
         case Value::Type::Bool: return v.truth() ? "true" : "false";
         case Value::Type::String: return "\"" + v.string() + "\"";
         case Value::Type::Field: return "<function of x, y, z>";

@@ -36,10 +36,12 @@ constexpr int kMaxLoweringDepth = 2000;
 /// How deeply function calls may nest (recursion included). Each call level costs a few
 /// lowering levels, so this stays far below kMaxLoweringDepth.
 constexpr int kMaxCallDepth = 100;
-/// Iterations of all loops and list comprehensions in one model together.
+/// Iterations of all loops and list comprehensions, plus function calls (those not answered
+/// from the memo), in one model together: about 10 to 30 seconds of evaluation.
 constexpr int64_t kMaxLoopIterations = 100'000'000;
-/// Elements of one list (a range turned into a list counts too).
-constexpr int64_t kMaxListLength = 10'000'000;
+/// Elements of one list (a range turned into a list counts too): a value takes about 100
+/// bytes, so the longest list takes about 100 MB.
+constexpr int64_t kMaxListLength = 1'000'000;
 /// Bytes of one string, written or built by concatenation.
 constexpr int64_t kMaxStringLength = 1 << 20;
 /// Primitives one model may build (each sphere, box, … counted once per time it is made;
