@@ -29,6 +29,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -135,6 +136,14 @@ private:
     bool expandChildren(const ArenaList<Solid>& children, std::vector<NodePtr>& out);
 
     std::optional<Value> finite(Value v, SourcePos at, const std::string& what);
+    static bool isFinite(const Value& v);
+    /// finite() with the message built only when it is needed (numbers are formatted slowly).
+    template <class Message>
+    std::optional<Value> finiteLazy(Value v, SourcePos at, const Message& what) {
+        if (isFinite(v)) return v;
+        error(at, "value is not finite: " + what());
+        return std::nullopt;
+    }
     /// Evaluates a property (which must exist) and checks its type against its spec.
     std::optional<Value> propertyValue(const PropertyBlock& block, const std::string& name);
     /// Read an optional property into `out` (left alone when absent); false on any error.
@@ -195,6 +204,7 @@ private:
     /// Results of calls that made solids, by function and argument values: the same call
     /// returns the same shared subtree.
     std::unordered_map<std::string, Value> mCallMemo;
+    std::unordered_set<const Statement*> mReturnsOther;  ///< functions seen returning a non-solid
     int64_t mIterations = 0;
     int64_t mPrimitives = 0;
     bool mLimitReported = false;

@@ -133,9 +133,14 @@ std::optional<Value> Lowering::callFunction(const Statement& fn, const Expr& cal
         pushLocal(params[i].name, *bound[i]);
     }
     std::string key;
-    bool memo = field == nullptr;  // x, y, z belong to one implicit's graph: never shared
-    key.append(reinterpret_cast<const char*>(&fn), sizeof(&fn));
-    for (const auto& v : bound) memo = memo && appendKey(*v, key);
+    // Only calls that make solids are memoised (their sharing is the point); a function seen
+    // to return anything else is not looked up again. x, y, z belong to one implicit's graph.
+    bool memo = field == nullptr && !mReturnsOther.count(&fn);
+    if (memo) {
+        const Statement* id = &fn;
+        key.append(reinterpret_cast<const char*>(&id), sizeof id);
+        for (const auto& v : bound) memo = memo && appendKey(*v, key);
+    }
     if (memo) {
         if (const auto hit = mCallMemo.find(key); hit != mCallMemo.end()) {
             leave();
@@ -148,7 +153,8 @@ std::optional<Value> Lowering::callFunction(const Statement& fn, const Expr& cal
     }
     auto result = evaluate(*fn.expr, field);
     leave();
-    if (result && memo) mCallMemo.emplace(std::move(key), *result);
+    if (result && result->type != Value::Type::Solid) mReturnsOther.insert(&fn);
+    else if (result && memo) mCallMemo.emplace(std::move(key), *result);
     return result;
 }
 

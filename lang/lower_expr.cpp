@@ -85,14 +85,16 @@ ExprId powerField(ExprGraph& graph, const Value& a, const Value& b) {
 }  // namespace
 
 std::optional<Value> Lowering::finite(Value v, SourcePos at, const std::string& what) {
-    const bool ok = v.type == Value::Type::Number   ? std::isfinite(v.number)
-                    : v.type == Value::Type::Vector ? std::isfinite(v.vector.x) && std::isfinite(v.vector.y) &&
-                                                          std::isfinite(v.vector.z)
-                                                    : true;
-    if (ok) return v;
-    error(at, "value is not finite: " + what);
-    return std::nullopt;
+    return finiteLazy(std::move(v), at, [&] { return what; });
 }
+
+bool Lowering::isFinite(const Value& v) {
+    return v.type == Value::Type::Number   ? std::isfinite(v.number)
+           : v.type == Value::Type::Vector ? std::isfinite(v.vector.x) && std::isfinite(v.vector.y) &&
+                                                 std::isfinite(v.vector.z)
+                                           : true;
+}
+
 
 std::optional<Value> Lowering::evaluate(const Expr& e, ExprGraph* field) {
     if (!enter(e.loc)) return std::nullopt;
@@ -103,7 +105,8 @@ std::optional<Value> Lowering::evaluate(const Expr& e, ExprGraph* field) {
 
     switch (e.kind) {
         case Expr::Kind::Number:
-            return finite(Value::ofNumber(e.number), e.loc, mSink.textAt(e.loc, e.count) + " is too large for a double");
+            return finiteLazy(Value::ofNumber(e.number), e.loc,
+                              [&] { return mSink.textAt(e.loc, e.count) + " is too large for a double"; });
         case Expr::Kind::Name: return evaluateName(e, field);
         case Expr::Kind::Call: return evaluateCall(e, field);
         case Expr::Kind::Vector: {
@@ -166,12 +169,12 @@ std::optional<Value> Lowering::arithmetic(char op, const Value& a, const Value& 
             return std::nullopt;
         }
         const double r = a.number - b.number * std::floor(a.number / b.number);
-        return finite(Value::ofNumber(r), at, formatNumber(a.number) + " % " + formatNumber(b.number));
+        return finiteLazy(Value::ofNumber(r), at, [&] { return formatNumber(a.number) + " % " + formatNumber(b.number); });
     }
     if (a.type == T::Number && b.type == T::Number) {
         const double r = applyConstant(operatorOp(op), a.number, b.number);
-        return finite(Value::ofNumber(r), at,
-                      formatNumber(a.number) + " " + op + " " + formatNumber(b.number) + " = " + formatNumber(r));
+        return finiteLazy(Value::ofNumber(r), at, [&] { return
+                      formatNumber(a.number) + " " + op + " " + formatNumber(b.number) + " = " + formatNumber(r); });
     }
     if (a.type == T::Field || b.type == T::Field) {
         if (a.type == T::Vector || b.type == T::Vector) return mistyped();
@@ -187,7 +190,7 @@ std::optional<Value> Lowering::arithmetic(char op, const Value& a, const Value& 
         r = op == '*' ? a.vector * b.number : a.vector / b.number;
     else
         return mistyped();
-    return finite(Value::ofVector(r), at, "the result is " + formatVector(r));
+    return finiteLazy(Value::ofVector(r), at, [&] { return "the result is " + formatVector(r); });
 }
 
 std::optional<double> Lowering::numberValue(const Expr& e, const char* what) {
@@ -330,9 +333,11 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
     const auto apply = [&](Op op, const Value& a, const Value& b) -> std::optional<Value> {
         if (a.type == Value::Type::Number && b.type == Value::Type::Number) {
             const double r = applyConstant(op, a.number, b.number);
-            std::string call = name + "(" + formatNumber(a.number);
-            if (fn->arity > 1) call += ", " + formatNumber(b.number);
-            return finite(Value::ofNumber(r), e.loc, call + ") = " + formatNumber(r));
+            return finiteLazy(Value::ofNumber(r), e.loc, [&] {
+                std::string call = name + "(" + formatNumber(a.number);
+                if (fn->arity > 1) call += ", " + formatNumber(b.number);
+                return call + ") = " + formatNumber(r);
+            });
         }
         if (fn->arity == 1) return Value::ofField(field->unary(op, a.field));
         return Value::ofField(field->binary(op, asField(a, *field), asField(b, *field)));
