@@ -90,6 +90,10 @@ void Lowering::collectDefinitions(Program& program, Scene& scene) {
             case Statement::Kind::Let: define(mLets, s, "let"); break;
             case Statement::Kind::SolidDef: define(mSolids, s, "solid"); break;
             case Statement::Kind::Function: {
+                if (isBuiltinFunction(s.name)) {
+                    error(s.nameLoc, "'" + s.name + "' is a built-in function and cannot be redefined");
+                    break;
+                }
                 auto [it, inserted] = mFunctions.try_emplace(s.name, &s);
                 if (!inserted)
                     error(s.nameLoc, "function '" + s.name + "' is already defined",

@@ -20,6 +20,7 @@
 #include "csg/expr.h"
 #include "scene/scene.h"
 #include "lang/ast.h"
+#include "lang/eval_limits.h"
 #include "lang/properties.h"
 #include "lang/value.h"
 #include "scene/limits.h"
@@ -34,14 +35,6 @@
 #include <vector>
 
 namespace kerf {
-
-/// The evaluation limits (scene/limits.h); tests lower them to reach them quickly.
-struct EvalLimits {
-    int callDepth = kMaxCallDepth;
-    int64_t iterations = kMaxLoopIterations;
-    int64_t listLength = kMaxListLength;
-    int64_t primitives = kMaxPrimitives;
-};
 
 class Lowering {
 public:
@@ -228,6 +221,9 @@ private:
 /// The empty solid (a union of nothing, e.g. from a loop over an empty range): a marker
 /// compared by identity, never put into a scene. Booleans drop it, objects of it add nothing.
 const NodePtr& emptySolid();
+
+/// True for the names of built-in functions (sin, len, random, …), which a `fn` may not take.
+bool isBuiltinFunction(const std::string& name);
 
 /// Formats a number for messages, shortest form ("1", "0.5", "1e+400" is inf).
 std::string formatNumber(double v);

@@ -84,6 +84,14 @@ ExprId powerField(ExprGraph& graph, const Value& a, const Value& b) {
 
 }  // namespace
 
+bool isBuiltinFunction(const std::string& name) {
+    for (const Function& f : kFunctions)
+        if (f.arity > 0 && name == f.name) return true;
+    for (const char* b : {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
+        if (name == b) return true;
+    return false;
+}
+
 std::optional<Value> Lowering::finite(Value v, SourcePos at, const std::string& what) {
     return finiteLazy(std::move(v), at, [&] { return what; });
 }

@@ -153,6 +153,7 @@ TEST_CASE("functions: positional, named and default arguments") {
     requireOneError("fn f(a) = a;\nlet v = f(1, 2);", 2, 14, "'f' takes 1 argument, got 2");
     requireOneError("fn f(a) = a;\nlet v = f(a = 1, a = 2);", 2, 18, "argument 'a' given twice");
     requireOneError("fn f(a) = a;\nfn f(b) = b;", 2, 4, "function 'f' is already defined");
+    requireOneError("fn sin(a) = a;", 1, 4, "'sin' is a built-in function and cannot be redefined");
 }
 
 TEST_CASE("functions: the same call makes one shared subtree") {
