@@ -118,6 +118,10 @@ TEST_CASE("statements: scopes, shadowing and order independence") {
     // Top-level names may still be used before their line; block lets only after theirs.
     const Scene s = compiles("for i in 0 .. 1 { let c = <i * k, 0, 0>; object sphere { center c }; }\nlet k = 10;");
     CHECK(sphereCenter(core(s.objects[1])) == Vec3(10, 0, 0));
+    // Solids are values of lets, used before their line like any top-level name.
+    const Scene v = compiles("object s;\nlet s = sphere { radius r };\nlet r = q * 2;\nlet q = 0.25;");
+    CHECK(std::get<SphereParams>(core(v.objects[0]).params()).radius == 0.5);
+    requireOneError("let a = b;\nlet b = [a];", 2, 10, "let 'a' refers to itself through 'b' → 'a'");
     // A loop variable shadows a top-level let inside the loop only.
     const Scene sh = compiles("let i = 100;\nfor i in 0 .. 0 { object sphere { center <i, 0, 0> }; }\n"
                               "object sphere { center <i, 0, 0> };");
