@@ -69,7 +69,7 @@ NodePtr Lowering::lowerSolid(const Solid& s) {
         case Solid::Kind::Else: {  // written where one solid goes (not in a Boolean body)
             std::vector<NodePtr> children;
             const ArenaList<Solid> one(&s, 1);
-            if (expandChildren(one, children)) {
+            if (expandChildren(s.kind == Solid::Kind::Else ? s.children : one, children)) {
                 node = children.empty() ? emptySolid()
                        : children.size() == 1 ? children[0]
                                               : limitDepth(makeBoolean(BoolOp::Union, std::move(children)), s.loc);
