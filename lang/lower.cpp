@@ -22,7 +22,7 @@ bool Lowering::enter(SourcePos at) {
     --mDepth;
     if (mTooDeepReported) return false;  // one report; the rest of the chain fails quietly
     mTooDeepReported = true;
-    error(at, "nested too deeply through named solids or lets (more than " +
+    error(at, "nested too deeply through named solids, lets or function calls (more than " +
                   std::to_string(kMaxLoweringDepth) + " levels)");
     return false;
 }
