@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <unordered_map>
 
 namespace kerf {
 
@@ -276,12 +277,18 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
             return std::nullopt;
         }
     }
+    // One hash instead of a string compare per built-in: calls are the inner loop of models.
+    static const std::unordered_map<std::string, int> kBuiltinIndex = [] {
+        std::unordered_map<std::string, int> index;
+        for (size_t i = 0; i < kFunctions.size(); ++i)
+            if (kFunctions[i].arity > 0) index.emplace(kFunctions[i].name, static_cast<int>(i));
+        for (const char* b : {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
+            index.emplace(b, -1);
+        return index;
+    }();
+    const auto builtin = kBuiltinIndex.find(e.name());
     {
-        static const char* const kValueBuiltins[] = {"len", "dot", "cross", "length", "normalize",
-                                                     "deg", "rad", "random", "str"};
-        bool isValueBuiltin = false;
-        for (const char* b : kValueBuiltins) isValueBuiltin = isValueBuiltin || e.name() == b;
-        if (isValueBuiltin) {
+        if (builtin != kBuiltinIndex.end() && builtin->second < 0) {
             std::vector<Value> args;
             for (const Expr& a : e.args()) {
                 auto v = evaluate(a, field);
@@ -296,9 +303,7 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
             return builtinValue(e, args, handled);
         }
     }
-    const Function* fn = nullptr;
-    for (const Function& f : kFunctions)
-        if (e.name() == f.name && f.arity > 0) fn = &f;
+    const Function* fn = builtin != kBuiltinIndex.end() ? &kFunctions[builtin->second] : nullptr;
     if (!fn) {
         std::vector<std::string> names;
         for (const Function& f : kFunctions)
