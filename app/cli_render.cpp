@@ -153,7 +153,7 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
                     "normal=FILE.exr (world normal); may be repeated")
         ->type_name("KIND=FILE");
     cmd->add_flag("--stats", line.stats, "Print statistics to stderr");
-    cmd->add_flag("-q,--quiet", line.quiet, "No progress bar");
+    cmd->add_flag("-q,--quiet", line.quiet, "No progress bar and no echo lines from the model");
     return cmd;
 }
 
@@ -162,7 +162,7 @@ int runRender(const RenderCommandLine& line) {
     const OutputPlan plan = planOutputs(line);
 
     const auto compileStart = Clock::now();
-    const std::optional<Scene> scene = loadModel(line.model, std::cerr);
+    const std::optional<Scene> scene = loadModel(line.model, std::cerr, line.quiet);
     if (!scene) return kExitUsage;
     const double secondsCompile = secondsSince(compileStart);
 

@@ -27,7 +27,7 @@ std::string unreadableReason(const std::string& path) {
 
 }  // namespace
 
-std::optional<Scene> loadModel(const std::string& path, std::ostream& err) {
+std::optional<Scene> loadModel(const std::string& path, std::ostream& err, bool quiet) {
     const std::string reason = unreadableReason(path);
     if (!reason.empty()) {
         err << "kerf: error: cannot read model file '" << path << "': " << reason << "\n";
@@ -35,7 +35,7 @@ std::optional<Scene> loadModel(const std::string& path, std::ostream& err) {
     }
     DiagnosticSink sink;
     std::optional<Scene> scene = compileFile(path, sink);
-    if (!sink.diagnostics().empty()) err << sink.format();
+    if (!sink.diagnostics().empty()) err << sink.format(!quiet);  // --quiet silences echo
     if (!scene && !sink.hasErrors()) {
         // The contract says errors are reported; never fail silently if one was not.
         err << "kerf: error: '" << path << "' could not be compiled\n";

@@ -14,6 +14,7 @@ namespace kerf::app {
 /// Compiles the model at `path`. On failure prints to `err` either `kerf: error: cannot read
 /// model file …` or the compiler's diagnostics, and returns nullopt (the caller exits with
 /// kExitUsage). Warnings are printed too when the model compiles.
-std::optional<Scene> loadModel(const std::string& path, std::ostream& err);
+/// `quiet` leaves out the model's echo lines (errors and warnings are always printed).
+std::optional<Scene> loadModel(const std::string& path, std::ostream& err, bool quiet = false);
 
 }  // namespace kerf::app

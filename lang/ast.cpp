@@ -6,8 +6,6 @@
 
 namespace kerf {
 
-namespace {
-
 static_assert(sizeof(Expr) % 8 == 0 && sizeof(Solid) % 8 == 0 && sizeof(Property) % 8 == 0 &&
                   sizeof(Modifier) % 8 == 0,
               "node sizes are multiples of 8, so the scratch arena's count bounds the copy");
@@ -34,6 +32,7 @@ public:
 
 private:
     void fix(Expr& e) {
+        if (e.kind == Expr::Kind::SolidValue) e.solid = one(e.solid);
         const ExprList args = e.args();
         if (!args.empty()) e.first = list(args).begin();
     }
@@ -62,26 +61,32 @@ private:
     size_t mUsed = 0;
 };
 
-}  // namespace
+void Statement::moveTreeWith(TreeCopier& copier) {
+    expr = copier.one(expr);
+    solid = copier.one(solid);
+    properties = copier.list(properties);
+    if (!block) return;
+    for (Statement& s : block->body) s.moveTreeWith(copier);
+    for (Statement& s : block->elseBody) s.moveTreeWith(copier);
+}
 
 void Statement::takeTree(size_t bound) {
-    if (bound == 0 || (!expr && !solid && properties.empty())) {
+    if (bound == 0 || (!expr && !solid && properties.empty() && !block)) {
         releaseTree();
         return;
     }
     const size_t words = (bound + sizeof(std::max_align_t) - 1) / sizeof(std::max_align_t);
-    std::unique_ptr<std::max_align_t[]> block(new std::max_align_t[words]);
-    TreeCopier copier(reinterpret_cast<std::byte*>(block.get()), words * sizeof(std::max_align_t));
-    expr = copier.one(expr);
-    solid = copier.one(solid);
-    properties = copier.list(properties);
-    tree = std::move(block);
+    std::unique_ptr<std::max_align_t[]> memory(new std::max_align_t[words]);
+    TreeCopier copier(reinterpret_cast<std::byte*>(memory.get()), words * sizeof(std::max_align_t));
+    moveTreeWith(copier);
+    tree = std::move(memory);
 }
 
 void Statement::releaseTree() {
     expr = nullptr;
     solid = nullptr;
     properties = {};
+    block.reset();
     tree.reset();
 }
 

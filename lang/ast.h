@@ -53,8 +53,20 @@ struct Expr {
         Vector,  ///< `<args[0], args[1], args[2]>`
         Name,    ///< `name`: a let, pi, or x/y/z inside an implicit function
         Negate,  ///< `-args[0]`
-        Binary,  ///< `args[0] op args[1]`, op one of + - * / ^
-        Call,    ///< `name(args…)`
+        Binary,  ///< `args[0] op args[1]`, op one of + - * / % ^, comparisons < > l(<=) g(>=)
+                 ///< e(==) n(!=), and the short-circuit logic & (and) | (or)
+        Call,    ///< `name(args…)`; a named argument is a NamedArg in args
+        Bool,    ///< `true` / `false` (number 1 or 0)
+        String,  ///< `"text"` (ident: the text, interned)
+        List,    ///< `[args…]`
+        Not,     ///< `not args[0]`
+        Choose,  ///< `args[0] ? args[1] : args[2]`
+        Index,   ///< `args[0][args[1]]`
+        Member,  ///< `args[0].ident` (x, y or z)
+        Range,   ///< `args[0] .. args[1]`, `step args[2]` when there are three
+        Comprehension,  ///< `[for ident in args[0] (if args[2])?: args[1]]`
+        SolidValue,     ///< a solid written where a value goes: `sphere { … }`
+        NamedArg,       ///< `ident = args[0]`, only as an argument of a Call
     };
     Kind kind = Kind::Number;
     char op = 0;
@@ -64,13 +76,21 @@ struct Expr {
     SourcePos start;          ///< the first token of the whole expression
     union {
         double number = 0.0;        ///< Number
-        const std::string* ident;   ///< Name, Call (interned)
+        const std::string* ident;   ///< Name, Call, String, Member, Comprehension, NamedArg (interned)
+        const struct Solid* solid;  ///< SolidValue
     };
     const Expr* first = nullptr;  ///< the operands, `count` of them side by side
 
-    Name name() const { return Name(kind == Kind::Name || kind == Kind::Call ? ident : nullptr); }
+    bool hasIdent() const {
+        return kind == Kind::Name || kind == Kind::Call || kind == Kind::String || kind == Kind::Member ||
+               kind == Kind::Comprehension || kind == Kind::NamedArg;
+    }
+    Name name() const { return Name(hasIdent() ? ident : nullptr); }
     ExprList args() const {
-        return kind == Kind::Number || kind == Kind::Name ? ExprList() : ExprList(first, count);
+        return kind == Kind::Number || kind == Kind::Name || kind == Kind::Bool || kind == Kind::String ||
+                       kind == Kind::SolidValue
+                   ? ExprList()
+                   : ExprList(first, count);
     }
 };
 
@@ -104,7 +124,12 @@ struct Solid {
     enum class Kind : uint8_t {
         Primitive,  ///< `kind { properties }`; the kind is checked when lowering
         Boolean,    ///< `union|intersection|difference|xor { children }`
-        Reference,  ///< the name of a `solid` definition
+        Reference,  ///< the name of a `solid` definition, or of a let or local holding a solid
+        Call,       ///< a function call that makes a solid: properties[0].expr is the call
+        For,        ///< `for NAME in EXPR { children }`: properties[0] holds NAME and EXPR
+        If,         ///< `if EXPR { children }`: properties[0].expr is the condition; an else
+                    ///< part is a last child of kind Else
+        Else,       ///< `else { children }` (an `else if` is one If child)
     };
     Kind kind = Kind::Primitive;
     SourcePos loc;     ///< of the kind keyword or the name
@@ -114,8 +139,26 @@ struct Solid {
     ArenaList<Modifier> modifiers;
 };
 
+struct Statement;
+class TreeCopier;
+
+/// The statements inside a top-level `for` or `if` (and its else part).
+struct Block {
+    std::vector<Statement> body;
+    std::vector<Statement> elseBody;
+    bool hasElse = false;
+};
+
 struct Statement {
-    enum class Kind : uint8_t { Let, SolidDef, Object, Material, Camera, Light, Mist, Background, Render, Include };
+    enum class Kind : uint8_t {
+        Let, SolidDef, Object, Material, Camera, Light, Mist, Background, Render, Include,
+        For,              ///< name: the variable, expr: the range or list, block->body
+        If,               ///< expr: the condition, block->body and block->elseBody
+        Function,         ///< `fn name(params) = expr;` params are properties (expr: the default)
+        Assert,           ///< expr: the condition, properties[0].expr: the message (optional)
+        Echo,             ///< properties: the values printed, each expr
+        DefaultMaterial,  ///< name: the material
+    };
     Kind kind = Kind::Let;
     /// A definition whose body had a syntax error (already reported): its name exists, so
     /// uses are not reported again, but it is not lowered.
@@ -126,6 +169,7 @@ struct Statement {
     ExprPtr expr = nullptr;  ///< let, background
     SolidPtr solid = nullptr;  ///< solid, object
     ArenaList<Property> properties;  ///< material, camera, light, mist, render
+    std::unique_ptr<Block> block;    ///< for, if
     /// The statement's own nodes (expr, solid, properties and all below), in one exact-size
     /// block, so that lowering can free them statement by statement (releaseTree).
     std::unique_ptr<std::max_align_t[]> tree;
@@ -133,6 +177,9 @@ struct Statement {
     /// Moves the statement's nodes out of a scratch arena into its own block; `bound` is at
     /// least their total size (the bytes the scratch arena handed out for this statement).
     void takeTree(size_t bound);
+    /// The same, for a statement nested in a block: its nodes go into the enclosing
+    /// statement's block through `copier` (ast.cpp).
+    void moveTreeWith(TreeCopier& copier);
     /// Frees the nodes; what stays (kind, names, positions, broken) still serves messages.
     void releaseTree();
 };

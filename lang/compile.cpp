@@ -90,14 +90,14 @@ private:
     std::vector<std::pair<std::string, std::string>> mStack;  // identity, name as shown
 };
 
-std::optional<Scene> compileSource(const SourceText& source, DiagnosticSink& sink) {
+std::optional<Scene> compileSource(const SourceText& source, DiagnosticSink& sink, EvalLimits limits) {
     const int errorsBefore = sink.errorCount();
     const size_t diagnosticsBefore = sink.diagnostics().size();
     Program program;
     Loader(sink).addText(source, program);
     // Lowering runs even after syntax errors: broken definitions keep their names, so the
     // semantic errors found are real ones, not echoes of the syntax error.
-    std::optional<Scene> scene = Lowering(sink).lower(program);
+    std::optional<Scene> scene = Lowering(sink, limits).lower(program);
     sink.sortByLocation(diagnosticsBefore);
     if (sink.errorCount() > errorsBefore) return std::nullopt;
     return scene;
@@ -105,7 +105,7 @@ std::optional<Scene> compileSource(const SourceText& source, DiagnosticSink& sin
 
 }  // namespace
 
-std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink) {
+std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink, EvalLimits limits) {
     std::string why;
     auto bytes = readFileBytes(path, why);
     if (!bytes) {
@@ -114,12 +114,14 @@ std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink) 
     }
     return compileSource(SourceText{std::make_shared<const std::string>(path),
                                     std::make_shared<const std::string>(std::move(*bytes))},
-                         sink);
+                         sink, limits);
 }
 
-std::optional<Scene> compileString(const std::string& text, const std::string& name, DiagnosticSink& sink) {
+std::optional<Scene> compileString(const std::string& text, const std::string& name, DiagnosticSink& sink,
+                                   EvalLimits limits) {
     return compileSource(
-        SourceText{std::make_shared<const std::string>(name), std::make_shared<const std::string>(text)}, sink);
+        SourceText{std::make_shared<const std::string>(name), std::make_shared<const std::string>(text)}, sink,
+        limits);
 }
 
 }  // namespace kerf

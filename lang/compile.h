@@ -4,6 +4,7 @@
 
 #include "scene/scene.h"
 #include "lang/diagnostic.h"
+#include "lang/eval_limits.h"
 
 #include <optional>
 #include <string>
@@ -12,11 +13,11 @@ namespace kerf {
 
 /// Reads, parses and lowers a model file (following its includes). On any error returns
 /// nullopt with every error found reported to `sink`.
-std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink);
+std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink, EvalLimits limits = {});
 
 /// The same for text in memory; `name` is used in diagnostics and to resolve includes
 /// (relative to its folder).
 std::optional<Scene> compileString(const std::string& text, const std::string& name,
-                                   DiagnosticSink& sink);
+                                   DiagnosticSink& sink, EvalLimits limits = {});
 
 }  // namespace kerf

@@ -36,7 +36,10 @@ public:
             if (!mSolidStack.empty()) {
                 const Solid* solid = mSolidStack.back();
                 mSolidStack.pop_back();
-                if (solid->kind == Solid::Kind::Reference) add(mSolids, solid->name, solid->loc, uses);
+                if (solid->kind == Solid::Kind::Reference) {
+                    add(mSolids, solid->name, solid->loc, uses);
+                    if (!mSolids.count(solid->name)) add(mLets, solid->name, solid->loc, uses);  // a let holding a solid
+                }
                 for (const Property& p : solid->properties) {
                     if (p.expr) mExprs.push_back(p.expr);
                     if (p.solid) mSolidStack.push_back(p.solid);
@@ -48,7 +51,11 @@ public:
             }
             const Expr* e = mExprs.back();
             mExprs.pop_back();
-            if (e->kind == Expr::Kind::Name) add(mLets, e->name(), e->loc, uses);
+            if (e->kind == Expr::Kind::Name) {
+                add(mLets, e->name(), e->loc, uses);
+                add(mSolids, e->name(), e->loc, uses);  // a solid used as a value
+            }
+            if (e->kind == Expr::Kind::SolidValue) mSolidStack.push_back(e->solid);
             for (const Expr& a : e->args()) mExprs.push_back(&a);
         }
         // The walk popped from the back; uses in the order written read best in messages.

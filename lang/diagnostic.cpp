@@ -11,7 +11,7 @@ void DiagnosticSink::report(Diagnostic d) {
 }
 
 void DiagnosticSink::error(const SourceLoc& loc, std::string message, std::string hint) {
-    report(Diagnostic{loc, Severity::Error, std::move(message), std::move(hint)});
+    report(Diagnostic{loc, Severity::Error, std::move(message), std::move(hint), {}});
 }
 
 void DiagnosticSink::error(SourcePos pos, std::string message, std::string hint) {
@@ -78,6 +78,7 @@ const char* severityName(Severity s) {
         case Severity::Error: return "error";
         case Severity::Warning: return "warning";
         case Severity::Note: return "note";
+        case Severity::Echo: return "echo";
     }
     return "error";
 }
@@ -141,10 +142,14 @@ std::string clipAround(const std::string& line, int& col) {
 
 }  // namespace
 
-std::string DiagnosticSink::format() const {
+std::string DiagnosticSink::format(bool withEchoes) const {
     std::string out;
     for (const Diagnostic& d : mDiagnostics) {
         const std::string fileName = d.loc.file ? *d.loc.file : std::string("<input>");
+        if (d.severity == Severity::Echo) {
+            if (withEchoes) out += fileName + ':' + std::to_string(d.loc.line) + ": echo: " + d.message + '\n';
+            continue;
+        }
         out += fileName;
         if (d.loc.line > 0) out += ':' + std::to_string(d.loc.line) + ':' + std::to_string(d.loc.col);
         out += std::string(": ") + severityName(d.severity) + ": " + d.message + '\n';
@@ -161,6 +166,7 @@ std::string DiagnosticSink::format() const {
             }
         }
         if (!d.hint.empty()) out += "  hint: " + d.hint + '\n';
+        for (const std::string& note : d.notes) out += "  note: " + note + '\n';
     }
     return out;
 }

@@ -26,13 +26,17 @@ struct SourcePos {
     static constexpr uint32_t kNoFile = ~uint32_t(0);
 };
 
-enum class Severity { Error, Warning, Note };
+/// Echo: a line a model prints with `echo` (shown as `FILE:LINE: echo: …`, not an error).
+enum class Severity { Error, Warning, Note, Echo };
 
 struct Diagnostic {
     SourceLoc loc;
     Severity severity = Severity::Error;
     std::string message;
     std::string hint;  ///< may be empty
+    /// Printed after the hint as `note: …`: e.g. the chain of function calls an error is in,
+    /// innermost first ("in call to tooth at gear.kerf:30:5").
+    std::vector<std::string> notes;
 };
 
 /// Collects diagnostics and knows the text of every file read, to print the offending line.
@@ -62,8 +66,9 @@ public:
     void sortByLocation(size_t from = 0);
 
     /// `FILE:LINE:COL: error: message`, then the source line and a caret under the column,
-    /// then `hint: …` where there is one; one block per diagnostic.
-    std::string format() const;
+    /// then `hint: …` where there is one and `note: …` lines; one block per diagnostic.
+    /// Echo lines are `FILE:LINE: echo: …` alone, left out when `withEchoes` is false.
+    std::string format(bool withEchoes = true) const;
 
 private:
     std::vector<Diagnostic> mDiagnostics;

@@ -28,6 +28,15 @@ std::string describe(TokenKind kind) {
         case TokenKind::Star: return "'*'";
         case TokenKind::Slash: return "'/'";
         case TokenKind::Caret: return "'^'";
+        case TokenKind::Percent: return "'%'";
+        case TokenKind::Dot: return "'.'";
+        case TokenKind::DotDot: return "'..'";
+        case TokenKind::Question: return "'?'";
+        case TokenKind::Colon: return "':'";
+        case TokenKind::EqualEqual: return "'=='";
+        case TokenKind::NotEqual: return "'!='";
+        case TokenKind::LessEqual: return "'<='";
+        case TokenKind::GreaterEqual: return "'>='";
         case TokenKind::Error: return "an invalid token";
         case TokenKind::End: return "end of file";
     }
@@ -174,6 +183,13 @@ private:
             return true;
         }
         if (c == '"') return lexString(t, start);
+        if (const TokenKind pair = twoCharacters(c, peek(1)); pair != TokenKind::End) {
+            advance(2);
+            t.kind = pair;
+            t.text = mText.substr(start, 2);
+            t.length = 2;
+            return true;
+        }
         const TokenKind kind = punctuation(c);
         if (kind != TokenKind::End) {
             advance();
@@ -188,7 +204,7 @@ private:
 
     bool lexNumber(Token& t, size_t start) {
         while (isDigit(peek())) advance();
-        if (peek() == '.') {
+        if (peek() == '.' && peek(1) != '.') {  // 1..5 is a range, not 1. then .5
             advance();
             while (isDigit(peek())) advance();
         }
@@ -232,8 +248,23 @@ private:
         return true;
     }
 
+    static TokenKind twoCharacters(char a, char b) {
+        if (a == '.' && b == '.') return TokenKind::DotDot;
+        if (b != '=') return TokenKind::End;
+        switch (a) {
+            case '=': return TokenKind::EqualEqual;
+            case '!': return TokenKind::NotEqual;
+            case '<': return TokenKind::LessEqual;
+            case '>': return TokenKind::GreaterEqual;
+            default: return TokenKind::End;
+        }
+    }
+
     static TokenKind punctuation(char c) {
         switch (c) {
+            case '.': return TokenKind::Dot;
+            case '?': return TokenKind::Question;
+            case ':': return TokenKind::Colon;
             case '<': return TokenKind::Less;
             case '>': return TokenKind::Greater;
             case ',': return TokenKind::Comma;
@@ -250,6 +281,7 @@ private:
             case '*': return TokenKind::Star;
             case '/': return TokenKind::Slash;
             case '^': return TokenKind::Caret;
+            case '%': return TokenKind::Percent;
             default: return TokenKind::End;
         }
     }

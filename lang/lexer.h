@@ -16,7 +16,8 @@ namespace kerf {
 enum class TokenKind {
     Number, String, Identifier,
     Less, Greater, Comma, Semicolon, LBrace, RBrace, LParen, RParen, LBracket, RBracket,
-    Equals, Plus, Minus, Star, Slash, Caret,
+    Equals, Plus, Minus, Star, Slash, Caret, Percent,
+    Dot, DotDot, Question, Colon, EqualEqual, NotEqual, LessEqual, GreaterEqual,
     Error,  ///< characters the lexer already reported; the parser stays silent about them
     End,
 };

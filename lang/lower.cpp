@@ -2,6 +2,7 @@
 #include "lang/lower.h"
 
 #include "csg/format.h"
+#include "csg/solids.h"
 #include "lang/definition_order.h"
 
 #include <algorithm>
@@ -21,13 +22,27 @@ bool Lowering::enter(SourcePos at) {
     --mDepth;
     if (mTooDeepReported) return false;  // one report; the rest of the chain fails quietly
     mTooDeepReported = true;
-    error(at, "nested too deeply through named solids or lets (more than " +
+    error(at, "nested too deeply through named solids, lets or function calls (more than " +
                   std::to_string(kMaxLoweringDepth) + " levels)");
     return false;
 }
 
 void Lowering::error(SourcePos loc, std::string message, std::string hint) {
-    mSink.error(loc, std::move(message), std::move(hint));
+    Diagnostic d{mSink.locate(loc), Severity::Error, std::move(message), std::move(hint), {}};
+    // Innermost first; a deep recursion shows its two ends, not a hundred equal lines.
+    constexpr size_t kInner = 5, kOuter = 3;
+    for (size_t i = mCalls.size(); i-- > 0;) {
+        const size_t fromInside = mCalls.size() - 1 - i;
+        if (mCalls.size() > kInner + kOuter + 1 && fromInside >= kInner && i >= kOuter) {
+            if (fromInside == kInner)
+                d.notes.push_back("… " + std::to_string(mCalls.size() - kInner - kOuter) + " more calls …");
+            continue;
+        }
+        const SourceLoc at = mSink.locate(mCalls[i].at);
+        d.notes.push_back("in call to " + *mCalls[i].name + " at " + (at.file ? *at.file : std::string("<input>")) +
+                          ":" + std::to_string(at.line) + ":" + std::to_string(at.col));
+    }
+    mSink.report(std::move(d));
 }
 
 namespace {
@@ -45,6 +60,11 @@ std::optional<Scene> Lowering::lower(Program& program) {
     collectDefinitions(program, scene);
     lowerDefinitions();
     for (Statement& s : program.statements) lowerStatement(s, scene);
+    if (mDefaultMaterial) {
+        // Materials nest innermost-first, so parts that name their own keep it.
+        for (NodePtr& object : scene.objects)
+            if (object->kind() != NodeKind::Material) object = makeMaterial(object, *mDefaultMaterial);
+    }
     if (mSink.errorCount() > errorsBefore) return std::nullopt;
     return scene;
 }
@@ -69,6 +89,25 @@ void Lowering::collectDefinitions(Program& program, Scene& scene) {
         switch (s.kind) {
             case Statement::Kind::Let: define(mLets, s, "let"); break;
             case Statement::Kind::SolidDef: define(mSolids, s, "solid"); break;
+            case Statement::Kind::Function: {
+                if (isBuiltinFunction(s.name)) {
+                    error(s.nameLoc, "'" + s.name + "' is a built-in function and cannot be redefined");
+                    break;
+                }
+                auto [it, inserted] = mFunctions.try_emplace(s.name, &s);
+                if (!inserted)
+                    error(s.nameLoc, "function '" + s.name + "' is already defined",
+                          "first defined at " + where(mSink.locate(it->second->nameLoc)));
+                break;
+            }
+            case Statement::Kind::DefaultMaterial:
+                if (mDefaultMaterialDef) {
+                    error(s.loc, "default material given twice",
+                          "first given at " + where(mSink.locate(mDefaultMaterialDef->loc)));
+                    break;
+                }
+                mDefaultMaterialDef = &s;
+                break;
             case Statement::Kind::Material:
                 if (define(mMaterials, s, "material")) {
                     mMaterials[s.name].index = static_cast<int>(scene.materials.size());
@@ -80,6 +119,10 @@ void Lowering::collectDefinitions(Program& program, Scene& scene) {
             default: break;
         }
     }
+}
+
+void Lowering::addObject(NodePtr node, Scene& scene) {
+    if (node != emptySolid()) scene.objects.push_back(std::move(node));  // an empty object adds nothing
 }
 
 void Lowering::lowerDefinitions() {
@@ -130,8 +173,22 @@ void Lowering::lowerStatement(Statement& s, Scene& scene) {
             if (mSolids[s.name].def == &s) solidByName(s.name, s.nameLoc);
             break;
         case Statement::Kind::Object:
-            if (NodePtr node = lowerSolid(*s.solid)) scene.objects.push_back(node);
+            if (NodePtr node = lowerSolid(*s.solid)) addObject(node, scene);
             s.releaseTree();
+            break;
+        case Statement::Kind::For:
+            runFor(s, scene);
+            s.releaseTree();
+            break;
+        case Statement::Kind::If:
+            runIf(s, scene);
+            s.releaseTree();
+            break;
+        case Statement::Kind::Assert: runAssert(s); break;
+        case Statement::Kind::Echo: runEcho(s); break;
+        case Statement::Kind::Function: break;  // called where used
+        case Statement::Kind::DefaultMaterial:
+            if (&s == mDefaultMaterialDef) mDefaultMaterial = materialIndex(s.name, s.nameLoc);
             break;
         case Statement::Kind::Material: {
             const MaterialEntry& m = mMaterials[s.name];

@@ -5,21 +5,32 @@
 /// ranges, undefined names and cycles, each reported once at its own location.
 ///
 /// The work is split by subject: lower.cpp (definitions and statements), lower_expr.cpp
-/// (expressions), lower_solids.cpp (solids and modifiers), lower_scene.cpp (materials, camera,
-/// lights, mist, render settings).
+/// (arithmetic expressions), lower_values.cpp (booleans, strings, lists, ranges and the
+/// built-in functions on them), lower_calls.cpp (user functions: scopes, memo, call chain),
+/// lower_blocks.cpp (for, if, assert, echo, and loops inside Boolean bodies),
+/// lower_solids.cpp (solids and modifiers), lower_scene.cpp (materials, camera, lights, mist,
+/// render settings).
+///
+/// Scopes: top-level lets, solids, materials and functions are order-independent. Names made
+/// inside a block (a loop variable, a let in a for or if body, a comprehension variable, a
+/// function's parameters) are local: visible after their line to the end of their block,
+/// shadowing top-level names. A function body sees its parameters and the top level only.
 #pragma once
 
 #include "csg/expr.h"
 #include "scene/scene.h"
 #include "lang/ast.h"
+#include "lang/eval_limits.h"
 #include "lang/properties.h"
 #include "lang/value.h"
 #include "scene/limits.h"
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -27,7 +38,7 @@ namespace kerf {
 
 class Lowering {
 public:
-    explicit Lowering(DiagnosticSink& sink) : mSink(sink) {}
+    explicit Lowering(DiagnosticSink& sink, EvalLimits limits = {}) : mSink(sink), mLimits(limits) {}
 
     /// Lowers the program; nullopt if it reported any error. The syntax tree of each `solid`
     /// definition and `object` is freed once it is lowered (Statement::releaseTree), so the
@@ -57,6 +68,7 @@ private:
 
     // lower.cpp
     void collectDefinitions(Program& program, Scene& scene);
+    void addObject(NodePtr node, Scene& scene);
     /// Lowers the lets and solids each after those it uses (lang/definition_order.h), so
     /// no chain of names recurses; a chain deeper than kMaxNameDepth is an error.
     void lowerDefinitions();
@@ -74,7 +86,57 @@ private:
     std::optional<Value> arithmetic(char op, const Value& a, const Value& b, SourcePos at,
                                     ExprGraph* field);
     std::optional<Value> letValue(const std::string& name, SourcePos use);
+    /// A value that must be a number (its type named in the error otherwise).
+    std::optional<double> numberValue(const Expr& e, const char* what);
+
+    // lower_values.cpp
+    std::optional<Value> evaluateValue(const Expr& e, ExprGraph* field);
+    std::optional<Value> compare(char op, const Value& a, const Value& b, SourcePos at);
+    std::optional<Value> logic(const Expr& e, ExprGraph* field);
+    std::optional<Value> index(const Expr& e, ExprGraph* field);
+    std::optional<Value> member(const Expr& e, ExprGraph* field);
+    std::optional<Value> listOf(const Expr& e, ExprGraph* field);
+    std::optional<Value> comprehension(const Expr& e, ExprGraph* field);
+    std::optional<Value> concatenate(const Value& a, const Value& b, SourcePos at);
+    /// Calls `body(value)` for each element of a range or list expression, with the loop
+    /// variable bound; a range is walked as a + i·step, never materialised. False on error
+    /// (already reported) or when body returns false.
+    bool iterate(const Expr& range, const std::string& var, SourcePos varLoc,
+                 const std::function<bool()>& body);
+    /// Counts one loop iteration against kMaxLoopIterations.
+    bool countIteration(SourcePos at);
+    /// len, dot, cross, length, normalize, deg, rad, random, str; nullopt with `handled`
+    /// false when `name` is none of them.
+    std::optional<Value> builtinValue(const Expr& e, const std::vector<Value>& args, bool& handled);
+    std::string show(const Value& v) const;
+
+    // lower_calls.cpp
+    std::optional<Value> callFunction(const Statement& fn, const Expr& call, ExprGraph* field);
+    /// The local named `name` in the current frame, or null.
+    const Value* local(const std::string& name) const;
+    void pushLocal(const std::string& name, Value v) { mLocals.emplace_back(name, std::move(v)); }
+    /// A solid (or the empty solid) from a value, or an error naming its type.
+    bool solidOf(const Value& v, SourcePos at, NodePtr& out, bool& empty);
+
+    // lower_blocks.cpp
+    void runBlock(const std::vector<Statement>& body, Scene& scene);
+    void runFor(const Statement& s, Scene& scene);
+    void runIf(const Statement& s, Scene& scene);
+    void runAssert(const Statement& s);
+    void runEcho(const Statement& s);
+    /// A Boolean body's children with for and if expanded; false on error. Empty solids
+    /// (a union of nothing) are left out.
+    bool expandChildren(const ArenaList<Solid>& children, std::vector<NodePtr>& out);
+
     std::optional<Value> finite(Value v, SourcePos at, const std::string& what);
+    static bool isFinite(const Value& v);
+    /// finite() with the message built only when it is needed (numbers are formatted slowly).
+    template <class Message>
+    std::optional<Value> finiteLazy(Value v, SourcePos at, const Message& what) {
+        if (isFinite(v)) return v;
+        error(at, "value is not finite: " + what());
+        return std::nullopt;
+    }
     /// Evaluates a property (which must exist) and checks its type against its spec.
     std::optional<Value> propertyValue(const PropertyBlock& block, const std::string& name);
     /// Read an optional property into `out` (left alone when absent); false on any error.
@@ -88,6 +150,8 @@ private:
     NodePtr lowerReference(const Solid& s);
     NodePtr lowerBoolean(const Solid& s);
     NodePtr lowerPrimitive(const Solid& s);
+    /// Counts one primitive against kMaxPrimitives.
+    bool countPrimitive(SourcePos at);
     NodePtr lowerSphere(const Solid& s);
     NodePtr lowerBox(const Solid& s);
     NodePtr lowerCylinder(const Solid& s);
@@ -120,6 +184,25 @@ private:
     void lowerBackground(const Statement& s, Vec3& background);
 
     DiagnosticSink& mSink;
+    EvalLimits mLimits;
+    std::map<std::string, const Statement*> mFunctions;
+    /// Locals, innermost last; a function call hides those below mFrameBase.
+    std::vector<std::pair<std::string, Value>> mLocals;
+    size_t mFrameBase = 0;
+    struct Call {
+        const std::string* name;
+        SourcePos at;
+    };
+    std::vector<Call> mCalls;  ///< the function calls being evaluated, innermost last
+    /// Results of calls that made solids, by function and argument values: the same call
+    /// returns the same shared subtree.
+    std::unordered_map<std::string, Value> mCallMemo;
+    std::unordered_set<const Statement*> mReturnsOther;  ///< functions seen returning a non-solid
+    int64_t mIterations = 0;
+    int64_t mPrimitives = 0;
+    bool mLimitReported = false;
+    std::optional<int> mDefaultMaterial;
+    const Statement* mDefaultMaterialDef = nullptr;
     std::map<std::string, LetEntry> mLets;
     std::map<std::string, SolidEntry> mSolids;
     std::map<std::string, MaterialEntry> mMaterials;
@@ -134,6 +217,13 @@ private:
     const Statement* mRender = nullptr;
     const Statement* mBackground = nullptr;
 };
+
+/// The empty solid (a union of nothing, e.g. from a loop over an empty range): a marker
+/// compared by identity, never put into a scene. Booleans drop it, objects of it add nothing.
+const NodePtr& emptySolid();
+
+/// True for the names of built-in functions (sin, len, random, …), which a `fn` may not take.
+bool isBuiltinFunction(const std::string& name);
 
 /// Formats a number for messages, shortest form ("1", "0.5", "1e+400" is inf).
 std::string formatNumber(double v);

@@ -7,6 +7,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
+#include <unordered_map>
 
 namespace kerf {
 
@@ -83,15 +85,25 @@ ExprId powerField(ExprGraph& graph, const Value& a, const Value& b) {
 
 }  // namespace
 
-std::optional<Value> Lowering::finite(Value v, SourcePos at, const std::string& what) {
-    const bool ok = v.type == Value::Type::Number   ? std::isfinite(v.number)
-                    : v.type == Value::Type::Vector ? std::isfinite(v.vector.x) && std::isfinite(v.vector.y) &&
-                                                          std::isfinite(v.vector.z)
-                                                    : true;
-    if (ok) return v;
-    error(at, "value is not finite: " + what);
-    return std::nullopt;
+bool isBuiltinFunction(const std::string& name) {
+    for (const Function& f : kFunctions)
+        if (f.arity > 0 && name == f.name) return true;
+    for (const char* b : {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
+        if (name == b) return true;
+    return false;
 }
+
+std::optional<Value> Lowering::finite(Value v, SourcePos at, const std::string& what) {
+    return finiteLazy(std::move(v), at, [&] { return what; });
+}
+
+bool Lowering::isFinite(const Value& v) {
+    return v.type == Value::Type::Number   ? std::isfinite(v.number)
+           : v.type == Value::Type::Vector ? std::isfinite(v.vector.x) && std::isfinite(v.vector.y) &&
+                                                 std::isfinite(v.vector.z)
+                                           : true;
+}
+
 
 std::optional<Value> Lowering::evaluate(const Expr& e, ExprGraph* field) {
     if (!enter(e.loc)) return std::nullopt;
@@ -102,7 +114,8 @@ std::optional<Value> Lowering::evaluate(const Expr& e, ExprGraph* field) {
 
     switch (e.kind) {
         case Expr::Kind::Number:
-            return finite(Value::ofNumber(e.number), e.loc, mSink.textAt(e.loc, e.count) + " is too large for a double");
+            return finiteLazy(Value::ofNumber(e.number), e.loc,
+                              [&] { return mSink.textAt(e.loc, e.count) + " is too large for a double"; });
         case Expr::Kind::Name: return evaluateName(e, field);
         case Expr::Kind::Call: return evaluateCall(e, field);
         case Expr::Kind::Vector: {
@@ -127,14 +140,19 @@ std::optional<Value> Lowering::evaluate(const Expr& e, ExprGraph* field) {
             if (!a) return std::nullopt;
             if (a->type == Value::Type::Number) return Value::ofNumber(-a->number);
             if (a->type == Value::Type::Vector) return Value::ofVector(-a->vector);
-            return Value::ofField(field->unary(Op::Neg, a->field));
+            if (a->type == Value::Type::Field) return Value::ofField(field->unary(Op::Neg, a->field));
+            error(e.loc, "cannot negate " + typeName(a->type));
+            return std::nullopt;
         }
         case Expr::Kind::Binary: {
+            if (e.op == '&' || e.op == '|') return logic(e, field);
             const auto a = evaluate(e.args()[0], field);
             const auto b = evaluate(e.args()[1], field);
             if (!a || !b) return std::nullopt;
+            if (std::strchr("<>lgen", e.op)) return compare(e.op, *a, *b, e.loc);
             return arithmetic(e.op, *a, *b, e.loc, field);
         }
+        default: return evaluateValue(e, field);
     }
     return std::nullopt;
 }
@@ -150,10 +168,22 @@ std::optional<Value> Lowering::arithmetic(char op, const Value& a, const Value& 
               hint);
         return std::nullopt;
     };
+    if (op == '+' && a.type == b.type && (a.type == T::String || a.type == T::List)) return concatenate(a, b, at);
+    const auto plain = [](T t) { return t == T::Number || t == T::Vector || t == T::Field; };
+    if (!plain(a.type) || !plain(b.type)) return mistyped();
+    if (op == '%') {  // floored: the result has the sign of b, so i % 2 is 0 or 1 for every integer i
+        if (a.type != T::Number || b.type != T::Number) return mistyped();
+        if (b.number == 0) {
+            error(at, "remainder of a division by 0: " + formatNumber(a.number) + " % 0");
+            return std::nullopt;
+        }
+        const double r = a.number - b.number * std::floor(a.number / b.number);
+        return finiteLazy(Value::ofNumber(r), at, [&] { return formatNumber(a.number) + " % " + formatNumber(b.number); });
+    }
     if (a.type == T::Number && b.type == T::Number) {
         const double r = applyConstant(operatorOp(op), a.number, b.number);
-        return finite(Value::ofNumber(r), at,
-                      formatNumber(a.number) + " " + op + " " + formatNumber(b.number) + " = " + formatNumber(r));
+        return finiteLazy(Value::ofNumber(r), at, [&] { return
+                      formatNumber(a.number) + " " + op + " " + formatNumber(b.number) + " = " + formatNumber(r); });
     }
     if (a.type == T::Field || b.type == T::Field) {
         if (a.type == T::Vector || b.type == T::Vector) return mistyped();
@@ -169,16 +199,32 @@ std::optional<Value> Lowering::arithmetic(char op, const Value& a, const Value& 
         r = op == '*' ? a.vector * b.number : a.vector / b.number;
     else
         return mistyped();
-    return finite(Value::ofVector(r), at, "the result is " + formatVector(r));
+    return finiteLazy(Value::ofVector(r), at, [&] { return "the result is " + formatVector(r); });
+}
+
+std::optional<double> Lowering::numberValue(const Expr& e, const char* what) {
+    const auto v = evaluate(e, nullptr);
+    if (!v) return std::nullopt;
+    if (v->type != Value::Type::Number) {
+        error(e.start, std::string(what) + " must be a number, got " + typeName(v->type));
+        return std::nullopt;
+    }
+    return v->number;
 }
 
 std::optional<Value> Lowering::evaluateName(const Expr& e, ExprGraph* field) {
+    if (const Value* v = local(e.name())) return *v;
     if (field && (e.name() == "x" || e.name() == "y" || e.name() == "z"))
         return Value::ofField(e.name() == "x" ? field->x() : e.name() == "y" ? field->y() : field->z());
     if (e.name() == "pi") return Value::ofNumber(M_PI);
     if (mLets.count(e.name())) return letValue(e.name(), e.loc);
     if (mSolids.count(e.name())) {
-        error(e.loc, "'" + e.name() + "' is a solid, not a number or vector");
+        NodePtr node = solidByName(e.name(), e.loc);
+        if (!node) return std::nullopt;
+        return Value::ofSolid(node);
+    }
+    if (mFunctions.count(e.name())) {
+        error(e.loc, "'" + e.name() + "' is a function, not a value", "call it: " + e.name() + "(…)");
         return std::nullopt;
     }
     if (mMaterials.count(e.name())) {
@@ -187,6 +233,7 @@ std::optional<Value> Lowering::evaluateName(const Expr& e, ExprGraph* field) {
     }
     std::vector<std::string> candidates{"pi"};
     for (const auto& [name, entry] : mLets) candidates.push_back(name);
+    for (size_t i = mFrameBase; i < mLocals.size(); ++i) candidates.push_back(mLocals[i].first);
     std::string hint = didYouMean(e.name(), candidates);
     if (!field && (e.name() == "x" || e.name() == "y" || e.name() == "z"))
         hint = "x, y and z exist only inside the f of an implicit solid";
@@ -210,7 +257,10 @@ std::optional<Value> Lowering::letValue(const std::string& name, SourcePos use) 
     }
     entry.state = State::Busy;
     mBusyLets.push_back(name);
+    // A top-level let sees the top level only, wherever it is first used.
+    const size_t frameBase = std::exchange(mFrameBase, mLocals.size());
     const auto v = evaluate(*entry.def->expr, nullptr);  // lets are constants, even inside f
+    mFrameBase = frameBase;
     mBusyLets.pop_back();
     LetEntry& done = mLets[name];
     done.state = v ? State::Done : State::Failed;
@@ -219,13 +269,48 @@ std::optional<Value> Lowering::letValue(const std::string& name, SourcePos use) 
 }
 
 std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
-    const Function* fn = nullptr;
-    for (const Function& f : kFunctions)
-        if (e.name() == f.name && f.arity > 0) fn = &f;
+    if (const auto user = mFunctions.find(e.name()); user != mFunctions.end())
+        return callFunction(*user->second, e, field);
+    for (const Expr& a : e.args()) {
+        if (a.kind == Expr::Kind::NamedArg) {
+            error(a.loc, "the built-in function '" + e.name() + "' takes no named arguments");
+            return std::nullopt;
+        }
+    }
+    // One hash instead of a string compare per built-in: calls are the inner loop of models.
+    static const std::unordered_map<std::string, int> kBuiltinIndex = [] {
+        std::unordered_map<std::string, int> index;
+        for (size_t i = 0; i < kFunctions.size(); ++i)
+            if (kFunctions[i].arity > 0) index.emplace(kFunctions[i].name, static_cast<int>(i));
+        for (const char* b : {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
+            index.emplace(b, -1);
+        return index;
+    }();
+    const auto builtin = kBuiltinIndex.find(e.name());
+    {
+        if (builtin != kBuiltinIndex.end() && builtin->second < 0) {
+            std::vector<Value> args;
+            for (const Expr& a : e.args()) {
+                auto v = evaluate(a, field);
+                if (!v) return std::nullopt;
+                if (v->type == Value::Type::Field) {
+                    error(a.start, "'" + e.name() + "' cannot take a function of x, y, z");
+                    return std::nullopt;
+                }
+                args.push_back(std::move(*v));
+            }
+            bool handled = false;
+            return builtinValue(e, args, handled);
+        }
+    }
+    const Function* fn = builtin != kBuiltinIndex.end() ? &kFunctions[builtin->second] : nullptr;
     if (!fn) {
         std::vector<std::string> names;
         for (const Function& f : kFunctions)
             if (f.arity > 0) names.emplace_back(f.name);
+        for (const char* b : {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
+            names.emplace_back(b);
+        for (const auto& [name, def] : mFunctions) names.push_back(name);
         std::string hint = didYouMean(e.name(), names);
         error(e.loc, "unknown function '" + e.name() + "'",
               hint.empty() ? "the functions are " + joinNames(names) : hint);
@@ -253,17 +338,19 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
     }
     if (name == "pow") return arithmetic('^', args[0], args[1], e.loc, field);
     for (size_t i = 0; i < args.size(); ++i) {
-        if (args[i].type == Value::Type::Vector) {
-            error(e.args()[i].start, "'" + name + "' expects a number, got a vector");
+        if (args[i].type != Value::Type::Number && args[i].type != Value::Type::Field) {
+            error(e.args()[i].start, "'" + name + "' expects a number, got " + typeName(args[i].type));
             return std::nullopt;
         }
     }
     const auto apply = [&](Op op, const Value& a, const Value& b) -> std::optional<Value> {
         if (a.type == Value::Type::Number && b.type == Value::Type::Number) {
             const double r = applyConstant(op, a.number, b.number);
-            std::string call = name + "(" + formatNumber(a.number);
-            if (fn->arity > 1) call += ", " + formatNumber(b.number);
-            return finite(Value::ofNumber(r), e.loc, call + ") = " + formatNumber(r));
+            return finiteLazy(Value::ofNumber(r), e.loc, [&] {
+                std::string call = name + "(" + formatNumber(a.number);
+                if (fn->arity > 1) call += ", " + formatNumber(b.number);
+                return call + ") = " + formatNumber(r);
+            });
         }
         if (fn->arity == 1) return Value::ofField(field->unary(op, a.field));
         return Value::ofField(field->binary(op, asField(a, *field), asField(b, *field)));

@@ -59,8 +59,26 @@ NodePtr Lowering::lowerSolid(const Solid& s) {
         case Solid::Kind::Reference: node = lowerReference(s); break;
         case Solid::Kind::Boolean: node = lowerBoolean(s); break;
         case Solid::Kind::Primitive: node = lowerPrimitive(s); break;
+        case Solid::Kind::Call: {
+            const auto v = evaluate(*s.properties[0].expr, nullptr);
+            bool empty = false;
+            if (v && !solidOf(*v, s.loc, node, empty)) node = nullptr;
+            break;
+        }
+        case Solid::Kind::For:
+        case Solid::Kind::If:
+        case Solid::Kind::Else: {  // written where one solid goes (not in a Boolean body)
+            std::vector<NodePtr> children;
+            const ArenaList<Solid> one(&s, 1);
+            if (expandChildren(s.kind == Solid::Kind::Else ? s.children : one, children)) {
+                node = children.empty() ? emptySolid()
+                       : children.size() == 1 ? children[0]
+                                              : limitDepth(makeBoolean(BoolOp::Union, std::move(children)), s.loc);
+            }
+            break;
+        }
     }
-    node = applyModifiers(node, s);
+    if (node != emptySolid()) node = applyModifiers(node, s);
     --mDepth;
     return node;
 }
@@ -68,6 +86,19 @@ NodePtr Lowering::lowerSolid(const Solid& s) {
 NodePtr Lowering::lowerReference(const Solid& s) {
     const bool isKind = std::find(kPrimitiveKinds.begin(), kPrimitiveKinds.end(), s.name) != kPrimitiveKinds.end() ||
                         std::find(kBooleanKinds.begin(), kBooleanKinds.end(), s.name) != kBooleanKinds.end();
+    if (const Value* v = local(s.name)) {
+        NodePtr node;
+        bool empty = false;
+        if (!solidOf(*v, s.loc, node, empty)) return nullptr;
+        return node;
+    }
+    if (!mSolids.count(s.name) && mLets.count(s.name)) {
+        const auto v = letValue(s.name, s.loc);
+        NodePtr node;
+        bool empty = false;
+        if (!v || !solidOf(*v, s.loc, node, empty)) return nullptr;
+        return node;
+    }
     if (isKind && !mSolids.count(s.name)) {
         error(s.loc, "'" + s.name + "' needs a block", "write '" + s.name + " { … }'");
         return nullptr;
@@ -106,7 +137,9 @@ NodePtr Lowering::solidByName(const std::string& name, SourcePos use) {
     }
     entry.state = State::Busy;
     mBusySolids.push_back(name);
+    const size_t frameBase = std::exchange(mFrameBase, mLocals.size());  // the top level's scope
     NodePtr node = lowerSolid(*entry.def->solid);
+    mFrameBase = frameBase;
     mBusySolids.pop_back();
     entry.state = node ? State::Done : State::Failed;
     entry.node = node;
@@ -119,19 +152,24 @@ NodePtr Lowering::lowerBoolean(const Solid& s) {
         error(s.loc, "'" + s.name + "' needs at least one solid");
         return nullptr;
     }
-    std::vector<NodePtr> children;
-    bool ok = true;
-    for (const Solid& c : s.children) {
-        NodePtr child = lowerSolid(c);
-        ok = ok && child;
-        children.push_back(child);
-    }
-    if (!ok) return nullptr;
-    if (children.size() == 1) return children[0];
+    std::vector<NodePtr> written;
+    if (!expandChildren(s.children, written)) return nullptr;
     const BoolOp op = s.name == "union"          ? BoolOp::Union
                       : s.name == "intersection" ? BoolOp::Intersection
                       : s.name == "difference"   ? BoolOp::Difference
                                                  : BoolOp::Xor;
+    // Empty solids: an intersection with one is empty, a difference whose body is empty is
+    // empty, elsewhere they are dropped; nothing left is the empty solid.
+    std::vector<NodePtr> children;
+    for (size_t i = 0; i < written.size(); ++i) {
+        if (written[i] != emptySolid()) {
+            children.push_back(written[i]);
+        } else if (op == BoolOp::Intersection || (op == BoolOp::Difference && i == 0)) {
+            return emptySolid();
+        }
+    }
+    if (children.empty()) return emptySolid();
+    if (children.size() == 1) return children[0];
     return limitDepth(makeBoolean(op, std::move(children)), s.loc);
 }
 
@@ -157,7 +195,18 @@ NodePtr Lowering::limitDepth(NodePtr node, SourcePos at) {
     return nullptr;
 }
 
+bool Lowering::countPrimitive(SourcePos at) {
+    if (++mPrimitives <= mLimits.primitives) return true;
+    if (!mLimitReported) {
+        mLimitReported = true;
+        error(at, "this model makes more than " + std::to_string(mLimits.primitives) + " primitives",
+              "the limit stops a model before it runs out of memory; see docs/language.md, Limits");
+    }
+    return false;
+}
+
 NodePtr Lowering::lowerPrimitive(const Solid& s) {
+    if (!countPrimitive(s.loc)) return nullptr;
     if (s.name == "sphere") return lowerSphere(s);
     if (s.name == "box") {
         const auto b = boxBounds(s, "box");

@@ -32,6 +32,23 @@ constexpr int kMaxCsgDepth = 1000;
 /// which the limits above keep it under except along a cycle of names.
 constexpr int kMaxLoweringDepth = 2000;
 
+// ---- evaluation (docs/language.md, "Limits") ----
+/// How deeply function calls may nest (recursion included). Each call level costs a few
+/// lowering levels, so this stays far below kMaxLoweringDepth.
+constexpr int kMaxCallDepth = 100;
+/// Iterations of all loops and list comprehensions, plus function calls (those not answered
+/// from the memo), in one model together: about 10 to 30 seconds of evaluation.
+constexpr int64_t kMaxLoopIterations = 100'000'000;
+/// Elements of one list (a range turned into a list counts too): a value takes about 100
+/// bytes, so the longest list takes about 100 MB.
+constexpr int64_t kMaxListLength = 1'000'000;
+/// Bytes of one string, written or built by concatenation.
+constexpr int64_t kMaxStringLength = 1 << 20;
+/// Primitives one model may build (each sphere, box, … counted once per time it is made;
+/// a shared solid used again counts once). Checked as they are made, so a model that would
+/// build more stops with an error long before memory runs out (a sphere takes about 150 bytes).
+constexpr int64_t kMaxPrimitives = 10'000'000;
+
 // ---- images ----
 /// Image width and height in pixels, in a model's `render { }` and on the command line.
 constexpr int kMaxImageSide = 32768;

@@ -2,6 +2,8 @@
 // includes refused so a fuzzer never reads the file system.
 #pragma once
 
+#include "lang/eval_limits.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -21,5 +23,16 @@ inline bool modelText(const uint8_t* data, size_t size, std::string& text) {
 /// The name the model is compiled under: a folder that does not exist, so even an include
 /// that slipped through could not find a file relative to it.
 inline const char* kModelName = "/nonexistent-kerf-fuzz/input.kerf";
+
+/// Evaluation limits small enough that a 4 kB loop cannot pass -timeout or -rss_limit_mb under
+/// the sanitizers (the real ones allow 10 million primitives); the limit checks themselves are
+/// the same code.
+inline EvalLimits limits() {
+    EvalLimits l;
+    l.iterations = 200'000;
+    l.listLength = 100'000;
+    l.primitives = 100'000;
+    return l;
+}
 
 }  // namespace kerf::fuzz

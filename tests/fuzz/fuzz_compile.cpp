@@ -8,7 +8,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::string text;
     if (!kerf::fuzz::modelText(data, size, text)) return -1;  // -1: not added to the corpus
     kerf::DiagnosticSink sink;
-    auto scene = kerf::compileString(text, kerf::fuzz::kModelName, sink);
+    auto scene = kerf::compileString(text, kerf::fuzz::kModelName, sink, kerf::fuzz::limits());
     // Formatting the diagnostics is part of what the user sees: exercise it too.
     (void)sink.format();
     (void)scene;

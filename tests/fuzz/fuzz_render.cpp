@@ -12,7 +12,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::string text;
     if (!kerf::fuzz::modelText(data, size, text)) return -1;
     kerf::DiagnosticSink sink;
-    auto scene = kerf::compileString(text, kerf::fuzz::kModelName, sink);
+    auto scene = kerf::compileString(text, kerf::fuzz::kModelName, sink, kerf::fuzz::limits());
     if (!scene) return 0;
     scene->settings.maxDepth = std::min(scene->settings.maxDepth, 4);
     kerf::RenderOptions options;

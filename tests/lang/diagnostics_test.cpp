@@ -29,7 +29,8 @@ TEST_CASE("diagnostics: undefined names") {
         requireOneError("let a = x + 1;", 1, 9, "undefined name 'x'");
     }
     SECTION("a solid used as a number") {
-        requireOneError("solid s = sphere {};\nlet a = s * 2;", 2, 9, "'s' is a solid, not a number or vector");
+        // Solids are values (issue 9): the error is at the operator and names both types.
+        requireOneError("solid s = sphere {};\nlet a = s * 2;", 2, 11, "cannot apply '*' to a solid and a number");
     }
     SECTION("unknown function") {
         requireOneError("let a = sinn(1);", 1, 9, "unknown function 'sinn'");

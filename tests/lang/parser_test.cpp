@@ -27,6 +27,7 @@ std::string show(const Expr& e, const DiagnosticSink& sink) {
             for (const Expr& a : e.args()) s += " " + show(a, sink);
             return s + ")";
         }
+        default: break;
     }
     return "?";
 }
