@@ -2,6 +2,7 @@
 // at compile time; inside `implicit { f … }` (field != null) x, y, z are free and the result
 // is a node of an ExprGraph, with constant subexpressions still folded.
 #include "lang/lower.h"
+#include "lang/diagnostic_hints.h"
 
 #include "lang/names.h"
 
@@ -311,7 +312,8 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
         for (const char* b : {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
             names.emplace_back(b);
         for (const auto& [name, def] : mFunctions) names.push_back(name);
-        std::string hint = didYouMean(e.name(), names);
+        std::string hint = callSyntaxHint(e.name());  // OpenSCAD's cube([…]) and the like
+        if (hint.empty()) hint = didYouMean(e.name(), names);
         error(e.loc, "unknown function '" + e.name() + "'",
               hint.empty() ? "the functions are " + joinNames(names) : hint);
         return std::nullopt;

@@ -306,3 +306,16 @@ TEST_CASE("hints: OpenSCAD's call syntax and POV-Ray's statements") {
         oneError("light_source { <0, 10, 0> }", 1, 1, "expected a statement, found 'light_source'")
             .hint == "a light is light point { at <x, y, z> color <r, g, b> }");
 }
+
+TEST_CASE("OpenSCAD's call syntax where a solid is a function call") {
+    // `object cube([1, 2, 3]);` parses as a call of a function 'cube'; the message keeps kerf's
+    // form for a box as its hint.
+    DiagnosticSink sink;
+    const std::optional<Scene> scene =
+        compileString("object cube([1, 2, 3]);\n", "scad.kerf", sink);
+    CHECK_FALSE(scene.has_value());
+    const std::string text = sink.format();
+    INFO(text);
+    CHECK(text.find("scad.kerf:1:8: error: unknown function 'cube'") != std::string::npos);
+    CHECK(text.find("a box is box { min <0, 0, 0> max <s, s, s> }") != std::string::npos);
+}
