@@ -46,6 +46,7 @@ std::string describeBounds(const Bounds3& b) {
 CLI::App* addCheckCommand(CLI::App& parent, CheckCommandLine& line) {
     CLI::App* cmd = parent.add_subcommand("check", "Parse and compile a model; print a summary");
     cmd->add_option("FILE", line.model, "The model file (.kerf)")->required();
+    cmd->add_flag("-q,--quiet", line.quiet, "Leave out the model's echo lines");
     return cmd;
 }
 
@@ -74,7 +75,7 @@ void printSceneSummary(const std::string& model, const Scene& scene, std::ostrea
 }
 
 int runCheck(const CheckCommandLine& line) {
-    const std::optional<Scene> scene = loadModel(line.model, std::cerr);
+    const std::optional<Scene> scene = loadModel(line.model, std::cerr, line.quiet);
     if (!scene) return kExitUsage;
     printSceneSummary(line.model, *scene, std::cout);
     return kExitSuccess;

@@ -15,6 +15,7 @@ namespace kerf::app {
 
 struct CheckCommandLine {
     std::string model;
+    bool quiet = false;  ///< leave out the model's echo lines
 };
 
 /// Adds the `check` subcommand to `parent`, parsing into `line`.

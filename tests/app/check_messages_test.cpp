@@ -71,3 +71,20 @@ TEST_CASE("kerf check: a POV-Ray habit is an error with caret, hint and exit cod
           "                ^\n"
           "  hint: kerf names each property: write 'sphere { center <0, 1, 0> radius 2 }'\n");
 }
+
+TEST_CASE("kerf check and render: echo lines on stderr, silenced by --quiet") {
+    TempDir dir;
+    dir.write("e.kerf", "let n = 3;\necho \"n is\", n;\nobject sphere { radius n };\n");
+    for (const char* command : {"check", "render"}) {
+        INFO(command);
+        std::vector<std::string> args{command, "e.kerf"};
+        if (std::string(command) == "render") args.insert(args.end(), {"-o", "e.png", "--width", "4", "--height", "3"});
+        const KerfRun loud = runKerf(dir, args);
+        CHECK(loud.exitCode == 0);
+        CHECK(loud.err.find("e.kerf:2: echo: n is, 3") != std::string::npos);
+        args.push_back("--quiet");
+        const KerfRun quiet = runKerf(dir, args);
+        CHECK(quiet.exitCode == 0);
+        CHECK(quiet.err.find("echo") == std::string::npos);
+    }
+}
