@@ -121,8 +121,13 @@ void Lowering::collectDefinitions(Program& program, Scene& scene) {
     }
 }
 
-void Lowering::addObject(NodePtr node, Scene& scene) {
-    if (node != emptySolid()) scene.objects.push_back(std::move(node));  // an empty object adds nothing
+void Lowering::addObject(NodePtr node, Scene& scene, bool castsShadow) {
+    if (node == emptySolid()) return;  // an empty object adds nothing
+    scene.objects.push_back(std::move(node));
+    if (!castsShadow || !scene.objectFlags.empty()) {
+        scene.objectFlags.resize(scene.objects.size());
+        scene.objectFlags.back().castsShadow = castsShadow;
+    }
 }
 
 void Lowering::lowerDefinitions() {
@@ -173,7 +178,7 @@ void Lowering::lowerStatement(Statement& s, Scene& scene) {
             if (mSolids[s.name].def == &s) solidByName(s.name, s.nameLoc);
             break;
         case Statement::Kind::Object:
-            if (NodePtr node = lowerSolid(*s.solid)) addObject(node, scene);
+            if (NodePtr node = lowerSolid(*s.solid)) addObject(node, scene, s.name != "no_shadow");
             s.releaseTree();
             break;
         case Statement::Kind::For:
@@ -205,7 +210,7 @@ void Lowering::lowerStatement(Statement& s, Scene& scene) {
             if (onlyOnce(s, mMist, "mist")) lowerMist(s, scene.mist);
             break;
         case Statement::Kind::Background:
-            if (onlyOnce(s, mBackground, "background")) lowerBackground(s, scene.background);
+            if (onlyOnce(s, mBackground, "background")) lowerBackground(s, scene);
             break;
         case Statement::Kind::Render:
             if (onlyOnce(s, mRender, "render")) lowerRender(s, scene.settings);

@@ -68,7 +68,8 @@ private:
 
     // lower.cpp
     void collectDefinitions(Program& program, Scene& scene);
-    void addObject(NodePtr node, Scene& scene);
+    /// castsShadow false: the object is `no_shadow`.
+    void addObject(NodePtr node, Scene& scene, bool castsShadow = true);
     /// Lowers the lets and solids each after those it uses (lang/definition_order.h), so
     /// no chain of names recurses; a chain deeper than kMaxNameDepth is an error.
     void lowerDefinitions();
@@ -144,6 +145,10 @@ private:
     bool readVector(const PropertyBlock& block, const std::string& name, Vec3& out);
     /// A number that must be an integer in [lo, hi].
     bool readInteger(const PropertyBlock& block, const std::string& name, int lo, int hi, int& out);
+    bool readBool(const PropertyBlock& block, const std::string& name, bool& out);
+    /// A Word property: one of `choices`, written as a bare name.
+    bool readWord(const PropertyBlock& block, const std::string& name,
+                  const std::vector<std::string>& choices, std::string& out);
 
     // lower_solids.cpp
     NodePtr lowerSolid(const Solid& s);
@@ -181,7 +186,7 @@ private:
     std::optional<Light> lowerLight(const Statement& s);
     void lowerMist(const Statement& s, Mist& mist);
     void lowerRender(const Statement& s, RenderSettings& settings);
-    void lowerBackground(const Statement& s, Vec3& background);
+    void lowerBackground(const Statement& s, Scene& scene);
 
     DiagnosticSink& mSink;
     EvalLimits mLimits;

@@ -33,7 +33,7 @@ void Lowering::runBlock(const std::vector<Statement>& body, Scene& scene) {
                 break;
             }
             case Statement::Kind::Object:
-                if (NodePtr node = lowerSolid(*s.solid)) addObject(node, scene);
+                if (NodePtr node = lowerSolid(*s.solid)) addObject(node, scene, s.name != "no_shadow");
                 break;
             case Statement::Kind::Light:
                 if (auto light = lowerLight(s)) scene.lights.push_back(*light);

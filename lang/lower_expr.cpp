@@ -6,6 +6,7 @@
 
 #include "lang/names.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -374,6 +375,8 @@ std::optional<Value> Lowering::propertyValue(const PropertyBlock& block, const s
             case PropertyType::NumberOrVector: return "a number or a vector";
             case PropertyType::Solid: return "a solid";
             case PropertyType::Function: return "a function of x, y, z";
+            case PropertyType::Bool: return "true or false";
+            case PropertyType::Word: return "a name";
         }
         return "a value";
     };
@@ -384,8 +387,10 @@ std::optional<Value> Lowering::propertyValue(const PropertyBlock& block, const s
     }
     const auto v = evaluate(*p->expr, nullptr);
     if (!v) return std::nullopt;
-    const bool ok = (v->type == Value::Type::Number && type != PropertyType::Vector) ||
-                    (v->type == Value::Type::Vector && type != PropertyType::Number);
+    const bool ok = type == PropertyType::Bool
+                        ? v->type == Value::Type::Bool
+                        : (v->type == Value::Type::Number && type != PropertyType::Vector) ||
+                              (v->type == Value::Type::Vector && type != PropertyType::Number);
     if (!ok) {
         error(p->expr->start, subject + " expects " + expected() + ", got " + typeName(v->type));
         return std::nullopt;
@@ -417,6 +422,35 @@ bool Lowering::readInteger(const PropertyBlock& block, const std::string& name, 
         return false;
     }
     out = static_cast<int>(v);
+    return true;
+}
+
+bool Lowering::readBool(const PropertyBlock& block, const std::string& name, bool& out) {
+    if (!block.find(name)) return true;
+    const auto v = propertyValue(block, name);
+    if (v) out = v->truth();
+    return v.has_value();
+}
+
+bool Lowering::readWord(const PropertyBlock& block, const std::string& name,
+                        const std::vector<std::string>& choices, std::string& out) {
+    const Property* p = block.find(name);
+    if (!p) return true;
+    const std::string list = joinNames(choices);
+    const std::string subject = "property '" + name + "' of " + block.what();
+    if (p->solid || p->expr->kind != Expr::Kind::Name) {
+        error(p->solid ? p->solid->loc : p->expr->start, subject + " expects one of " + list,
+              "write e.g. '" + name + " " + choices.front() + "'");
+        return false;
+    }
+    const std::string& word = *p->expr->ident;
+    if (std::find(choices.begin(), choices.end(), word) == choices.end()) {
+        const std::string hint = didYouMean(word, choices);
+        error(p->expr->loc, "unknown " + name + " '" + word + "' in " + block.what(),
+              hint.empty() ? name + " is one of " + list : hint);
+        return false;
+    }
+    out = word;
     return true;
 }
 

@@ -1,5 +1,5 @@
-// Lowering, part 4: everything in the scene that is not a solid: materials, the camera,
-// lights, mist, background and render settings, each validated where it is read.
+// Lowering, part 4: materials, the camera, mist and render settings, each validated where it
+// is read (lights and the background: lower_lights.cpp).
 #include "lang/lower.h"
 
 #include "csg/normalize.h"
@@ -27,7 +27,9 @@ void Lowering::lowerMaterial(const Statement& s, Material& m) {
                            {"transmit", PropertyType::Number},
                            {"ior", PropertyType::Number},
                            {"absorb", PropertyType::Vector},
-                           {"emit", PropertyType::Vector}},
+                           {"emit", PropertyType::Vector},
+                           {"glossy", PropertyType::Number},
+                           {"translucent", PropertyType::Number}},
                           "material", s.loc, mSink);
     const auto number = [&](const char* name, double& out) {
         if (readNumber(b, name, out) && out < 0)
@@ -48,6 +50,14 @@ void Lowering::lowerMaterial(const Statement& s, Material& m) {
     number("transmit", m.transmit);
     colour("absorb", m.absorb);
     colour("emit", m.emit);
+    for (const auto& [name, out] : {std::pair<const char*, double*>{"glossy", &m.glossy},
+                                    {"translucent", &m.translucent}})
+        if (readNumber(b, name, *out) && !(*out >= 0 && *out <= 90))
+            error(b.find(name)->valueLoc(), std::string("material ") + name +
+                                                " must be an angle from 0 to 90 degrees, got " +
+                                                formatNumber(*out),
+                  std::string(name) + " is the half-angle of the cone the " +
+                      (name[0] == 'g' ? "reflected" : "refracted") + " rays are spread over");
     if (readNumber(b, "ior", m.ior) && !(m.ior > 0))
         error(b.find("ior")->valueLoc(), "material ior must be positive, got " + formatNumber(m.ior));
     checkEnergy(b, m);
@@ -87,9 +97,25 @@ void Lowering::lowerCamera(const Statement& s, CameraDesc& camera) {
                           {{"eye", PropertyType::Vector},
                            {"look_at", PropertyType::Vector},
                            {"up", PropertyType::Vector},
-                           {"fov", PropertyType::Number}},
+                           {"fov", PropertyType::Number},
+                           {"aperture", PropertyType::Number},
+                           {"focus_distance", PropertyType::Number}},
                           "camera", s.loc, mSink);
     bool ok = b.ok();
+    ok &= readNumber(b, "aperture", camera.aperture);
+    ok &= readNumber(b, "focus_distance", camera.focusDistance);
+    if (ok && !(camera.aperture >= 0 && std::isfinite(camera.aperture))) {
+        error(b.find("aperture")->valueLoc(), "camera aperture must not be negative, got " +
+                                                  formatNumber(camera.aperture),
+              "aperture is the lens diameter; 0 is a pinhole");
+        ok = false;
+    }
+    if (ok && b.find("focus_distance") && !(camera.focusDistance > 0 && std::isfinite(camera.focusDistance))) {
+        error(b.find("focus_distance")->valueLoc(), "camera focus_distance must be positive, got " +
+                                                        formatNumber(camera.focusDistance),
+              "the distance from the eye, along the view, of the plane in focus");
+        ok = false;
+    }
     ok &= readVector(b, "eye", camera.eye);
     ok &= readVector(b, "look_at", camera.lookAt);
     ok &= readVector(b, "up", camera.up);
@@ -130,47 +156,6 @@ void Lowering::lowerCamera(const Statement& s, CameraDesc& camera) {
               "choose an up vector that is not parallel to look_at - eye, e.g. <0, 0, 1>");
 }
 
-std::optional<Light> Lowering::lowerLight(const Statement& s) {
-    Light light;
-    std::vector<PropertySpec> specs{{"color", PropertyType::Vector}};
-    if (s.name == "point") {
-        light.kind = Light::Kind::Point;
-        specs.push_back({"at", PropertyType::Vector, true});
-        specs.push_back({"power", PropertyType::Number});
-    } else if (s.name == "directional") {
-        light.kind = Light::Kind::Directional;
-        specs.push_back({"direction", PropertyType::Vector, true});
-    } else {
-        std::string hint = didYouMean(s.name, {"point", "directional"});
-        error(s.nameLoc, "unknown light kind '" + s.name + "'", hint.empty() ? "lights are point or directional" : hint);
-        return std::nullopt;
-    }
-    const PropertyBlock b(s.properties, specs, s.name + " light", s.loc, mSink);
-    bool ok = b.ok();
-    ok &= readVector(b, "color", light.color);
-    if (light.kind == Light::Kind::Point) {
-        ok &= readVector(b, "at", light.position);
-        ok &= readNumber(b, "power", light.power);
-    } else {
-        ok &= readVector(b, "direction", light.direction);
-    }
-    if (!ok) return std::nullopt;
-    if (!nonNegative(light.color)) {
-        error(b.find("color")->valueLoc(), "light color must not have negative components, got " +
-                                               formatVector(light.color));
-        ok = false;
-    }
-    if (light.power < 0) {
-        error(b.find("power")->valueLoc(), "light power must not be negative, got " + formatNumber(light.power));
-        ok = false;
-    }
-    if (light.kind == Light::Kind::Directional && light.direction == Vec3(0.0)) {
-        error(b.find("direction")->valueLoc(), "light direction must not be zero");
-        ok = false;
-    }
-    return ok ? std::optional<Light>(light) : std::nullopt;
-}
-
 void Lowering::lowerMist(const Statement& s, Mist& mist) {
     const PropertyBlock b(s.properties,
                           {{"color", PropertyType::Vector}, {"distance", PropertyType::Number, true}}, "mist", s.loc,
@@ -192,27 +177,16 @@ void Lowering::lowerRender(const Statement& s, RenderSettings& settings) {
                           {{"width", PropertyType::Number},
                            {"height", PropertyType::Number},
                            {"spp", PropertyType::Number},
-                           {"max_depth", PropertyType::Number}},
+                           {"max_depth", PropertyType::Number},
+                           {"sampler", PropertyType::Word}},
                           "render", s.loc, mSink);
+    std::string sampler;
+    if (readWord(b, "sampler", {"jittered", "lattice", "random", "regular"}, sampler) && !sampler.empty())
+        settings.sampler = *parseSampler(sampler);
     readInteger(b, "width", 1, kMaxImageSide, settings.width);
     readInteger(b, "height", 1, kMaxImageSide, settings.height);
     readInteger(b, "spp", 1, kMaxSamplesPerPixel, settings.spp);
     readInteger(b, "max_depth", 0, 1000, settings.maxDepth);
-}
-
-void Lowering::lowerBackground(const Statement& s, Vec3& background) {
-    const auto v = evaluate(*s.expr, nullptr);
-    if (!v) return;
-    if (v->type != Value::Type::Vector) {
-        error(s.expr->start, "background expects a colour vector, got " + typeName(v->type),
-              "write background <r, g, b>;");
-        return;
-    }
-    if (!nonNegative(v->vector)) {
-        error(s.expr->start, "background color must not have negative components, got " + formatVector(v->vector));
-        return;
-    }
-    background = v->vector;
 }
 
 }  // namespace kerf

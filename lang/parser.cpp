@@ -86,6 +86,10 @@ void Parser::parseStatementBody(Statement& s) {
     } else if (word == "object") {
         s.kind = Statement::Kind::Object;
         s.solid = store(parseSolid(true));
+        if (checkWord("no_shadow")) {  // the object casts no shadow
+            s.nameLoc = peek().pos;
+            s.name = next().text;
+        }
         expect(TokenKind::Semicolon, "after the object statement");
     } else if (word == "material") {
         s.kind = Statement::Kind::Material;
@@ -94,7 +98,7 @@ void Parser::parseStatementBody(Statement& s) {
     } else if (word == "light") {
         s.kind = Statement::Kind::Light;
         s.nameLoc = peek().pos;
-        const Token& kind = expectName("a light kind (point or directional)");
+        const Token& kind = expectName("a light kind (point, directional, area or sphere)");
         s.name = kind.text;
         parseBlock(s.properties);
     } else if (word == "camera" || word == "mist" || word == "render") {
@@ -103,8 +107,14 @@ void Parser::parseStatementBody(Statement& s) {
         parseBlock(s.properties);
     } else if (word == "background") {
         s.kind = Statement::Kind::Background;
-        s.expr = store(parseExpr());
-        expect(TokenKind::Semicolon, "after the background statement");
+        if (checkWord("gradient") && peek(1).kind == TokenKind::LBrace) {  // a gradient sky
+            s.nameLoc = peek().pos;
+            s.name = next().text;
+            parseBlock(s.properties);
+        } else {
+            s.expr = store(parseExpr());
+            expect(TokenKind::Semicolon, "after the background statement");
+        }
     } else {  // include
         s.kind = Statement::Kind::Include;
         s.nameLoc = peek().pos;

@@ -11,7 +11,8 @@
 
 namespace kerf {
 
-enum class PropertyType { Number, Vector, NumberOrVector, Solid, Function };
+/// Word: a bare name from a fixed list (`sampler jittered`, `falloff none`), not evaluated.
+enum class PropertyType { Number, Vector, NumberOrVector, Solid, Function, Bool, Word };
 
 struct PropertySpec {
     const char* name;

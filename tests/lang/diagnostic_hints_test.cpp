@@ -228,18 +228,18 @@ TEST_CASE("hints: unknown and value-less properties in every block") {
              "unknown property 'max_gradient' in implicit", "implicit takes: f, bound"},
             {"material m { color <1,0,0> phong }", 28, "unknown property 'phong' in material",
              "material takes: color, ambient, diffuse, specular, shininess, reflect, transmit, "
-             "ior, absorb, emit"},
+             "ior, absorb, emit, glossy, translucent"},
             {"camera { location <0, 0, -5> }", 10, "unknown property 'location' in camera",
-             "camera takes: eye, look_at, up, fov"},
+             "camera takes: eye, look_at, up, fov, aperture, focus_distance"},
             {"light point { at <0,1,0> shadowless }", 26,
-             "unknown property 'shadowless' in point light", "point light takes: color, at, power"},
+             "unknown property 'shadowless' in point light", "point light takes: color, at, power, falloff, fade_distance, shadows"},
             {"light directional { direction <0,-1,0> parallel }", 40,
              "unknown property 'parallel' in directional light",
-             "directional light takes: color, direction"},
+             "directional light takes: color, direction, shadows"},
             {"mist { distance 1 fog }", 19, "unknown property 'fog' in mist",
              "mist takes: color, distance"},
             {"render { width 10 antialias 0.3 }", 19, "unknown property 'antialias' in render",
-             "render takes: width, height, spp, max_depth"},
+             "render takes: width, height, spp, max_depth, sampler"},
         };
         for (const Case& k : cases) {
             INFO(k.text);
@@ -247,7 +247,8 @@ TEST_CASE("hints: unknown and value-less properties in every block") {
         }
         CHECK(oneError("camera { location <0, 0, -5> }", 1, 10,
                        "unknown property 'location' in camera")
-                  .hint == "the camera's position is eye; camera takes: eye, look_at, up, fov");
+                  .hint == "the camera's position is eye; camera takes: eye, look_at, up, fov, "
+                           "aperture, focus_distance");
     }
     SECTION("a known property without a value, required or not: one error") {
         CHECK(
