@@ -181,6 +181,8 @@ private:
 
     // lower_scene.cpp
     void lowerMaterial(const Statement& s, Material& m);
+    // lower_patterns.cpp: a `pattern KIND { … }` (kept as a Primitive solid by the parser).
+    std::shared_ptr<const Pattern> lowerPattern(const Solid& s);
     void checkEnergy(const PropertyBlock& b, const Material& m);
     void lowerCamera(const Statement& s, CameraDesc& camera);
     std::optional<Light> lowerLight(const Statement& s);

@@ -29,8 +29,16 @@ void Lowering::lowerMaterial(const Statement& s, Material& m) {
                            {"absorb", PropertyType::Vector},
                            {"emit", PropertyType::Vector},
                            {"glossy", PropertyType::Number},
-                           {"translucent", PropertyType::Number}},
+                           {"translucent", PropertyType::Number},
+                           {"pattern", PropertyType::Solid}},
                           "material", s.loc, mSink);
+    if (const Property* p = b.find("pattern")) {
+        if (p->solid)
+            m.pattern = lowerPattern(*p->solid);
+        else
+            error(p->valueLoc(), "property 'pattern' of material expects a pattern",
+                  "write e.g. pattern checker { a <1, 1, 1> b <0, 0, 0> } scale 0.5");
+    }
     const auto number = [&](const char* name, double& out) {
         if (readNumber(b, name, out) && out < 0)
             error(b.find(name)->valueLoc(), std::string("material ") + name + " must not be negative, got " +

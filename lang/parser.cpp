@@ -223,6 +223,16 @@ ArenaList<Property> Parser::parseProperties(const SourceLoc& open) {
         Property p;
         p.name = mArena->intern(name.text);
         p.loc = name.pos;
+        // A material's `pattern KIND { … }`, or a pattern as a pattern's entry:
+        // `a pattern KIND { … }` (scene/pattern.h).
+        const bool patternProperty = name.text == "pattern";
+        if ((patternProperty || (checkWord("pattern") && peek(1).kind == TokenKind::Identifier)) &&
+            (patternProperty ? peek(1) : peek(2)).kind == TokenKind::LBrace) {
+            if (!patternProperty) next();
+            p.solid = store(parsePattern());
+            properties.push_back(p);
+            continue;
+        }
         // A property without a value (POV-Ray's `open`), or with a block for a value
         // (`pigment { … }`), is left to the block's check, which knows whether the name is a
         // property at all; the block is skipped.
@@ -237,6 +247,19 @@ ArenaList<Property> Parser::parseProperties(const SourceLoc& open) {
         properties.push_back(p);
     }
     return list(properties);
+}
+
+Solid Parser::parsePattern() {
+    NestingGuard guard(*this);
+    Solid pattern;
+    pattern.kind = Solid::Kind::Primitive;  // read as a pattern where a material takes one
+    pattern.loc = peek().pos;
+    pattern.name = mArena->intern(expectName("a pattern kind").text);
+    const SourceLoc open = peek().loc;
+    expect(TokenKind::LBrace, "to open the pattern");
+    pattern.properties = parseProperties(open);
+    pattern.modifiers = parseModifiers();
+    return pattern;
 }
 
 std::string Parser::foreignHint(const Token& t) {

@@ -148,6 +148,8 @@ private:
     std::string foreignHint(const Token& t);
     /// Past the balanced block that starts here (or to the end of the file).
     void skipBlock();
+    /// `KIND { properties } modifiers`: a solid texture, kept as a Primitive solid.
+    Solid parsePattern();
 
     // ---- statements, blocks and solids (parser.cpp) ----
     void parseStatement(Program& program);

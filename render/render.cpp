@@ -64,6 +64,8 @@ void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContex
     Vec3 sum(0.0);
     ctx.sampler = &job.sampler;
     ctx.pixel = pixel;
+    // Each of n samples stands for 1/n of the pixel: a square about 1/√n of its side.
+    ctx.sampleAngle = job.camera.pixelAngle() / std::sqrt(double(count));
     for (int s = 0; s < count; ++s) {
         ctx.sample = s;
         Ray ray = centreRay;

@@ -3,6 +3,7 @@
 #include "render/shading.h"
 
 #include "render/light_sample.h"
+#include "render/pattern_eval.h"
 #include "render/ray_offset.h"
 
 #include <glm/gtc/constants.hpp>
@@ -51,6 +52,21 @@ double falloffScale(const Light& light, const Vec3& p) {
                            ? 2.0 / (1.0 + std::pow(d / light.fadeDistance, k))
                            : std::pow(d, -k);
     return law * d * d;
+}
+
+/// The patch of surface a sample stands for where a ray along d (unit) meets a surface of
+/// normal n (unit, facing the ray) after travelling `distance`: the sample's cone is
+/// `sampleAngle · distance` wide there, and stretched by the slant along the tangent the ray
+/// runs along (at most 20 times: further, the box would blur a whole horizon into one tone).
+Footprint footprintAt(const Vec3& d, const Vec3& n, double distance, const ShadingContext& ctx) {
+    const double width = ctx.sampleAngle * distance;
+    if (!(width > 0.0)) return {};
+    const double cosine = std::max(-glm::dot(d, n), 0.05);
+    const Vec3 along = d + cosine * n;  // d's part in the tangent plane
+    const double alongLength = glm::length(along);
+    const Vec3 t1 = alongLength > 1e-6 ? along / alongLength : perpendicularTo(n);
+    const Vec3 t2 = glm::cross(n, t1);
+    return {t1 * (width / cosine), t2 * width};
 }
 
 /// The translucency dimension of a bounce: its gloss dimension with this bit set.
@@ -109,7 +125,8 @@ Vec3 WhittedIntegrator::traceCamera(const Ray& ray, ShadingContext& ctx,
 
 Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int depth,
                               const Vec3& weight, uint64_t budget, ShadingContext& ctx,
-                              std::optional<Hit>* firstHit, double tStart) const {
+                              std::optional<Hit>* firstHit, double tStart,
+                              double travelled) const {
     const std::optional<Hit> hit = mGeometry.nearestHit(ray, tStart, kInf, ctx.trace);
     if (firstHit) *firstHit = hit;
     if (!hit) return missColor(glm::normalize(ray.dir));
@@ -121,8 +138,11 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
     const Vec3 n = glm::dot(hit->normal, d) < 0 ? hit->normal : -hit->normal;
     const double err = hitErrorBound(ray, hit->t, p, hit->relError);
 
-    Vec3 c = m.emit + (1.0 - m.transmit) * m.ambient * m.color;
-    c += directLight(m, p, n, d, err, depth, ctx);
+    const double length = glm::length(p - segmentStart);
+    const Vec3 albedo = m.pattern ? surfaceColor(m, p, err, footprintAt(d, n, travelled + length, ctx))
+                                  : m.color;
+    Vec3 c = m.emit + (1.0 - m.transmit) * m.ambient * albedo;
+    c += directLight(m, albedo, p, n, d, err, depth, ctx);
 
     if (depth < mMaxDepth && budget > 0) {
         const double cosIn = -glm::dot(d, n);  // ≥ 0 with the face-forward normal
@@ -140,7 +160,7 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
                 const double cosOut = std::sqrt(k);
                 const double f = schlick(n1, n2, n1 <= n2 ? cosIn : cosOut);
                 reflectWeight += Vec3(m.transmit * f);
-                refractWeight = m.transmit * (1.0 - f) * m.color;
+                refractWeight = m.transmit * (1.0 - f) * albedo;
                 refractDir = glm::normalize(eta * d + (eta * cosIn - cosOut) * n);
             }
         }
@@ -154,7 +174,8 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
             if (m.glossy > 0.0)
                 dir = sampleConeAbove(dir, n, m.glossy, ctx.sample2D(sample_dim::gloss(depth)));
             const Ray r{offsetRayOrigin(p, n, err), dir};
-            c += reflectWeight * trace(r, p, depth + 1, wReflect, split.reflect - 1, ctx, nullptr);
+            c += reflectWeight * trace(r, p, depth + 1, wReflect, split.reflect - 1, ctx, nullptr,
+                                       0.0, travelled + length);
         }
         if (split.refract > 0) {
             ++ctx.rays.refraction;
@@ -162,17 +183,18 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
                 refractDir = sampleConeAbove(refractDir, -n, m.translucent,
                                          ctx.sample2D(sample_dim::gloss(depth) | kTranslucentDim));
             const Ray r{offsetRayOrigin(p, -n, err), refractDir};
-            c += refractWeight * trace(r, p, depth + 1, wRefract, split.refract - 1, ctx, nullptr);
+            c += refractWeight * trace(r, p, depth + 1, wRefract, split.refract - 1, ctx, nullptr,
+                                       0.0, travelled + length);
         }
     }
 
-    const double length = glm::length(p - segmentStart);
     // Everything seen through a leaving hit travelled the whole segment inside the solid.
     if (!hit->entering) c *= beer(m.absorb, length);
     return applyMist(c, length);
 }
 
-Vec3 WhittedIntegrator::directLight(const Material& m, const Vec3& p, const Vec3& n,
+Vec3 WhittedIntegrator::directLight(const Material& m, const Vec3& albedo, const Vec3& p,
+                                    const Vec3& n,
                                     const Vec3& d, double errorBound, int depth,
                                     ShadingContext& ctx) const {
     Vec3 sum(0.0);
@@ -199,7 +221,7 @@ Vec3 WhittedIntegrator::directLight(const Material& m, const Vec3& p, const Vec3
             if (maxComponent(pass) <= 0) continue;
         }
 
-        Vec3 term = (1.0 - m.transmit) * m.diffuse * cosL * m.color;
+        Vec3 term = (1.0 - m.transmit) * m.diffuse * cosL * albedo;
         if (m.specular > 0) {
             const Vec3 r = 2.0 * cosL * n - l;  // l mirrored about n
             const double cosR = std::max(0.0, -glm::dot(r, d));
@@ -222,7 +244,7 @@ Vec3 WhittedIntegrator::transmittance(const Ray& ray, double tmax, ShadingContex
         if (!b.isSurface() || !(b.t > 0.0 && b.t < tmax)) return;
         const Material& mb = material(b.material);
         if (mb.transmit <= 0) blocked = true;
-        else pass *= mb.transmit * mb.color;
+        else pass *= mb.transmit * surfaceColor(mb, ray.at(b.t), 0.0);
     };
     // Only the spans' extents and materials matter here, within the tolerance.
     const OcclusionScope scope(ctx.trace);

@@ -55,6 +55,9 @@ struct ShadingContext {
     const PixelSampler* sampler = nullptr;  ///< null: area lights and cones take their centre
     uint64_t pixel = 0;
     int sample = 0;
+    /// The angle one sample stands for (a pixel's, shared by its samples): a hit's footprint
+    /// is this times the distance travelled, for filtering patterns. 0: no filtering.
+    double sampleAngle = 0.0;
 
     /// The current sample's point in dimension `dim` (render/sampler.h).
     SubPixel sample2D(uint32_t dim) const {
@@ -97,12 +100,14 @@ private:
     /// Radiance arriving along `ray`, whose segment starts at `segmentStart` (the un-offset
     /// point the ray left, for lengths), after `depth` bounces, with path weight `weight`,
     /// allowed to spawn at most `budget` secondary rays below it.
+    /// travelled: the path's length from the camera to segmentStart (for footprints).
     Vec3 trace(const Ray& ray, const Vec3& segmentStart, int depth, const Vec3& weight,
                uint64_t budget, ShadingContext& ctx, std::optional<Hit>* firstHit,
-               double tStart = 0.0) const;
+               double tStart = 0.0, double travelled = 0.0) const;
     /// Direct light at p (normal n toward the viewer, unit view direction d).
-    Vec3 directLight(const Material& m, const Vec3& p, const Vec3& n, const Vec3& d,
-                     double errorBound, int depth, ShadingContext& ctx) const;
+    /// albedo: the material's colour at p (its pattern's, or its flat colour).
+    Vec3 directLight(const Material& m, const Vec3& albedo, const Vec3& p, const Vec3& n,
+                     const Vec3& d, double errorBound, int depth, ShadingContext& ctx) const;
     /// The fraction of light that passes from ray.origin along ray.dir (unit) up to tmax.
     Vec3 transmittance(const Ray& ray, double tmax, ShadingContext& ctx) const;
     /// What a ray along the unit direction d that hits nothing sees.

@@ -7,6 +7,7 @@
 
 #include "csg/node.h"
 #include "csg/types.h"
+#include "scene/pattern.h"
 #include "scene/sampling.h"
 
 #include <string>
@@ -31,9 +32,9 @@ struct Material {
     double glossy = 0.0;
     /// Translucency (frosted glass): the refracted ray spread over a cone of this half-angle.
     double translucent = 0.0;
-    /// Reserved for textures: a texture's name, empty for the flat `color` (the only kind
-    /// rendered yet). A texture will modulate `color`, so flat materials stay as they are.
-    std::string texture;
+    /// A solid texture that gives the colour point by point in place of `color` (null: the
+    /// flat `color`).
+    std::shared_ptr<const Pattern> pattern;
 };
 
 /// How a light's irradiance falls off with distance d (scaled so that every choice gives the

@@ -84,3 +84,46 @@ TEST_CASE("issue 10's properties refuse bad values with the line and column") {
                     "background gradient needs the property 'zenith'");
     requireOneError("light spot { at <0, 1, 0> }\n", 1, 7, "unknown light kind 'spot'");
 }
+
+TEST_CASE("patterns: kinds, entries, nesting, seeds and the pattern's transforms") {
+    const Compiled c = compileText(R"(
+let dark = <0.1, 0.1, 0.1>;
+material floor { pattern checker { a <0.9, 0.9, 0.9> b dark } scale 0.5 diffuse 0.8 }
+material wood { pattern rings { a <0.6, 0.4, 0.2> b pattern noise { a <0.4, 0.2, 0.1> seed 4 } scale 0.05 } rotate <90, 0, 0> }
+material marble { pattern turbulence { octaves 3 } }
+)");
+    INFO(c.sink.format());
+    REQUIRE(c.scene.has_value());
+    const Material& floor = c.scene->materials[1];
+    REQUIRE(floor.pattern);
+    CHECK(floor.pattern->kind == Pattern::Kind::Checker);
+    CHECK(floor.pattern->a.color == Vec3(0.9, 0.9, 0.9));
+    CHECK(floor.pattern->b.color == Vec3(0.1, 0.1, 0.1));
+    // scale 0.5: world → pattern space doubles.
+    CHECK(floor.pattern->toPattern.point(Vec3(1.0, 2.0, 3.0)) == Vec3(2.0, 4.0, 6.0));
+    CHECK(floor.diffuse == 0.8);
+    const Material& wood = c.scene->materials[2];
+    REQUIRE(wood.pattern);
+    CHECK(wood.pattern->kind == Pattern::Kind::Rings);
+    REQUIRE(wood.pattern->b.pattern);
+    CHECK(wood.pattern->b.pattern->kind == Pattern::Kind::Noise);
+    CHECK(wood.pattern->b.pattern->seed == 4);
+    CHECK(wood.pattern->b.pattern->b.color == Vec3(1.0));  // b defaults to white
+    CHECK(wood.pattern->b.pattern->toPattern.point(Vec3(0.05)) == Vec3(1.0));
+    const Material& marble = c.scene->materials[3];
+    REQUIRE(marble.pattern);
+    CHECK(marble.pattern->octaves == 3);
+    CHECK(marble.pattern->a.color == Vec3(0.0));
+}
+
+TEST_CASE("patterns refuse unknown kinds and bad values with the line and column") {
+    requireOneError("material m { pattern chequer { } }\n", 1, 22, "unknown pattern 'chequer'");
+    requireOneError("material m { pattern checker { a <-1, 0, 0> } }\n", 1, 34,
+                    "pattern colour a must not have negative components");
+    requireOneError("material m { pattern turbulence { octaves 40 } }\n", 1, 43,
+                    "turbulence pattern octaves must be an integer from 1 to 16, got 40");
+    requireOneError("material m { pattern checker { octaves 2 } }\n", 1, 32,
+                    "unknown property 'octaves' in checker pattern");
+    requireOneError("material m { pattern checker { } scale 0 }\n", 1, 40, "scale by zero flattens");
+    requireOneError("material m { pattern 3 }\n", 1, 22, "property 'pattern' of material expects a pattern");
+}

@@ -1,0 +1,129 @@
+/// @file render/pattern_eval.cpp
+/// @brief Solid textures and gradient noise.
+#include "render/pattern_eval.h"
+
+#include "render/sampler.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kerf {
+namespace {
+
+/// 6t⁵ − 15t⁴ + 10t³: zero first and second derivatives at 0 and 1.
+double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
+
+/// The 12 directions to the edges' midpoints of a cube (Perlin 2002).
+constexpr double kGradients[12][3] = {{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0},
+                                      {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
+                                      {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}};
+
+double cornerValue(int64_t i, int64_t j, int64_t k, uint64_t seed, double x, double y, double z) {
+    const uint64_t h = mixBits(mixBits(mixBits(seed ^ uint64_t(i)) ^ uint64_t(j)) ^ uint64_t(k));
+    const double* g = kGradients[h % 12];
+    return g[0] * x + g[1] * y + g[2] * z;
+}
+
+double lerp(double a, double b, double t) { return a + t * (b - a); }
+
+/// The largest absolute row sum of the map's linear part: how much it can stretch a length.
+double stretch(const Affine& a) {
+    double best = 0.0;
+    for (int r = 0; r < 3; ++r)
+        best = std::max(best, std::fabs(a.linear[0][r]) + std::fabs(a.linear[1][r]) +
+                                  std::fabs(a.linear[2][r]));
+    return best;
+}
+
+/// ⌊v⌋, taking values within `slack` below a whole number as that number.
+int64_t cell(double v, double slack) { return int64_t(std::floor(v + slack)); }
+
+Vec3 entryColor(const Pattern::Entry& e, const Vec3& p, double errorBound, const Footprint& footprint) {
+    return e.pattern ? patternColor(*e.pattern, p, errorBound, footprint) : e.color;
+}
+
+/// ∫₀ˣ (−1)^⌊u⌋ du: the triangle wave 1 − |(x mod 2) − 1|, periodic with period 2.
+double squareWaveIntegral(double x) {
+    const double m = x - 2.0 * std::floor(0.5 * x);
+    return 1.0 - std::fabs(m - 1.0);
+}
+
+
+
+}  // namespace
+
+double gradientNoise(const Vec3& p, uint64_t seed) {
+    const double fx = std::floor(p.x), fy = std::floor(p.y), fz = std::floor(p.z);
+    const int64_t i = int64_t(fx), j = int64_t(fy), k = int64_t(fz);
+    const double x = p.x - fx, y = p.y - fy, z = p.z - fz;
+    const double u = fade(x), v = fade(y), w = fade(z);
+    double c[2][2][2];
+    for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b)
+            for (int d = 0; d < 2; ++d)
+                c[a][b][d] = cornerValue(i + a, j + b, k + d, seed, x - a, y - b, z - d);
+    const double v0 = lerp(lerp(c[0][0][0], c[1][0][0], u), lerp(c[0][1][0], c[1][1][0], u), v);
+    const double v1 = lerp(lerp(c[0][0][1], c[1][0][1], u), lerp(c[0][1][1], c[1][1][1], u), v);
+    return std::clamp(lerp(v0, v1, w), -1.0, 1.0);
+}
+
+double filteredSquareWave(double x, double w, double slack) {
+    if (!(w > kFilterFloor)) return (cell(x, slack) & 1) == 0 ? 1.0 : -1.0;
+    if (w >= 2.0 * 1e6) return 0.0;  // millions of periods: the mean, exactly enough
+    const double lo = x - 0.5 * w, hi = x + 0.5 * w;
+    if (std::floor(lo) == std::floor(hi))  // inside one cell: its value, exactly
+        return (int64_t(std::floor(lo)) & 1) == 0 ? 1.0 : -1.0;
+    return std::clamp((squareWaveIntegral(hi) - squareWaveIntegral(lo)) / w, -1.0, 1.0);
+}
+
+Vec3 patternColor(const Pattern& pattern, const Vec3& p, double errorBound,
+                  const Footprint& footprint) {
+    const Affine& map = pattern.toPattern;
+    const Vec3 q = map.point(p);
+    // How far q may be from the true point, in the pattern's units (and a little more).
+    const double slack = 4.0 * errorBound * stretch(map);
+    // The box holding the footprint in the pattern's space, side by side.
+    const Vec3 w = glm::abs(map.vector(footprint.du)) + glm::abs(map.vector(footprint.dv));
+    const double widest = std::max({w.x, w.y, w.z});
+    const auto a = [&] { return entryColor(pattern.a, p, errorBound, footprint); };
+    const auto b = [&] { return entryColor(pattern.b, p, errorBound, footprint); };
+    // v in [−1, 1]: +1 all a, −1 all b.
+    auto mixSigned = [&](double v) {
+        if (v == 1.0) return a();
+        if (v == -1.0) return b();
+        return 0.5 * (1.0 + v) * a() + 0.5 * (1.0 - v) * b();
+    };
+    auto blend = [&](double t) {
+        t = std::clamp(t, 0.0, 1.0);
+        return a() + t * (b() - a());
+    };
+    switch (pattern.kind) {
+        case Pattern::Kind::Checker:
+            // (−1)^(⌊x⌋+⌊y⌋+⌊z⌋) is the product of three square waves, and a box filter of a
+            // product of functions of one axis each is the product of their filters.
+            return mixSigned(filteredSquareWave(q.x, w.x, slack) * filteredSquareWave(q.y, w.y, slack) *
+                             filteredSquareWave(q.z, w.z, slack));
+        case Pattern::Kind::Stripes: return mixSigned(filteredSquareWave(q.x, w.x, slack));
+        case Pattern::Kind::Rings:
+            return mixSigned(filteredSquareWave(std::sqrt(q.x * q.x + q.z * q.z), std::max(w.x, w.z), slack));
+        case Pattern::Kind::Gradient: return blend(q.x - std::floor(q.x));
+        case Pattern::Kind::Noise: return blend(0.5 + 0.5 * gradientNoise(q, pattern.seed));
+        case Pattern::Kind::Turbulence: {
+            double sum = 0.0, norm = 0.0, scale = 1.0;
+            for (int o = 0; o < std::max(1, pattern.octaves); ++o) {
+                // An octave whose features (about 1/scale) are finer than the footprint would
+                // alias; it fades to its mean instead (|noise| averages about 1/4).
+                const double detail = std::clamp(2.0 - widest * scale, 0.0, 1.0);
+                const double n =
+                    detail > 0.0 ? std::fabs(gradientNoise(q * scale, pattern.seed + uint64_t(o))) : 0.0;
+                sum += (detail * n + (1.0 - detail) * 0.25) / scale;
+                norm += 1.0 / scale;
+                scale *= 2.0;
+            }
+            return blend(sum / norm);
+        }
+    }
+    return pattern.a.color;
+}
+
+}  // namespace kerf

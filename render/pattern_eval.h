@@ -1,0 +1,48 @@
+/// @file render/pattern_eval.h
+/// @brief Evaluating solid textures (scene/pattern.h) at a shading point, and the seeded
+/// gradient noise they use.
+#pragma once
+
+#include "scene/pattern.h"
+#include "scene/scene.h"
+
+namespace kerf {
+
+/// Gradient noise (Perlin's improved noise, with its gradients chosen by a hash of the
+/// lattice point and the seed): C² smooth, 0 at every integer point, within [−1, 1].
+double gradientNoise(const Vec3& p, uint64_t seed);
+
+/// The patch of surface a sample stands for: the parallelogram p + a·du + b·dv, a and b in
+/// [−½, ½] (world vectors in the tangent plane; zero vectors for a point).
+struct Footprint {
+    Vec3 du{0.0};
+    Vec3 dv{0.0};
+};
+
+/// The pattern's colour at world point p, averaged over the box that holds the footprint in
+/// the pattern's space, so that detail finer than a pixel fades to its mean instead of
+/// aliasing: checker, stripes and rings are box filtered exactly (their square waves
+/// integrated axis by axis), turbulence drops the octaves finer than the footprint. Along an
+/// axis the footprint does not extend (a plane's normal), the point is used: errorBound, how
+/// far p may be from the true surface point (hitErrorBound), then decides a point that close
+/// to a cell boundary for the boundary's upper side, so a plane at a whole coordinate does not
+/// flicker between the two cells with the rounding of its hits.
+Vec3 patternColor(const Pattern& pattern, const Vec3& p, double errorBound,
+                  const Footprint& footprint = {});
+
+/// The material's colour at p: its pattern's if it has one, else its flat colour.
+inline Vec3 surfaceColor(const Material& m, const Vec3& p, double errorBound,
+                         const Footprint& footprint = {}) {
+    return m.pattern ? patternColor(*m.pattern, p, errorBound, footprint) : m.color;
+}
+
+/// The mean of the ±1 square wave s(x) = (−1)^⌊x⌋ over [x − w/2, x + w/2]; for w at or
+/// below kFilterFloor its value at x, taking x within `slack` below a whole number as that
+/// number.
+double filteredSquareWave(double x, double w, double slack = 0.0);
+
+/// Footprints narrower than this (in a pattern's units) are points: filtering would change
+/// nothing but rounding.
+constexpr double kFilterFloor = 1e-9;
+
+}  // namespace kerf
