@@ -30,8 +30,20 @@ void Lowering::lowerMaterial(const Statement& s, Material& m) {
                            {"emit", PropertyType::Vector},
                            {"glossy", PropertyType::Number},
                            {"translucent", PropertyType::Number},
-                           {"pattern", PropertyType::Solid}},
+                           {"pattern", PropertyType::Solid},
+                           {"bump", PropertyType::Solid},
+                           {"bump_depth", PropertyType::Number}},
                           "material", s.loc, mSink);
+    if (const Property* p = b.find("bump")) {
+        if (p->solid)
+            m.bump = lowerPattern(*p->solid);
+        else
+            error(p->valueLoc(), "property 'bump' of material expects a pattern",
+                  "write e.g. bump noise { } scale 0.1 bump_depth 0.2");
+    }
+    m.bumpDepth = m.bump ? 0.1 : 0.0;  // a bump without a depth is a gentle one
+    if (readNumber(b, "bump_depth", m.bumpDepth) && !std::isfinite(m.bumpDepth))
+        error(b.find("bump_depth")->valueLoc(), "material bump_depth must be finite");
     if (const Property* p = b.find("pattern")) {
         if (p->solid)
             m.pattern = lowerPattern(*p->solid);

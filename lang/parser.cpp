@@ -223,9 +223,9 @@ ArenaList<Property> Parser::parseProperties(const SourceLoc& open) {
         Property p;
         p.name = mArena->intern(name.text);
         p.loc = name.pos;
-        // A material's `pattern KIND { … }`, or a pattern as a pattern's entry:
-        // `a pattern KIND { … }` (scene/pattern.h).
-        const bool patternProperty = name.text == "pattern";
+        // A material's `pattern KIND { … }` or `bump KIND { … }`, or a pattern as a pattern's
+        // entry: `a pattern KIND { … }` (scene/pattern.h).
+        const bool patternProperty = name.text == "pattern" || name.text == "bump";
         if ((patternProperty || (checkWord("pattern") && peek(1).kind == TokenKind::Identifier)) &&
             (patternProperty ? peek(1) : peek(2)).kind == TokenKind::LBrace) {
             if (!patternProperty) next();

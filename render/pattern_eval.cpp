@@ -76,8 +76,10 @@ double filteredSquareWave(double x, double w, double slack) {
     return std::clamp((squareWaveIntegral(hi) - squareWaveIntegral(lo)) / w, -1.0, 1.0);
 }
 
-Vec3 patternColor(const Pattern& pattern, const Vec3& p, double errorBound,
-                  const Footprint& footprint) {
+namespace {
+
+/// How a pattern weighs its entries at a point: b's weight in [0, 1] (a's is 1 − that).
+double weightOfB(const Pattern& pattern, const Vec3& p, double errorBound, const Footprint& footprint) {
     const Affine& map = pattern.toPattern;
     const Vec3 q = map.point(p);
     // How far q may be from the true point, in the pattern's units (and a little more).
@@ -85,29 +87,20 @@ Vec3 patternColor(const Pattern& pattern, const Vec3& p, double errorBound,
     // The box holding the footprint in the pattern's space, side by side.
     const Vec3 w = glm::abs(map.vector(footprint.du)) + glm::abs(map.vector(footprint.dv));
     const double widest = std::max({w.x, w.y, w.z});
-    const auto a = [&] { return entryColor(pattern.a, p, errorBound, footprint); };
-    const auto b = [&] { return entryColor(pattern.b, p, errorBound, footprint); };
-    // v in [−1, 1]: +1 all a, −1 all b.
-    auto mixSigned = [&](double v) {
-        if (v == 1.0) return a();
-        if (v == -1.0) return b();
-        return 0.5 * (1.0 + v) * a() + 0.5 * (1.0 - v) * b();
-    };
-    auto blend = [&](double t) {
-        t = std::clamp(t, 0.0, 1.0);
-        return a() + t * (b() - a());
-    };
+    // A square-wave product v in [−1, 1] (+1: all a) as b's weight.
+    const auto fromSigned = [](double v) { return v == 1.0 ? 0.0 : v == -1.0 ? 1.0 : 0.5 * (1.0 - v); };
     switch (pattern.kind) {
         case Pattern::Kind::Checker:
             // (−1)^(⌊x⌋+⌊y⌋+⌊z⌋) is the product of three square waves, and a box filter of a
             // product of functions of one axis each is the product of their filters.
-            return mixSigned(filteredSquareWave(q.x, w.x, slack) * filteredSquareWave(q.y, w.y, slack) *
-                             filteredSquareWave(q.z, w.z, slack));
-        case Pattern::Kind::Stripes: return mixSigned(filteredSquareWave(q.x, w.x, slack));
+            return fromSigned(filteredSquareWave(q.x, w.x, slack) * filteredSquareWave(q.y, w.y, slack) *
+                              filteredSquareWave(q.z, w.z, slack));
+        case Pattern::Kind::Stripes: return fromSigned(filteredSquareWave(q.x, w.x, slack));
         case Pattern::Kind::Rings:
-            return mixSigned(filteredSquareWave(std::sqrt(q.x * q.x + q.z * q.z), std::max(w.x, w.z), slack));
-        case Pattern::Kind::Gradient: return blend(q.x - std::floor(q.x));
-        case Pattern::Kind::Noise: return blend(0.5 + 0.5 * gradientNoise(q, pattern.seed));
+            return fromSigned(
+                filteredSquareWave(std::sqrt(q.x * q.x + q.z * q.z), std::max(w.x, w.z), slack));
+        case Pattern::Kind::Gradient: return q.x - std::floor(q.x);
+        case Pattern::Kind::Noise: return std::clamp(0.5 + 0.5 * gradientNoise(q, pattern.seed), 0.0, 1.0);
         case Pattern::Kind::Turbulence: {
             double sum = 0.0, norm = 0.0, scale = 1.0;
             for (int o = 0; o < std::max(1, pattern.octaves); ++o) {
@@ -120,10 +113,43 @@ Vec3 patternColor(const Pattern& pattern, const Vec3& p, double errorBound,
                 norm += 1.0 / scale;
                 scale *= 2.0;
             }
-            return blend(sum / norm);
+            return std::clamp(sum / norm, 0.0, 1.0);
         }
     }
-    return pattern.a.color;
+    return 0.0;
+}
+
+}  // namespace
+
+double patternValue(const Pattern& pattern, const Vec3& p, double errorBound, const Footprint& footprint) {
+    return weightOfB(pattern, p, errorBound, footprint);
+}
+
+Vec3 patternColor(const Pattern& pattern, const Vec3& p, double errorBound,
+                  const Footprint& footprint) {
+    const double t = weightOfB(pattern, p, errorBound, footprint);
+    // Only the entries with weight are looked at (a nested pattern costs nothing unseen).
+    if (t == 0.0) return entryColor(pattern.a, p, errorBound, footprint);
+    if (t == 1.0) return entryColor(pattern.b, p, errorBound, footprint);
+    const Vec3 a = entryColor(pattern.a, p, errorBound, footprint);
+    return a + t * (entryColor(pattern.b, p, errorBound, footprint) - a);
+}
+
+Vec3 bumpedNormal(const Pattern& bump, double depth, const Vec3& p, const Vec3& n, double errorBound,
+                  const Footprint& footprint) {
+    if (depth == 0.0) return n;
+    const double unit = 1.0 / std::max(stretch(bump.toPattern), 1e-300);
+    const double step = std::max({1e-3 * unit, glm::length(footprint.du), glm::length(footprint.dv)});
+    Vec3 gradient;
+    for (int k = 0; k < 3; ++k) {
+        Vec3 e(0.0);
+        e[k] = step;
+        gradient[k] = (patternValue(bump, p + e, 0.0) - patternValue(bump, p - e, 0.0)) / (2.0 * step);
+    }
+    const Vec3 along = gradient - glm::dot(gradient, n) * n;  // its part along the surface
+    const Vec3 tilted = n - depth * along;
+    const double length = glm::length(tilted);
+    return length > 0.0 && std::isfinite(length) ? tilted / length : n;
 }
 
 }  // namespace kerf

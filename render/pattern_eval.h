@@ -36,6 +36,18 @@ inline Vec3 surfaceColor(const Material& m, const Vec3& p, double errorBound,
     return m.pattern ? patternColor(*m.pattern, p, errorBound, footprint) : m.color;
 }
 
+/// The pattern's own scalar in [0, 1] at p, the weight of b against a (0: a, 1: b) before its
+/// entries are looked at: a bump map's height (filtered over the footprint like the colour).
+double patternValue(const Pattern& pattern, const Vec3& p, double errorBound,
+                    const Footprint& footprint = {});
+
+/// The shading normal of a bump map (Blinn 1978): the unit normal n tilted against the
+/// gradient of depth · h(p) along the surface, h the pattern's value. The gradient is taken
+/// by central differences over a step of a thousandth of the pattern's unit, or across the
+/// footprint where that is wider (which smooths bumps finer than a pixel).
+Vec3 bumpedNormal(const Pattern& bump, double depth, const Vec3& p, const Vec3& n,
+                  double errorBound, const Footprint& footprint = {});
+
 /// The mean of the ±1 square wave s(x) = (−1)^⌊x⌋ over [x − w/2, x + w/2]; for w at or
 /// below kFilterFloor its value at x, taking x within `slack` below a whole number as that
 /// number.

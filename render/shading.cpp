@@ -135,10 +135,17 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
     const Vec3 p = ray.at(hit->t);
     const Vec3 d = glm::normalize(ray.dir);
     // Shade with the normal turned toward the viewer; the outward normal decides nothing else.
-    const Vec3 n = glm::dot(hit->normal, d) < 0 ? hit->normal : -hit->normal;
+    Vec3 n = glm::dot(hit->normal, d) < 0 ? hit->normal : -hit->normal;
     const double err = hitErrorBound(ray, hit->t, p, hit->relError);
-
     const double length = glm::length(p - segmentStart);
+    if (m.bump && m.bumpDepth != 0.0) {
+        // The bumped normal shades; one tilted to face away from the viewer (a bump steeper
+        // than the view is grazing) would light the back of the surface, so it is not taken.
+        const Vec3 bumped =
+            bumpedNormal(*m.bump, m.bumpDepth, p, n, err, footprintAt(d, n, travelled + length, ctx));
+        if (glm::dot(bumped, d) < 0.0) n = bumped;
+    }
+
     const Vec3 albedo = m.pattern ? surfaceColor(m, p, err, footprintAt(d, n, travelled + length, ctx))
                                   : m.color;
     Vec3 c = m.emit + (1.0 - m.transmit) * m.ambient * albedo;

@@ -35,6 +35,10 @@ struct Material {
     /// A solid texture that gives the colour point by point in place of `color` (null: the
     /// flat `color`).
     std::shared_ptr<const Pattern> pattern;
+    /// A bump map: the shading normal tilted by the gradient of bumpDepth · h, h the pattern's
+    /// value in [0, 1] (null: none).
+    std::shared_ptr<const Pattern> bump;
+    double bumpDepth = 0.0;
 };
 
 /// How a light's irradiance falls off with distance d (scaled so that every choice gives the

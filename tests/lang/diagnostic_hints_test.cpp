@@ -228,7 +228,7 @@ TEST_CASE("hints: unknown and value-less properties in every block") {
              "unknown property 'max_gradient' in implicit", "implicit takes: f, bound"},
             {"material m { color <1,0,0> phong }", 28, "unknown property 'phong' in material",
              "material takes: color, ambient, diffuse, specular, shininess, reflect, transmit, "
-             "ior, absorb, emit, glossy, translucent, pattern"},
+             "ior, absorb, emit, glossy, translucent, pattern, bump, bump_depth"},
             {"camera { location <0, 0, -5> }", 10, "unknown property 'location' in camera",
              "camera takes: eye, look_at, up, fov, aperture, focus_distance"},
             {"light point { at <0,1,0> shadowless }", 26,

@@ -127,3 +127,20 @@ TEST_CASE("patterns refuse unknown kinds and bad values with the line and column
     requireOneError("material m { pattern checker { } scale 0 }\n", 1, 40, "scale by zero flattens");
     requireOneError("material m { pattern 3 }\n", 1, 22, "property 'pattern' of material expects a pattern");
 }
+
+TEST_CASE("bump maps: a pattern and a depth") {
+    const Compiled c = compileText(R"(
+material rough { color <0.7, 0.7, 0.7> bump noise { seed 2 } scale 0.1 bump_depth 0.25 }
+material gentle { bump checker { } }
+)");
+    INFO(c.sink.format());
+    REQUIRE(c.scene.has_value());
+    const Material& rough = c.scene->materials[1];
+    REQUIRE(rough.bump);
+    CHECK(rough.bump->kind == Pattern::Kind::Noise);
+    CHECK(rough.bump->seed == 2);
+    CHECK(rough.bumpDepth == 0.25);
+    CHECK_FALSE(rough.pattern);
+    CHECK(c.scene->materials[2].bumpDepth == 0.1);  // the default depth
+    requireOneError("material m { bump 0.3 }\n", 1, 19, "property 'bump' of material expects a pattern");
+}

@@ -165,3 +165,49 @@ TEST_CASE("a checker floor to the horizon does not alias at one sample per pixel
     CHECK(energyOne / n <= 2.0 * energyRef / n + 1e-3);
     CHECK(diff / n < 0.05);
 }
+
+TEST_CASE("bump maps tilt the normal against the height's gradient along the surface") {
+    // h = frac(x / s) (a gradient pattern scaled by s) has gradient (1/s, 0, 0) away from its
+    // jumps; on a floor (n = +y) the bumped normal is normalize(−depth/s, 1, 0).
+    auto ramp = std::make_shared<Pattern>();
+    ramp->kind = Pattern::Kind::Gradient;
+    const double s = 4.0, depth = 0.7;
+    ramp->toPattern = Affine::scale(Vec3(s)).inverse();
+    const Vec3 n(0.0, 1.0, 0.0);
+    for (double x : {0.5, 1.3, 2.9, -1.7}) {
+        const Vec3 b = bumpedNormal(*ramp, depth, Vec3(x, 0.0, 0.2), n, 0.0);
+        const Vec3 expect = glm::normalize(Vec3(-depth / s, 1.0, 0.0));
+        INFO("x " << x);
+        CHECK(b.x == Approx(expect.x).epsilon(1e-6));
+        CHECK(b.y == Approx(expect.y).epsilon(1e-6));
+        CHECK(b.z == Approx(0.0).margin(1e-9));
+    }
+    // The gradient's part along the normal does not tilt it: a ramp along y on the floor.
+    ramp->toPattern = Affine::rotateDegrees(Vec3(0.0, 0.0, 90.0)).inverse();
+    const Vec3 same = bumpedNormal(*ramp, depth, Vec3(0.3, 0.2, 0.1), n, 0.0);
+    CHECK(same.y == Approx(1.0).epsilon(1e-9));
+    // Depth 0: the normal itself.
+    CHECK(bumpedNormal(*ramp, 0.0, Vec3(0.3), n, 0.0) == n);
+}
+
+TEST_CASE("a bumped floor under a directional light shades with the tilted normal") {
+    Scene scene;
+    Material floor = blackMaterial();
+    floor.diffuse = 1.0;
+    auto ramp = std::make_shared<Pattern>();
+    ramp->kind = Pattern::Kind::Gradient;
+    ramp->toPattern = Affine::scale(Vec3(8.0)).inverse();  // h = frac(x/8): slope 1/8
+    floor.bump = ramp;
+    floor.bumpDepth = 2.0;  // tilt: normalize(−0.25, 1, 0)
+    const int32_t m = addMaterial(scene, floor);
+    addObject(scene, makeHalfSpace(Vec3(0.0, 1.0, 0.0), 0.0), m);
+    Light sun;
+    sun.kind = Light::Kind::Directional;
+    sun.direction = Vec3(0.0, -1.0, 0.0);
+    scene.lights.push_back(sun);
+    scene.camera.eye = Vec3(3.0, 5.0, 0.01);
+    scene.camera.lookAt = Vec3(3.0, 0.0, 0.0);
+    const RenderResult r = render(scene, smallImage(9, 9, 1));
+    // The centre pixel sees x ≈ 3 (inside one ramp): cos = 1/√(1 + 1/16).
+    CHECK(r.color.at(4, 4, 0) == Approx(1.0 / std::sqrt(1.0 + 1.0 / 16.0)).epsilon(1e-6));
+}
