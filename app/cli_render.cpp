@@ -96,6 +96,16 @@ RenderOptions renderOptions(const RenderCommandLine& line, const OutputPlan& pla
     const std::optional<BeamMode> beams = parseBeamMode(line.beams);
     if (!beams) throw UsageError("--beams must be auto, on or off (got '" + line.beams + "')");
     options.beams = *beams;
+    if (!line.filter.empty()) {
+        options.filter = parseFilter(line.filter);
+        if (!options.filter)
+            throw UsageError("--filter must be box, gaussian or mitchell (got '" + line.filter + "')");
+    }
+    if (line.noiseOption && line.noiseOption->count() > 0) {
+        if (!(line.noise >= 0.0 && std::isfinite(line.noise)))
+            throw UsageError("--noise must be a standard error of 0 or more (got " + std::to_string(line.noise) + ")");
+        options.noise = line.noise;
+    }
     if (!line.sampler.empty()) {
         options.sampler = parseSampler(line.sampler);
         if (!options.sampler)
@@ -120,7 +130,7 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
         ".exr .tif (float linear). Default: the model's base name with .png, here");
     line.widthOption = cmd->add_option("--width", line.width, "Image width in pixels");
     line.heightOption = cmd->add_option("--height", line.height, "Image height in pixels");
-    line.sppOption = cmd->add_option("--spp", line.spp, "Samples per pixel (an n×n jittered grid)");
+    line.sppOption = cmd->add_option("--spp", line.spp, "Samples per pixel, exactly (placed by --sampler)");
     line.threadsOption =
         cmd->add_option("--threads", line.threads, "Worker threads; 0 uses every hardware thread");
     line.toleranceOption = cmd->add_option(
@@ -143,6 +153,15 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
                     "How each pixel's samples are placed: regular, random, jittered (the "
                     "default) or lattice (low discrepancy); overrides the model's render setting")
         ->type_name("regular|random|jittered|lattice");
+    cmd->add_option("--filter", line.filter,
+                    "Reconstruction filter: box (the default: each pixel averages its own "
+                    "samples), gaussian (radius 1.5 pixels) or mitchell (Mitchell-Netravali, "
+                    "radius 2); overrides the model's render setting")
+        ->type_name("box|gaussian|mitchell");
+    line.noiseOption = cmd->add_option(
+        "--noise", line.noise,
+        "Adaptive sampling: stop a pixel once the standard error of its mean luminance is below "
+        "T (after at least 16 samples; spp stays the most); 0 turns it off");
     cmd->add_option("--beams", line.beams,
                     "Coherent camera rays: each tile's rays start where an interval test of "
                     "the tile's frustum proved space empty. auto (the default: on for scenes "

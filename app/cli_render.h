@@ -28,11 +28,14 @@ struct RenderCommandLine {
     int accelDepth = 0;
     std::string beams = "auto";
     std::string sampler;  ///< empty: the model's render settings
+    std::string filter;   ///< empty: the model's render settings
+    double noise = -1.0;  ///< < 0: the model's render settings
     std::vector<std::string> aovs;
     bool stats = false;
     bool quiet = false;
 
     CLI::Option* outputOption = nullptr;
+    CLI::Option* noiseOption = nullptr;
     CLI::Option* widthOption = nullptr;
     CLI::Option* heightOption = nullptr;
     CLI::Option* sppOption = nullptr;

@@ -35,7 +35,13 @@ void printStats(const RunReport& report, std::ostream& out) {
     std::string samples = std::to_string(s.samplesPerPixel);
     if (s.samplesPerPixel != report.spp)
         samples += " (requested " + std::to_string(report.spp) + ")";
-    out << line("samples per pixel", samples + ", " + samplerName(s.sampler));
+    out << line("samples per pixel", samples + ", " + samplerName(s.sampler) + ", " +
+                                         filterName(s.filter) + " filter");
+    const uint64_t pixels = uint64_t(report.width) * uint64_t(report.height);
+    if (pixels > 0 && s.samplesTaken != pixels * uint64_t(std::max(s.samplesPerPixel, 1)))
+        out << line("samples taken", count(s.samplesTaken) +
+                                         formatDouble(" (%.3g per pixel, adaptive)",
+                                                      double(s.samplesTaken) / double(pixels)));
     out << line("threads", std::to_string(report.threads));
     out << line("tolerance", formatDouble("%.3g (relative)", s.tolerance));
     out << line("camera rays", count(s.cameraRays));

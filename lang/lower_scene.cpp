@@ -198,8 +198,16 @@ void Lowering::lowerRender(const Statement& s, RenderSettings& settings) {
                            {"height", PropertyType::Number},
                            {"spp", PropertyType::Number},
                            {"max_depth", PropertyType::Number},
-                           {"sampler", PropertyType::Word}},
+                           {"sampler", PropertyType::Word},
+                           {"filter", PropertyType::Word},
+                           {"noise", PropertyType::Number}},
                           "render", s.loc, mSink);
+    std::string filter;
+    if (readWord(b, "filter", {"box", "gaussian", "mitchell"}, filter) && !filter.empty())
+        settings.filter = *parseFilter(filter);
+    if (readNumber(b, "noise", settings.noise) && !(settings.noise >= 0 && std::isfinite(settings.noise)))
+        error(b.find("noise")->valueLoc(), "render noise must be 0 or more, got " + formatNumber(settings.noise),
+              "noise is the standard error at which a pixel stops sampling; 0 turns adaptive sampling off");
     std::string sampler;
     if (readWord(b, "sampler", {"jittered", "lattice", "random", "regular"}, sampler) && !sampler.empty())
         settings.sampler = *parseSampler(sampler);

@@ -4,6 +4,7 @@
 
 #include "csg/scene_geometry.h"
 #include "render/camera.h"
+#include "render/film.h"
 #include "render/sampler.h"
 #include "render/shading.h"
 
@@ -46,10 +47,17 @@ struct FrameJob {
     RenderResult& result;
     bool wantDepth;
     bool wantNormal;
+    ReconstructionFilter filter;  ///< box: each pixel averages its own samples
+    double noise;                 ///< adaptive sampling's target standard error; 0: off
+    std::vector<TileFilm>* films;  ///< one per tile, for filters wider than the box
 };
 
+/// Rec. 709 luminance: the quantity whose noise adaptive sampling watches.
+double luminance(const Vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+
 /// tStart: where the pixel's camera rays may start (render/primary_beams.h).
-void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContext& ctx) {
+void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContext& ctx,
+                 TileFilm* film, uint64_t& samplesTaken) {
     RenderResult& out = job.result;
     const uint64_t pixel = uint64_t(j) * uint64_t(out.color.width) + uint64_t(i);
     const bool wantAov = job.wantDepth || job.wantNormal;
@@ -62,6 +70,8 @@ void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContex
     const bool centreServes = count == 1 && !lens;
     std::optional<Hit> centreHit;
     Vec3 sum(0.0);
+    int taken = 0;
+    double lumSum = 0.0, lumSum2 = 0.0;
     ctx.sampler = &job.sampler;
     ctx.pixel = pixel;
     // Each of n samples stands for 1/n of the pixel: a square about 1/√n of its side.
@@ -69,16 +79,34 @@ void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContex
     for (int s = 0; s < count; ++s) {
         ctx.sample = s;
         Ray ray = centreRay;
+        SubPixel at;  // the film position within the pixel
         if (!centreServes) {
-            const SubPixel film = job.sampler.position(pixel, s);
-            const SubPixel at = lens ? job.sampler.get2D(pixel, s, sample_dim::kLens) : SubPixel{};
-            ray = job.camera.rayThrough(i + film.x, j + film.y, at.x, at.y);
+            at = job.sampler.position(pixel, s);
+            const SubPixel lensAt = lens ? job.sampler.get2D(pixel, s, sample_dim::kLens) : SubPixel{};
+            ray = job.camera.rayThrough(i + at.x, j + at.y, lensAt.x, lensAt.y);
         }
-        sum += job.integrator.traceCamera(ray, ctx, centreServes && wantAov ? &centreHit : nullptr,
-                                          tStart);
+        const Vec3 c = job.integrator.traceCamera(
+            ray, ctx, centreServes && wantAov ? &centreHit : nullptr, tStart);
+        if (film) film->add(i + at.x, j + at.y, c, job.filter);
+        sum += c;
+        ++taken;
+        if (job.noise > 0.0) {
+            // Stop once the mean's standard error is below the target (the sample variance
+            // over-estimates it for stratified samples: the rule errs toward more samples).
+            const double l = luminance(c);
+            lumSum += l;
+            lumSum2 += l * l;
+            if (taken >= std::min(kMinAdaptiveSamples, count) && taken >= 2) {
+                const double variance = std::max(0.0, (lumSum2 - lumSum * lumSum / taken) / (taken - 1));
+                if (std::sqrt(variance / taken) < job.noise) break;
+            }
+        }
     }
-    const Vec3 c = sum / double(count);
-    for (int k = 0; k < 3; ++k) out.color.at(i, j, k) = float(c[k]);
+    samplesTaken += uint64_t(taken);
+    if (!film) {
+        const Vec3 c = sum / double(taken);
+        for (int k = 0; k < 3; ++k) out.color.at(i, j, k) = float(c[k]);
+    }
 
     if (!wantAov) return;
     if (!centreServes) {
@@ -92,7 +120,8 @@ void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContex
         for (int k = 0; k < 3; ++k) out.normal.at(i, j, k) = float(centreHit->normal[k]);
 }
 
-void renderTile(const FrameJob& job, int tile, ShadingContext& ctx, BeamStats& beamStats) {
+void renderTile(const FrameJob& job, int tile, ShadingContext& ctx, BeamStats& beamStats,
+                uint64_t& samplesTaken) {
     const int width = job.result.color.width;
     const int height = job.result.color.height;
     const int tilesAcross = (width + kTileSize - 1) / kTileSize;
@@ -103,9 +132,14 @@ void renderTile(const FrameJob& job, int tile, ShadingContext& ctx, BeamStats& b
     double starts[kTileSize * kTileSize];
     std::fill(starts, starts + kTileSize * kTileSize, 0.0);
     if (job.beams) job.beams->tileStarts(x0, y0, x1, y1, starts, beamStats);
+    TileFilm* film = nullptr;
+    if (job.films) {
+        (*job.films)[size_t(tile)] = TileFilm(x0, y0, x1, y1, int(std::ceil(job.filter.radius)));
+        film = &(*job.films)[size_t(tile)];
+    }
     for (int j = y0; j < y1; ++j)
         for (int i = x0; i < x1; ++i)
-            renderPixel(job, i, j, starts[(j - y0) * (x1 - x0) + (i - x0)], ctx);
+            renderPixel(job, i, j, starts[(j - y0) * (x1 - x0) + (i - x0)], ctx, film, samplesTaken);
 }
 
 /// Calls the user's progress callback from the tile loop: rarely, and from one thread at a
@@ -203,22 +237,36 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
                             (options.beams == BeamMode::Auto &&
                              beamsPay(scene.objects, octreeOptions)));
     result.stats.beamsUsed = useBeams;
-    const FrameJob job{camera,  sampler, geometry,           integrator,        useBeams ? &beams : nullptr,
-                       result,  options.wantDepth, options.wantNormal};
+    const FilterKind filterKind = options.filter.value_or(scene.settings.filter);
+    const int tileCount = ((width + kTileSize - 1) / kTileSize) *
+                          ((height + kTileSize - 1) / kTileSize);
+    std::vector<TileFilm> films;
+    if (filterKind != FilterKind::Box) films.resize(size_t(tileCount));
+    const FrameJob job{camera,
+                       sampler,
+                       geometry,
+                       integrator,
+                       useBeams ? &beams : nullptr,
+                       result,
+                       options.wantDepth,
+                       options.wantNormal,
+                       ReconstructionFilter::of(filterKind),
+                       options.noise >= 0.0 ? options.noise : scene.settings.noise,
+                       films.empty() ? nullptr : &films};
+    result.stats.filter = filterKind;
     result.stats.secondsSetup = secondsSince(setupStart);
 
     const auto traceStart = Clock::now();
     const double tolerance = result.stats.tolerance;
     const TraceMethod method = options.method;
     tbb::enumerable_thread_specific<BeamStats> beamStats;
+    tbb::enumerable_thread_specific<uint64_t> samples(uint64_t(0));
     tbb::enumerable_thread_specific<ShadingContext> contexts([tolerance, method] {
         ShadingContext ctx;
         ctx.trace.relTolerance = tolerance;
         ctx.trace.method = method;
         return ctx;
     });
-    const int tileCount = ((width + kTileSize - 1) / kTileSize) *
-                          ((height + kTileSize - 1) / kTileSize);
     ProgressReporter progress(options.progress, tileCount);
     arena.execute([&] {
         // One tile per task: tiles are already coarse, and the simple partitioner keeps the
@@ -228,8 +276,9 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
             [&](const tbb::blocked_range<int>& range) {
                 ShadingContext& ctx = contexts.local();
                 BeamStats& beamCounts = beamStats.local();
+                uint64_t& samplesTaken = samples.local();
                 for (int tile = range.begin(); tile != range.end(); ++tile) {
-                    renderTile(job, tile, ctx, beamCounts);
+                    renderTile(job, tile, ctx, beamCounts, samplesTaken);
                     progress.tileDone();
                 }
             },
@@ -245,6 +294,13 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         result.stats.trace += ctx.trace.stats;
     }
     for (const BeamStats& b : beamStats) result.stats.beams += b;
+    for (uint64_t n : samples) result.stats.samplesTaken += n;
+    if (!films.empty()) {
+        // Tile by tile in a fixed order: the same sums whatever the threads did.
+        std::vector<double> sums(size_t(width) * size_t(height) * 4, 0.0);
+        for (const TileFilm& f : films) f.addInto(sums, width, height);
+        resolveFilm(sums, result.color);
+    }
     result.stats.secondsTrace = secondsSince(traceStart);
     result.stats.octree = octreeStats(geometry.objects());
     return result;

@@ -18,6 +18,8 @@ struct RenderOptions {
     int height = 0;       ///< 0: take the scene's render settings
     int spp = 0;          ///< 0: take the scene's render settings
     std::optional<SamplerKind> sampler;  ///< unset: take the scene's render settings
+    std::optional<FilterKind> filter;    ///< unset: take the scene's render settings
+    double noise = -1.0;  ///< adaptive sampling's target; < 0: take the scene's render settings
     int threads = 0;      ///< 0: all hardware threads
     double tolerance = 0; ///< relative hit-distance tolerance; 0: derived from the pixel footprint
     TraceMethod method = TraceMethod::Closed;  ///< how primitives find crossings
@@ -45,6 +47,8 @@ struct RenderStats {
     double tolerance = 0;  ///< the relative tolerance in force
     int samplesPerPixel = 0;  ///< traced per pixel (the requested spp, clamped to the limit)
     SamplerKind sampler = SamplerKind::Jittered;
+    FilterKind filter = FilterKind::Box;
+    uint64_t samplesTaken = 0;  ///< camera samples traced (fewer than pixels × spp with --noise)
 };
 
 struct RenderResult {
@@ -57,6 +61,10 @@ struct RenderResult {
 /// The default relative tolerance for an image of `height` rows and vertical field of view
 /// `fovDegrees`: a fraction of the angle one pixel spans (see docs/accuracy.md).
 double defaultTolerance(int height, double fovDegrees);
+
+/// Adaptive sampling takes at least this many samples of a pixel (or all, if fewer) before it
+/// trusts the estimate of the noise.
+constexpr int kMinAdaptiveSamples = 16;
 
 RenderResult render(const Scene& scene, const RenderOptions& options);
 

@@ -10,11 +10,30 @@
 namespace kerf {
 
 enum class SamplerKind : uint8_t {
-    Regular,   ///< the centres of a cols × rows grid (the first N cells): no noise, aliasing
+    Regular,   ///< the centres of N cells of a cols × rows grid (all of them when N = cols × rows,
+               ///< else a shuffled choice per pixel): no noise, aliasing
     Random,    ///< independent uniform points
     Jittered,  ///< one uniform point in each cell of a cols × rows grid (the default)
     Lattice,   ///< a rank-1 lattice (Korobov) shifted per pixel: low discrepancy
 };
+
+/// How samples are weighed into pixels (render/film.h).
+enum class FilterKind : uint8_t { Box, Gaussian, Mitchell };
+
+inline const char* filterName(FilterKind kind) {
+    switch (kind) {
+        case FilterKind::Box: return "box";
+        case FilterKind::Gaussian: return "gaussian";
+        case FilterKind::Mitchell: return "mitchell";
+    }
+    return "?";
+}
+
+inline std::optional<FilterKind> parseFilter(const std::string& name) {
+    for (FilterKind k : {FilterKind::Box, FilterKind::Gaussian, FilterKind::Mitchell})
+        if (name == filterName(k)) return k;
+    return std::nullopt;
+}
 
 /// "regular", "random", "jittered", "lattice".
 inline const char* samplerName(SamplerKind kind) {

@@ -95,8 +95,8 @@ struct CameraDesc {
     Vec3 lookAt{0.0};
     Vec3 up{0.0, 1.0, 0.0};
     double fovDegrees = 40.0;  ///< vertical field of view, in (0, 180)
-    /// A thin lens and a shutter, reserved: the defaults are the pinhole camera at one instant,
-    /// which is all render/ draws yet.
+    /// A thin lens (aperture > 0) and a shutter (reserved for motion blur: render/ draws one
+    /// instant yet). The defaults are the pinhole camera at one instant.
     double aperture = 0.0;       ///< lens diameter; 0 is a pinhole
     double focusDistance = 0.0;  ///< 0: the distance from eye to lookAt
     double shutterOpen = 0.0;    ///< shutter interval in scene time; equal ends: one instant
@@ -123,6 +123,10 @@ struct RenderSettings {
     int height = 480;
     int spp = 1;       ///< samples per pixel, exactly
     SamplerKind sampler = SamplerKind::Jittered;  ///< how they are placed (scene/sampling.h)
+    FilterKind filter = FilterKind::Box;          ///< how they are weighed into pixels
+    /// Adaptive sampling: a pixel stops once the standard error of its mean (luminance) is
+    /// below this, after at least kMinAdaptiveSamples samples; 0: always spp samples.
+    double noise = 0.0;
     int maxDepth = 8;  ///< bounces of reflection and refraction
 };
 

@@ -54,7 +54,7 @@ TEST_CASE("kerf render --stats") {
     INFO("stderr:\n" << run.err);
     REQUIRE(run.exitCode == 0);
     CHECK(statsValue(run.err, "image") == "20 x 10");
-    CHECK(statsValue(run.err, "samples per pixel") == "4, jittered");
+    CHECK(statsValue(run.err, "samples per pixel") == "4, jittered, box filter");
     CHECK(statsValue(run.err, "threads") == "2");
     CHECK(statsValue(run.err, "tolerance") == "1e-06 (relative)");
     // spp 4: 4 camera rays per pixel.
@@ -79,8 +79,8 @@ TEST_CASE("kerf render --stats: samples per pixel as traced") {
         const char* printed;
         int traced;
     };
-    for (const Case& c : {Case{"5", "", "5, jittered", 5}, Case{"9", "lattice", "9, lattice", 9},
-                          Case{"2", "random", "2, random", 2}, Case{"1", "regular", "1, regular", 1}}) {
+    for (const Case& c : {Case{"5", "", "5, jittered, box filter", 5}, Case{"9", "lattice", "9, lattice, box filter", 9},
+                          Case{"2", "random", "2, random, box filter", 2}, Case{"1", "regular", "1, regular, box filter", 1}}) {
         INFO("--spp " << c.spp << " --sampler " << c.sampler);
         std::vector<std::string> args{"render", "matte.kerf", "-o", "m.png", "--stats", "--spp", c.spp};
         if (*c.sampler) args.insert(args.end(), {"--sampler", c.sampler});
@@ -95,7 +95,7 @@ TEST_CASE("kerf render --stats: samples per pixel as traced") {
         dir.write("spp3.kerf", model);
         const KerfRun run = runKerf(dir, {"render", "spp3.kerf", "-o", "m.png", "--stats"});
         REQUIRE(run.exitCode == 0);
-        CHECK(statsValue(run.err, "samples per pixel") == "3, jittered");
+        CHECK(statsValue(run.err, "samples per pixel") == "3, jittered, box filter");
     }
     SECTION("an unknown sampler is a usage error") {
         const KerfRun run =

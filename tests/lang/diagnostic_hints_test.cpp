@@ -239,7 +239,7 @@ TEST_CASE("hints: unknown and value-less properties in every block") {
             {"mist { distance 1 fog }", 19, "unknown property 'fog' in mist",
              "mist takes: color, distance"},
             {"render { width 10 antialias 0.3 }", 19, "unknown property 'antialias' in render",
-             "render takes: width, height, spp, max_depth, sampler"},
+             "render takes: width, height, spp, max_depth, sampler, filter, noise"},
         };
         for (const Case& k : cases) {
             INFO(k.text);

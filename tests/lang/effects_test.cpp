@@ -144,3 +144,13 @@ material gentle { bump checker { } }
     CHECK(c.scene->materials[2].bumpDepth == 0.1);  // the default depth
     requireOneError("material m { bump 0.3 }\n", 1, 19, "property 'bump' of material expects a pattern");
 }
+
+TEST_CASE("render: the reconstruction filter and adaptive sampling's noise target") {
+    const Compiled c = compileText("render { spp 64 filter mitchell noise 0.01 }\n");
+    INFO(c.sink.format());
+    REQUIRE(c.scene.has_value());
+    CHECK(c.scene->settings.filter == FilterKind::Mitchell);
+    CHECK(c.scene->settings.noise == 0.01);
+    requireOneError("render { filter tent }\n", 1, 17, "unknown filter 'tent' in render");
+    requireOneError("render { noise -1 }\n", 1, 16, "render noise must be 0 or more, got -1");
+}
