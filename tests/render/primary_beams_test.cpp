@@ -5,6 +5,7 @@
 
 #include "csg/scene_geometry.h"
 #include "lang/compile.h"
+#include "util/compiled_scene.h"
 #include "render/camera.h"
 #include "render/render.h"
 
@@ -19,13 +20,7 @@ using namespace kerf;
 
 namespace {
 
-Scene compiled(const std::string& text) {
-    DiagnosticSink sink;
-    std::optional<Scene> scene = compileString(text, "primary_beams_test.kerf", sink);
-    INFO(sink.format());
-    REQUIRE(scene.has_value());
-    return std::move(*scene);
-}
+Scene compiled(const std::string& text) { return test::compiledScene(text, "primary_beams_test.kerf"); }
 
 /// Issue 8's gyroid ball on a floor, and Barth's sextic clipped by a sphere.
 const char* kGyroidBall = R"(

@@ -5,6 +5,7 @@
 
 #include "csg/scene_geometry.h"
 #include "lang/compile.h"
+#include "util/compiled_scene.h"
 #include "render/camera.h"
 #include "render/render.h"
 
@@ -22,21 +23,9 @@ using namespace kerf;
 
 namespace {
 
-Scene compiled(const std::string& text) {
-    DiagnosticSink sink;
-    std::optional<Scene> scene = compileString(text, "octree_test.kerf", sink);
-    INFO(sink.format());
-    REQUIRE(scene.has_value());
-    return std::move(*scene);
-}
+Scene compiled(const std::string& text) { return test::compiledScene(text, "octree_test.kerf"); }
 
-Scene compiledFile(const std::string& path) {
-    DiagnosticSink sink;
-    std::optional<Scene> scene = compileFile(path, sink);
-    INFO(sink.format());
-    REQUIRE(scene.has_value());
-    return std::move(*scene);
-}
+Scene compiledFile(const std::string& path) { return test::compiledSceneFile(path); }
 
 /// A gyroid of period 1 clipped by a sphere, as issue 8's benchmark; and a denser gyroid
 /// clipped only by its bound box, whose faces are surfaces next to full cells.
