@@ -45,6 +45,7 @@ const char* nodeKindName(NodeKind kind) {
         case NodeKind::Implicit: return "implicit";
         case NodeKind::Transform: return "transform";
         case NodeKind::Material: return "material";
+        case NodeKind::Motion: return "motion";
         case NodeKind::Union: return "union";
         case NodeKind::Intersection: return "intersection";
         case NodeKind::Difference: return "difference";

@@ -21,7 +21,7 @@ using NodePtr = std::shared_ptr<const Node>;
 // clang-format off: grouped by arity
 enum class NodeKind : uint8_t {
     Sphere, Box, Cylinder, Cone, Torus, HalfSpace, Implicit,  // leaves
-    Transform, Material,                                      // one child
+    Transform, Material, Motion,                              // one child
     Union, Intersection, Difference, Xor,                     // one or more children
 };
 // clang-format on
@@ -45,12 +45,16 @@ struct ImplicitParams { std::shared_ptr<const Tape> tape; Bounds3 bound; };
 struct TransformParams { Affine worldFromLocal; Affine localFromWorld; };
 struct MaterialParams { int32_t material; };
 struct BooleanParams { BoolOp op; };
+/// Over scene time s in [0, 1] the child turns by spin·s degrees (as rotate) and then moves by
+/// velocity·s (csg/motion.h).
+struct MotionParams { Vec3 velocity; Vec3 spin; };
 
 /// A node's defining data: the alternative matches its kind (all four Boolean kinds give
 /// BooleanParams). Passing it back to the factory of its kind rebuilds an equal node.
 using NodeParams =
     std::variant<SphereParams, BoxParams, CylinderParams, ConeParams, TorusParams,
-                 HalfSpaceParams, ImplicitParams, TransformParams, MaterialParams, BooleanParams>;
+                 HalfSpaceParams, ImplicitParams, TransformParams, MaterialParams, BooleanParams,
+                 MotionParams>;
 
 /// A node's children: a view of the NodePtrs it holds, valid while the node lives.
 class NodeSpan {

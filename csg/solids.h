@@ -36,6 +36,9 @@ NodePtr makeImplicitStandIn(std::shared_ptr<const Tape> f, const Bounds3& bound,
 NodePtr makeTransform(NodePtr child, const Affine& worldFromLocal);
 /// Gives boundaries of the child that have no material yet this material.
 NodePtr makeMaterial(NodePtr child, int32_t material);
+/// The child in motion over scene time s in [0, 1] (csg/motion.h): turned by spin·s degrees
+/// about the origin, then moved by velocity·s.
+NodePtr makeMotion(NodePtr child, const Vec3& velocity, const Vec3& spin);
 /// Union / intersection / xor of all children; difference is the first minus all the rest.
 /// Wide nodes get a BVH over their children's bounds.
 NodePtr makeBoolean(BoolOp op, std::vector<NodePtr> children);

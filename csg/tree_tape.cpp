@@ -23,7 +23,8 @@ ExprId treeExpr(const Node& node, ExprGraph& g, ExprId x, ExprId y, ExprId z) {
         return outside;
     }
     const NodeSpan kids = node.children();
-    if (kind == NodeKind::Material) return treeExpr(*kids[0], g, x, y, z);
+    // A moving child as at scene time 0, where a motion leaves it unmoved.
+    if (kind == NodeKind::Material || kind == NodeKind::Motion) return treeExpr(*kids[0], g, x, y, z);
     if (kind == NodeKind::Transform) {
         // As TransformNode::value: the point mapped by the inverse, row by row.
         const Affine m = std::get<TransformParams>(node.params()).localFromWorld;

@@ -111,7 +111,8 @@ struct Property {
 /// A modifier after a solid: `translate v`, `rotate v`, `scale s|v`, `matrix [12 numbers]`,
 /// `material NAME`.
 struct Modifier {
-    enum class Kind : uint8_t { Translate, Rotate, Scale, Matrix, Material };
+    /// Move and Spin: motion over scene time (csg/motion.h), `move <v>`, `spin <degrees>`.
+    enum class Kind : uint8_t { Translate, Rotate, Scale, Matrix, Material, Move, Spin };
     Kind kind = Kind::Translate;
     SourcePos loc;  ///< of the keyword
     ExprList args;  ///< one, or twelve for matrix

@@ -119,9 +119,21 @@ void Lowering::lowerCamera(const Statement& s, CameraDesc& camera) {
                            {"up", PropertyType::Vector},
                            {"fov", PropertyType::Number},
                            {"aperture", PropertyType::Number},
-                           {"focus_distance", PropertyType::Number}},
+                           {"focus_distance", PropertyType::Number},
+                           {"shutter_open", PropertyType::Number},
+                           {"shutter_close", PropertyType::Number}},
                           "camera", s.loc, mSink);
     bool ok = b.ok();
+    ok &= readNumber(b, "shutter_open", camera.shutterOpen);
+    ok &= readNumber(b, "shutter_close", camera.shutterClose);
+    if (b.find("shutter_open") && !b.find("shutter_close")) camera.shutterClose = camera.shutterOpen;
+    if (ok && !(camera.shutterOpen >= 0 && camera.shutterOpen <= camera.shutterClose && camera.shutterClose <= 1)) {
+        const Property* at = b.find("shutter_close") ? b.find("shutter_close") : b.find("shutter_open");
+        error(at->valueLoc(), "camera shutter must open and close within the scene time 0 to 1, got " +
+                                  formatNumber(camera.shutterOpen) + " to " + formatNumber(camera.shutterClose),
+              "move and spin give each solid's motion over the scene time 0 to 1");
+        ok = false;
+    }
     ok &= readNumber(b, "aperture", camera.aperture);
     ok &= readNumber(b, "focus_distance", camera.focusDistance);
     if (ok && !(camera.aperture >= 0 && std::isfinite(camera.aperture))) {

@@ -395,6 +395,8 @@ const char* modifierWord(const Modifier& m) {
         case Modifier::Kind::Rotate: return "rotate";
         case Modifier::Kind::Scale: return "scale";
         case Modifier::Kind::Matrix: return "matrix";
+        case Modifier::Kind::Move: return "move";
+        case Modifier::Kind::Spin: return "spin";
         default: return "modifier";
     }
 }
@@ -406,7 +408,22 @@ NodePtr Lowering::applyModifiers(NodePtr node, const Solid& s) {
     Affine pending;
     const Modifier* hasPending = nullptr;  // the last transform modifier folded into pending
     for (const Modifier& m : s.modifiers) {
-        if (m.kind == Modifier::Kind::Material) {
+        if (m.kind == Modifier::Kind::Move || m.kind == Modifier::Kind::Spin) {
+            // Motion wraps what came before it: pending transforms first.
+            const auto v = motionVector(m);
+            if (!v || !ok) {
+                ok = false;
+                continue;
+            }
+            if (hasPending) node = transformed(node, pending, *hasPending);
+            if (!node) return nullptr;
+            pending = Affine{};
+            hasPending = nullptr;
+            node = limitDepth(m.kind == Modifier::Kind::Move ? makeMotion(node, *v, Vec3(0.0))
+                                                             : makeMotion(node, Vec3(0.0), *v),
+                              m.loc);
+            ok = node != nullptr;
+        } else if (m.kind == Modifier::Kind::Material) {
             const auto index = materialIndex(m.material, m.materialLoc);
             if (!index || !ok) {
                 ok = false;
@@ -528,6 +545,23 @@ std::optional<int> Lowering::materialIndex(const std::string& name, SourcePos us
     for (const auto& [n, entry] : mMaterials) candidates.push_back(n);
     error(use, "undefined material '" + name + "'", didYouMean(name, candidates));
     return std::nullopt;
+}
+
+std::optional<Vec3> Lowering::motionVector(const Modifier& m) {
+    const char* word = m.kind == Modifier::Kind::Move ? "move" : "spin";
+    const auto v = evaluate(m.args[0], nullptr);
+    if (!v) return std::nullopt;
+    if (v->type != Value::Type::Vector) {
+        error(m.args[0].start, std::string(word) + " expects a vector, got " + typeName(v->type),
+              m.kind == Modifier::Kind::Move ? "move <x, y, z>: how far the solid goes over the scene time 0 to 1"
+                                             : "spin <x, y, z>: the degrees it turns over the scene time 0 to 1");
+        return std::nullopt;
+    }
+    if (!(std::isfinite(v->vector.x) && std::isfinite(v->vector.y) && std::isfinite(v->vector.z))) {
+        error(m.args[0].start, std::string(word) + " is not finite, got " + formatVector(v->vector));
+        return std::nullopt;
+    }
+    return v->vector;
 }
 
 }  // namespace kerf

@@ -392,9 +392,13 @@ ArenaList<Modifier> Parser::parseModifiers() {
         const std::string& word = peek().text;
         Modifier m;
         m.loc = peek().pos;
-        if (word == "translate" || word == "rotate" || word == "scale") {
+        if (word == "translate" || word == "rotate" || word == "scale" || word == "move" ||
+            word == "spin") {
             m.kind = word == "translate" ? Modifier::Kind::Translate
-                     : word == "rotate" ? Modifier::Kind::Rotate : Modifier::Kind::Scale;
+                     : word == "rotate"  ? Modifier::Kind::Rotate
+                     : word == "scale"   ? Modifier::Kind::Scale
+                     : word == "move"    ? Modifier::Kind::Move
+                                         : Modifier::Kind::Spin;
             next();
             const Expr arg = parseExpr();
             m.args = list(&arg, 1);

@@ -22,7 +22,8 @@ inline const std::array<const char*, 14> kStatementWords = {
 /// Words that open a statement but may also stand for a child inside a Boolean body.
 inline const std::array<const char*, 2> kBlockWords = {"for", "if"};
 inline const std::array<const char*, 4> kBooleanWords = {"union", "intersection", "difference", "xor"};
-inline const std::array<const char*, 5> kModifierWords = {"translate", "rotate", "scale", "matrix", "material"};
+inline const std::array<const char*, 7> kModifierWords = {"translate", "rotate", "scale", "matrix",
+                                                          "material",  "move",   "spin"};
 
 template <size_t N>
 inline bool contains(const std::array<const char*, N>& words, const std::string& w) {

@@ -18,6 +18,8 @@ const char* exampleValue(PropertyType type) {
         case PropertyType::NumberOrVector: return "1' or '<x, y, z>";
         case PropertyType::Solid: return "box { min … max … }";
         case PropertyType::Function: return "x^2 + y^2 + z^2 - 1";
+        case PropertyType::Bool: return "true";
+        case PropertyType::Word: return "a name";
     }
     return "…";
 }

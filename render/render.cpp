@@ -2,6 +2,7 @@
 /// @brief The render loop: tiles in parallel, per-pixel samples, film and auxiliary outputs.
 #include "render/render.h"
 
+#include "csg/motion.h"
 #include "csg/scene_geometry.h"
 #include "render/camera.h"
 #include "render/film.h"
@@ -50,6 +51,7 @@ struct FrameJob {
     ReconstructionFilter filter;  ///< box: each pixel averages its own samples
     double noise;                 ///< adaptive sampling's target standard error; 0: off
     std::vector<TileFilm>* films;  ///< one per tile, for filters wider than the box
+    double shutterOpen, shutterClose;  ///< scene times; equal: one instant, no motion blur
 };
 
 /// Rec. 709 luminance: the quantity whose noise adaptive sampling watches.
@@ -85,6 +87,13 @@ void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContex
             const SubPixel lensAt = lens ? job.sampler.get2D(pixel, s, sample_dim::kLens) : SubPixel{};
             ray = job.camera.rayThrough(i + at.x, j + at.y, lensAt.x, lensAt.y);
         }
+        // Each sample sees the scene at its own time in the shutter interval.
+        const double time =
+            job.shutterClose > job.shutterOpen
+                ? job.shutterOpen + job.sampler.get2D(pixel, s, sample_dim::kTime).x *
+                                        (job.shutterClose - job.shutterOpen)
+                : job.shutterOpen;
+        const SceneTimeScope clock(time);
         const Vec3 c = job.integrator.traceCamera(
             ray, ctx, centreServes && wantAov ? &centreHit : nullptr, tStart);
         if (film) film->add(i + at.x, j + at.y, c, job.filter);
@@ -110,6 +119,7 @@ void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContex
 
     if (!wantAov) return;
     if (!centreServes) {
+        const SceneTimeScope clock(job.shutterOpen);  // the AOVs show the shutter's opening
         ++ctx.rays.camera;
         centreHit = job.geometry.nearestHit(centreRay, tStart, kInf, ctx.trace);
     }
@@ -252,7 +262,9 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
                        options.wantNormal,
                        ReconstructionFilter::of(filterKind),
                        options.noise >= 0.0 ? options.noise : scene.settings.noise,
-                       films.empty() ? nullptr : &films};
+                       films.empty() ? nullptr : &films,
+                       scene.camera.shutterOpen,
+                       scene.camera.shutterClose};
     result.stats.filter = filterKind;
     result.stats.secondsSetup = secondsSince(setupStart);
 

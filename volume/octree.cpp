@@ -154,7 +154,7 @@ public:
         double t0 = tmin, t1 = tmax;
         if (!clipRayExact(mCube, ray, t0, t1)) return;
         ScratchSpans runSpans(ctx.scratch);
-        SpanSearch s{{&ray, &ctx, t0, t1, slackFor(ray)}, &*runSpans, &out};
+        SpanSearch s{{&ray, &ctx, t0, t1, slackFor(ray)}, &*runSpans, &out, false, false, {}};
         uint64_t steps = 0;
         const bool complete = mGrid->walk(ray, t0, t1, &SpanSearch::visit, &s, steps);
         ctx.stats.cellsVisited += steps;

@@ -230,7 +230,7 @@ TEST_CASE("hints: unknown and value-less properties in every block") {
              "material takes: color, ambient, diffuse, specular, shininess, reflect, transmit, "
              "ior, absorb, emit, glossy, translucent, pattern, bump, bump_depth"},
             {"camera { location <0, 0, -5> }", 10, "unknown property 'location' in camera",
-             "camera takes: eye, look_at, up, fov, aperture, focus_distance"},
+             "camera takes: eye, look_at, up, fov, aperture, focus_distance, shutter_open, shutter_close"},
             {"light point { at <0,1,0> shadowless }", 26,
              "unknown property 'shadowless' in point light", "point light takes: color, at, power, falloff, fade_distance, shadows"},
             {"light directional { direction <0,-1,0> parallel }", 40,
@@ -248,7 +248,7 @@ TEST_CASE("hints: unknown and value-less properties in every block") {
         CHECK(oneError("camera { location <0, 0, -5> }", 1, 10,
                        "unknown property 'location' in camera")
                   .hint == "the camera's position is eye; camera takes: eye, look_at, up, fov, "
-                           "aperture, focus_distance");
+                           "aperture, focus_distance, shutter_open, shutter_close");
     }
     SECTION("a known property without a value, required or not: one error") {
         CHECK(

@@ -154,3 +154,26 @@ TEST_CASE("render: the reconstruction filter and adaptive sampling's noise targe
     requireOneError("render { filter tent }\n", 1, 17, "unknown filter 'tent' in render");
     requireOneError("render { noise -1 }\n", 1, 16, "render noise must be 0 or more, got -1");
 }
+
+TEST_CASE("motion: move and spin modifiers, the camera's shutter") {
+    const Compiled c = compileText(R"(
+object sphere { radius 1 } move <2, 0, 0> translate <0, 1, 0>;
+object box { min <0, 0, 0> max <1, 1, 1> } spin <0, 90, 0>;
+camera { shutter_open 0.25 shutter_close 0.75 }
+)");
+    INFO(c.sink.format());
+    REQUIRE(c.scene.has_value());
+    const Node* first = c.scene->objects[0].get();
+    REQUIRE(first->kind() == NodeKind::Transform);  // translate after the move
+    const Node* motion = first->children()[0].get();
+    REQUIRE(motion->kind() == NodeKind::Motion);
+    CHECK(std::get<MotionParams>(motion->params()).velocity == Vec3(2.0, 0.0, 0.0));
+    const Node* spun = c.scene->objects[1].get();
+    REQUIRE(spun->kind() == NodeKind::Motion);
+    CHECK(std::get<MotionParams>(spun->params()).spin == Vec3(0.0, 90.0, 0.0));
+    CHECK(c.scene->camera.shutterOpen == 0.25);
+    CHECK(c.scene->camera.shutterClose == 0.75);
+    requireOneError("object sphere { } move 3;\n", 1, 24, "move expects a vector, got a number");
+    requireOneError("camera { shutter_open 0.5 shutter_close 2 }\n", 1, 41,
+                    "camera shutter must open and close within the scene time 0 to 1, got 0.5 to 2");
+}

@@ -79,6 +79,7 @@ void dump(const NodePtr& n, std::string& out, std::map<const Node*, int>& ids) {
                 for (int c = 0; c < 3; ++c) bits(out, Vec3(p.worldFromLocal.linear[c]));
                 bits(out, p.worldFromLocal.offset);
             } else if constexpr (std::is_same_v<P, MaterialParams>) { out += std::to_string(p.material); }
+            else if constexpr (std::is_same_v<P, MotionParams>) { bits(out, p.velocity); bits(out, p.spin); }
             else { out += std::to_string(static_cast<int>(p.op)); }
         },
         n->params());

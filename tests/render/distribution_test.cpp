@@ -281,3 +281,47 @@ TEST_CASE("a gradient sky: horizon, zenith and nadir colours along up") {
         CHECK(r.color.at(1, 1, 1) == Approx(std::max(0.0, -h)).margin(1e-6));
     }
 }
+
+TEST_CASE("motion blur: a moving sphere covers a pixel for the fraction of the shutter it is there") {
+    // An emissive sphere (radius 1) moving by v over the shutter [0, 1], on black: the pixel
+    // centre ray meets it for the times s where the sphere's centre c0 + v·s is within 1 of the
+    // ray: |w|² − (w·d)² ≤ 1 with w = c0 + v·s − eye, a quadratic in s. The pixel's value is
+    // that fraction of the shutter (4096 samples; the pixel spans a small angle).
+    Scene scene;
+    Material lamp = blackMaterial();
+    lamp.emit = Vec3(1.0);
+    const int32_t m = addMaterial(scene, lamp);
+    const Vec3 c0(-1.5, 0.0, 0.0), v(3.0, 0.0, 0.0);
+    addObject(scene, makeMotion(makeSphere(c0, 1.0), v, Vec3(0.0)), m);
+    scene.camera.eye = Vec3(0.0, 0.0, -20.0);
+    scene.camera.lookAt = Vec3(0.0);
+    scene.camera.fovDegrees = 12.0;
+    scene.camera.shutterOpen = 0.0;
+    scene.camera.shutterClose = 1.0;
+    RenderOptions options = smallImage(12, 4, 2);
+    options.spp = 4096;
+    const RenderResult r = render(scene, options);
+    const Camera camera(scene.camera, 12, 4);
+    // The fraction of the shutter the ray meets the sphere.
+    auto fractionOn = [&](const Ray& ray) {
+        // |w|² − (w·d)² − 1 = A s² + B s + C with w = (c0 − eye) + v s.
+        const Vec3 w0 = c0 - ray.origin;
+        const double A = glm::dot(v, v) - std::pow(glm::dot(v, ray.dir), 2);
+        const double B = 2.0 * (glm::dot(w0, v) - glm::dot(w0, ray.dir) * glm::dot(v, ray.dir));
+        const double C = glm::dot(w0, w0) - std::pow(glm::dot(w0, ray.dir), 2) - 1.0;
+        const double disc = B * B - 4 * A * C;
+        if (!(disc > 0)) return 0.0;
+        const double s0 = (-B - std::sqrt(disc)) / (2 * A), s1 = (-B + std::sqrt(disc)) / (2 * A);
+        return std::max(0.0, std::min(1.0, s1) - std::max(0.0, s0));
+    };
+    for (int i = 0; i < 12; ++i) {
+        // The pixel's expected value: the fraction averaged over its area (a 32 × 32 grid).
+        double expected = 0.0;
+        for (int a = 0; a < 32; ++a)
+            for (int b = 0; b < 32; ++b)
+                expected += fractionOn(camera.rayThrough(i + (a + 0.5) / 32, 2 + (b + 0.5) / 32));
+        expected /= 1024.0;
+        INFO("column " << i << ": expected " << expected);
+        CHECK(r.color.at(i, 2, 0) == Approx(expected).margin(0.02));
+    }
+}
