@@ -6,25 +6,11 @@
 #include "csg/comparison_methods.h"
 #include "csg/root_isolation.h"
 #include "csg/solids.h"
+#include "csg/tape_along_ray.h"
 #include "csg/tape_ray_program.h"
 
 namespace kerf {
 namespace {
-
-/// f along the ray, in the form root isolation wants. (The centred form f(m) + f'([a, b])·([a, b]
-/// − m), intersected with the natural enclosure wherever that is ambiguous, was measured here
-/// on the gyroid ∩ sphere at 160×120: 11.6 % fewer interval evaluations, but 41 % more
-/// instructions, since f(m) needs a second interval evaluation per call.)
-struct TapeAlongRay {
-    const Tape& tape;
-    const Ray& ray;
-
-    void range(double a, double b, Interval& f, Interval& dfdt) const {
-        tape.evalIntervalAlongRay(ray, Interval(a, b), f, dfdt);
-    }
-    double value(double t) const { return tape.eval(ray.at(t)); }
-    double valueAndSlope(double t, double& dfdt) const { return tape.evalAlongRay(ray, t, dfdt); }
-};
 
 /// f along the ray for the comparison-only interval method on a stand-in (csg/comparison_methods.h):
 /// enclosures, point values and slopes from the tape specialised to the ray

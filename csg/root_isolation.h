@@ -11,12 +11,18 @@
 /// "Inside" means value(t) ≤ 0. Crossings are reported only where the inside/outside state of
 /// two evaluated points differs, so the reported crossings always alternate consistently with
 /// the state at tmin, even where an enclosure is spoiled by rounding.
+/// A problem type may also have `bool certifiedSteps`, `double minCertifiedShrink` and
+///   void enclosuresAt(const double* t, int n, Interval* f) — rigorous f at n ≤ 4 points;
+/// then each undecided piece first tries a certified step (csg/lipschitz_step.h).
 #pragma once
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 #include "csg/interval.h"
+#include "csg/lipschitz_step.h"
 #include "csg/node.h"
 #include "csg/span.h"
 #include "csg/trace_context.h"
@@ -29,6 +35,14 @@ constexpr int kRootMaxDepth = 64;
 constexpr int kRootMaxPolish = 60;
 
 inline bool isInside(double f) { return f <= 0.0; }  // NaN counts as outside
+
+/// Whether problem type P has a `certifiedSteps` member (csg/lipschitz_step.h); the search
+/// tries a certified shrink before each bisection when it is true.
+template <typename P, typename = void>
+struct HasCertifiedSteps : std::false_type {};
+template <typename P>
+struct HasCertifiedSteps<P, std::void_t<decltype(std::declval<const P&>().certifiedSteps)>>
+    : std::true_type {};
 
 /// True when [a, b] is narrower than the tolerance near it. The tolerance is relative to the
 /// ray's own parameter t, proportional to (a + tOffset) when the problem uses a shifted one.
@@ -102,15 +116,12 @@ double polishRoot(P& p, double a, double b, double fa, double fb, double tOffset
 template <typename P, typename Sink, typename StopBefore>
 bool isolateRootsFrom(P& p, double tmin, double tmax, double f0, double tOffset,
                       TraceContext& ctx, Sink&& sink, StopBefore&& stopBefore) {
-    struct Piece {
-        double a, b, fa, fb;
-        int depth;
-    };
+    using Piece = RootPiece;
     Piece stack[kRootMaxDepth + 2];
     int top = 0;
     stack[top++] = {tmin, tmax, f0, tmax == tmin ? f0 : p.value(tmax), 0};
     while (top > 0) {
-        const Piece q = stack[--top];
+        Piece q = stack[--top];
         if (stopBefore(q.a)) break;
         const bool inA = isInside(q.fa), inB = isInside(q.fb);
         Interval f, slope;
@@ -132,6 +143,20 @@ bool isolateRootsFrom(P& p, double tmin, double tmax, double f0, double tOffset,
             if (inA != inB) sink(polishRoot(p, q.a, q.b, q.fa, q.fb, tOffset, ctx), inB);
             continue;
         }
+        if constexpr (HasCertifiedSteps<P>::value) {
+            if (p.certifiedSteps) {
+                Piece r = q;
+                const ShrinkResult shrink =
+                    certifiedShrink(p, f, slope, r, p.minCertifiedShrink, ctx);
+                if (shrink == ShrinkResult::NoCrossing) continue;
+                if (shrink == ShrinkResult::Shrunk) {
+                    ++r.depth;  // bounds the shrinks too (each takes a fixed fraction or more)
+                    stack[top++] = r;
+                    continue;
+                }
+                q.ga = r.ga, q.gb = r.gb;  // margins found on the way stay with the halves
+            }
+        }
         const double m = 0.5 * (q.a + q.b);
         if (!(m > q.a && m < q.b)) {  // adjacent doubles
             if (inA != inB) sink(q.b, inB);
@@ -139,8 +164,9 @@ bool isolateRootsFrom(P& p, double tmin, double tmax, double f0, double tOffset,
         }
         ++ctx.stats.rootSteps;
         const double fm = p.value(m);
-        stack[top++] = {m, q.b, fm, q.fb, q.depth + 1};  // right first, so left pops first
-        stack[top++] = {q.a, m, q.fa, fm, q.depth + 1};
+        // Right first, so left pops first; the ends keep their certified margins.
+        stack[top++] = {m, q.b, fm, q.fb, q.depth + 1, 0.0, q.gb};
+        stack[top++] = {q.a, m, q.fa, fm, q.depth + 1, q.ga, 0.0};
     }
     return isInside(f0);
 }
