@@ -78,7 +78,10 @@ void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContex
     ctx.pixel = pixel;
     // Each of n samples stands for 1/n of the pixel: a square about 1/√n of its side.
     ctx.sampleAngle = job.camera.pixelAngle() / std::sqrt(double(count));
-    for (int s = 0; s < count; ++s) {
+    for (int k = 0; k < count; ++k) {
+        // Adaptive sampling may stop after any k samples: it takes them in an order whose every
+        // prefix covers the pixel (render/sampler.h); otherwise in index order.
+        const int s = job.noise > 0.0 ? int(job.sampler.spreadOrder()[size_t(k)]) : k;
         ctx.sample = s;
         Ray ray = centreRay;
         SubPixel at;  // the film position within the pixel

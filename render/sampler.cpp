@@ -25,6 +25,47 @@ double smallestDistance2(uint32_t a, uint32_t n) {
     return best;
 }
 
+/// v with its `bits` low bits reversed.
+uint32_t reverseBits(uint32_t v, uint32_t bits) {
+    uint32_t r = 0;
+    for (uint32_t b = 0; b < bits; ++b) r |= ((v >> b) & 1u) << (bits - 1 - b);
+    return r;
+}
+
+/// An order of the N samples whose every prefix is spread over the pixel. A full grid
+/// (jittered or regular, cols × rows = N) is visited cell by cell in the order that splits
+/// both axes alike: the visit number's bits are dealt alternately to x and y (a Morton code),
+/// then reversed on each axis, so the first 4 cells are 2 × 2 apart, the first 16 4 × 4, and
+/// so on. The lattice (sample s at x = s/N) and random or partial sets take the sample
+/// numbers in bit-reversed order. Numbers past the set are skipped.
+std::vector<uint32_t> spreadOrderFor(SamplerKind kind, int count, int columns, int rows) {
+    std::vector<uint32_t> order;
+    order.reserve(size_t(count));
+    const bool grid = (kind == SamplerKind::Jittered || kind == SamplerKind::Regular) &&
+                      columns * rows == count && count > 1;
+    if (grid) {
+        uint32_t bits = 0;  // per axis
+        while ((1u << bits) < uint32_t(std::max(columns, rows))) ++bits;
+        for (uint64_t i = 0; i < (uint64_t(1) << (2 * bits)); ++i) {
+            uint32_t x = 0, y = 0;
+            for (uint32_t b = 0; b < bits; ++b) {
+                x |= uint32_t((i >> (2 * b)) & 1u) << b;
+                y |= uint32_t((i >> (2 * b + 1)) & 1u) << b;
+            }
+            const uint32_t cx = reverseBits(x, bits), cy = reverseBits(y, bits);
+            if (cx < uint32_t(columns) && cy < uint32_t(rows)) order.push_back(cy * uint32_t(columns) + cx);
+        }
+        return order;
+    }
+    uint32_t bits = 0;
+    while ((uint64_t(1) << bits) < uint64_t(count)) ++bits;
+    for (uint64_t i = 0; i < (uint64_t(1) << bits); ++i) {
+        const uint32_t r = reverseBits(uint32_t(i), bits);
+        if (r < uint32_t(count)) order.push_back(r);
+    }
+    return order;
+}
+
 }  // namespace
 
 uint32_t PixelSampler::latticeGenerator(uint32_t n) {
@@ -56,6 +97,7 @@ PixelSampler::PixelSampler(int spp, SamplerKind kind)
     mColumns = gridSide(mCount);
     mRows = (mCount + mColumns - 1) / mColumns;
     if (mKind == SamplerKind::Lattice) mLatticeA = latticeGenerator(uint32_t(mCount));
+    mSpreadOrder = spreadOrderFor(mKind, mCount, mColumns, mRows);
 }
 
 SubPixel PixelSampler::get2D(uint64_t pixel, int s, uint32_t dim) const {

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <vector>
 
 namespace kerf {
 
@@ -77,6 +78,12 @@ public:
         return static_cast<int>(n);
     }
 
+    /// The order adaptive sampling takes the samples in: a prefix of any length is spread over
+    /// the pixel (a full grid's cells by axis-wise bit reversal of a Morton code, other sets
+    /// by bit-reversed sample numbers), so a pixel that stops early has samples all over it,
+    /// not one strip of its grid or lattice.
+    const std::vector<uint32_t>& spreadOrder() const { return mSpreadOrder; }
+
     /// The lattice's generator for N points: (1, a)/N with a chosen for the largest smallest
     /// distance between points on the torus (exhaustively up to 4096 points, among a sample
     /// of candidates above).
@@ -89,6 +96,7 @@ private:
     int mCount;
     int mColumns, mRows;
     uint32_t mLatticeA = 1;
+    std::vector<uint32_t> mSpreadOrder;
 };
 
 }  // namespace kerf

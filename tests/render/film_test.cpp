@@ -2,11 +2,13 @@
 // straight edge filtered as the closed-form convolution says, images independent of the
 // thread count, and adaptive sampling that stops where there is no noise.
 #include "render/film.h"
+#include "render/sampler.h"
 #include "render/render.h"
 #include "render_test_util.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace kerf;
@@ -108,4 +110,36 @@ TEST_CASE("adaptive sampling: flat pixels stop at the minimum, edges sample more
     flat.background = Vec3(0.3);
     options.noise = 0.01;
     CHECK(render(flat, options).stats.samplesTaken == uint64_t(15 * 4 * kMinAdaptiveSamples));
+}
+
+TEST_CASE("adaptive sampling takes its samples spread over the pixel") {
+    // A horizontal edge across the middle of row 2 of 5: those pixels are half covered. With a
+    // target no pixel misses, each stops after 16 of 256 samples; taken in index order they
+    // would be the grid's top row (all sky), so the value would be 1 instead of about ½.
+    Scene scene;
+    const int32_t m = addMaterial(scene, blackMaterial());
+    addObject(scene, makeHalfSpace(Vec3(0.0, 1.0, 0.0), 0.0), m);
+    scene.background = Vec3(1.0);
+    scene.camera.eye = Vec3(0.0, 0.3, 0.0);
+    scene.camera.lookAt = Vec3(0.0, 0.3, 1.0);
+    for (SamplerKind kind : {SamplerKind::Jittered, SamplerKind::Lattice, SamplerKind::Regular}) {
+        RenderOptions options = smallImage(6, 5, 2);
+        options.spp = 256;
+        options.sampler = kind;
+        options.noise = 10.0;
+        const RenderResult r = render(scene, options);
+        CHECK(r.stats.samplesTaken == uint64_t(6 * 5 * kMinAdaptiveSamples));
+        for (int i = 0; i < 6; ++i) {
+            INFO(samplerName(kind) << " column " << i);
+            CHECK(r.color.at(i, 2, 0) == Approx(0.5).margin(0.15));
+        }
+    }
+    // The order is a permutation of the samples, for any count.
+    for (int n : {1, 5, 16, 100, 256}) {
+        const PixelSampler sampler(n);
+        std::vector<uint32_t> order = sampler.spreadOrder();
+        std::sort(order.begin(), order.end());
+        REQUIRE(order.size() == size_t(n));
+        for (int i = 0; i < n; ++i) CHECK(order[size_t(i)] == uint32_t(i));
+    }
 }
