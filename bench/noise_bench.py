@@ -340,8 +340,8 @@ def pov_tables(result):
                 continue  # the table has the other curves; the checks judge these two
             if ratio is not None:
                 verdict = "open (bounds only)" if ok is None else met(ok)
-                lines.append("- %s, RMSE %s, kerf %s ≤ 0.5× POV-Ray's trace time: %s%.2f× — %s"
-                             % (result["scene"], target, sampler, bound, ratio, verdict))
+                lines.append("- %s, RMSE %s, kerf %s ≤ 0.5× POV-Ray's trace time: %s%.2f× — "
+                             "%s" % (result["scene"], target, sampler, bound, ratio, verdict))
             else:
                 lines.append("- %s, RMSE %s, kerf %s: not compared (a front does not reach "
                              "this RMSE)" % (result["scene"], target, sampler))

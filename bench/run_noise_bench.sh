@@ -17,7 +17,10 @@ cd "$root"
 
 source bench/bench_setup.sh
 bench_setup run_noise_bench.sh
-command -v oiiotool >/dev/null || { echo "run_noise_bench.sh: 'oiiotool' is missing (apt-get install openimageio-tools)" >&2; exit 1; }
+command -v oiiotool >/dev/null || {
+    echo "run_noise_bench.sh: 'oiiotool' is missing (apt-get install openimageio-tools)" >&2
+    exit 1
+}
 
 python3 bench/gen_noise_scenes.py
 exec python3 bench/noise_bench.py --kerf "$KERF" "$@"
