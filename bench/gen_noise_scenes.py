@@ -31,7 +31,7 @@ import os
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-from gen_scenes import Box, HalfSpace, Material, Sphere, num, vec  # noqa: E402
+from gen_scenes import Box, HalfSpace, Material, Sphere, num, pov_camera_lines, vec  # noqa: E402
 
 SIZE = (200, 150)
 FLOOR = HalfSpace((0, 1, 0), 0)
@@ -91,14 +91,7 @@ class NoiseScene:
             "#version 3.7;",
             "#ifndef (LightN) #declare LightN = 9; #end",
             "#ifndef (BlurSamples) #declare BlurSamples = 37; #end",
-            "global_settings { assumed_gamma 1.0 max_trace_level %d ambient_light rgb 1 }"
-            % self.max_depth,
-            "camera {",
-            "    perspective",
-            "    location %s" % vec(eye),
-            "    up y",
-            "    right -x*image_width/image_height",
-            "    angle 2*degrees(atan(tan(radians(%s)/2)*image_width/image_height))" % num(fov),
+            *pov_camera_lines(self.max_depth, eye, fov),
             "    look_at %s" % vec(look_at),
         ]
         if self.aperture:

@@ -34,6 +34,22 @@ def num(x):
     return repr(float(x)) if x != int(x) else str(int(x))
 
 
+def pov_camera_lines(max_depth, eye, fov, up=None):
+    """POV-Ray's global settings and the opening of a camera matching kerf's: vertical fov,
+    right-handed (right -x). The caller adds look_at (and any lens) and the closing brace."""
+    lines = ["global_settings { assumed_gamma 1.0 max_trace_level %d ambient_light rgb 1 }"
+             % max_depth,
+             "camera {",
+             "    perspective",
+             "    location %s" % vec(eye),
+             "    up y",
+             "    right -x*image_width/image_height",
+             "    angle 2*degrees(atan(tan(radians(%s)/2)*image_width/image_height))" % num(fov)]
+    if up is not None:
+        lines.append("    sky %s" % vec(up))
+    return lines
+
+
 def indent(texts):
     return "\n".join("    " + line for text in texts for line in text.split("\n"))
 
@@ -244,15 +260,7 @@ class Scene:
             "// Same geometry as the .kerf beside it; the camera is made right-handed (right -x).",
             "#version 3.7;",
             *self.pov_prelude,
-            "global_settings { assumed_gamma 1.0 max_trace_level %d ambient_light rgb 1 }"
-            % self.max_depth,
-            "camera {",
-            "    perspective",
-            "    location %s" % vec(eye),
-            "    up y",
-            "    right -x*image_width/image_height",
-            "    angle 2*degrees(atan(tan(radians(%s)/2)*image_width/image_height))" % num(fov),
-            "    sky %s" % vec(up),
+            *pov_camera_lines(self.max_depth, eye, fov, up),
             "    look_at %s" % vec(look_at),
             "}",
             "light_source { %s color rgb %s }" % (vec(at), vec(color)),
