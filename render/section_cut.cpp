@@ -6,14 +6,52 @@
 namespace kerf {
 namespace {
 
-/// One plane: the half-space kept, under its cap material.
+/// One plane: the half-space dot(normal, p) ≤ offset kept, under its cap material.
 struct KeptSide {
     NodePtr halfSpace;  ///< bare, for classifying bounds
     NodePtr capped;     ///< under the cap material, for cutting
+    int axis = -1;      ///< a plane x, y or z = offset·normal[axis] (normal ±1 there), or −1
+    double at = 0.0;    ///< that coordinate
+    double sign = 0.0;  ///< normal[axis]
 };
 
 IntervalVec3 boxOf(const Bounds3& b) {
     return {Interval(b.lo.x, b.hi.x), Interval(b.lo.y, b.hi.y), Interval(b.lo.z, b.hi.z)};
+}
+
+/// Which side of the plane the box is on: Empty (all removed), Filled (all kept) or
+/// Ambiguous. Planes across an axis compare coordinates exactly, so a box with a face in the
+/// plane on the kept side is left alone (its face and the cap would be coincident surfaces);
+/// other planes take an outward-rounded enclosure (NaN from an unbounded box is Ambiguous).
+Classification classify(const KeptSide& side, const Bounds3& box) {
+    if (box.empty()) return Classification::Filled;
+    if (side.axis < 0) return side.halfSpace->valueInterval(boxOf(box)).classify();
+    const double lo = box.lo[side.axis], hi = box.hi[side.axis];
+    if (side.sign > 0) return lo > side.at ? Classification::Empty
+                              : hi <= side.at ? Classification::Filled : Classification::Ambiguous;
+    return hi < side.at ? Classification::Empty
+           : lo >= side.at ? Classification::Filled : Classification::Ambiguous;
+}
+
+KeptSide keptSide(const SectionPlane& plane, int32_t capMaterial) {
+    KeptSide side;
+    Vec3 n = plane.normal;
+    int nonZero = 0;
+    for (int a = 0; a < 3; ++a)
+        if (n[a] != 0.0) { ++nonZero; side.axis = a; }
+    if (nonZero == 1) {
+        // The unit normal of a plane across an axis, exactly: n·p ≤ offset is then exact.
+        side.sign = n[side.axis] > 0 ? 1.0 : -1.0;
+        side.at = plane.point[side.axis];
+        n = Vec3(0.0);
+        n[side.axis] = side.sign;
+    } else {
+        side.axis = -1;
+    }
+    // dot(n, p) ≤ dot(n, point): the side the normal points away from.
+    side.halfSpace = makeHalfSpace(n, glm::dot(n, plane.point));
+    side.capped = makeMaterial(side.halfSpace, capMaterial);
+    return side;
 }
 
 }  // namespace
@@ -26,11 +64,8 @@ Scene cutBySections(const Scene& scene) {
         Material cap;
         cap.name = "section cap";
         cap.color = plane.color;
-        const int32_t index = int32_t(cut.materials.size());
+        sides.push_back(keptSide(plane, int32_t(cut.materials.size())));
         cut.materials.push_back(cap);
-        // dot(n, p) ≤ dot(n, point): the side the normal points away from.
-        NodePtr h = makeHalfSpace(plane.normal, glm::dot(plane.normal, plane.point));
-        sides.push_back({h, makeMaterial(h, index)});
     }
 
     cut.objects.clear();
@@ -42,12 +77,7 @@ Scene cutBySections(const Scene& scene) {
         std::vector<NodePtr> cutters;
         bool removed = false;
         for (const KeptSide& side : sides) {
-            // An outward-rounded enclosure of the plane's value over the object's box: Empty
-            // proves every point removed, Filled every point kept (NaN, from an unbounded
-            // box, is Ambiguous: cut).
-            const Classification c = bounds.empty()
-                                         ? Classification::Filled
-                                         : side.halfSpace->valueInterval(boxOf(bounds)).classify();
+            const Classification c = classify(side, bounds);
             if (c == Classification::Empty) {
                 removed = true;
                 break;

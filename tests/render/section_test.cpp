@@ -230,6 +230,18 @@ TEST_CASE("section: a plane that misses an object leaves its bits") {
     CHECK(cut.objects[0] == kept.objects[0]);
     CHECK(sameBits(render(kept, smallImage(kSide, kSide)).color, plain.color));
 
+    // A face in the plane, the box on the kept side: compared exactly, so not wrapped (its
+    // face and the cap would be coincident surfaces), whichever way the plane is written.
+    Scene touching;
+    touching.objects = {makeBox(Vec3(-1.0, -1.0, 0.0), Vec3(1.0, 1.0, 4.0)),
+                        makeBox(Vec3(-1.0, 0.1, -3.0), Vec3(1.0, 0.3, 0.3))};
+    touching.sections.push_back(plane(Vec3(5.0, 7.0, 0.0), Vec3(0, 0, -3)));
+    const Scene touched = cutBySections(touching);
+    REQUIRE(touched.objects.size() == 2);
+    CHECK(touched.objects[0] == touching.objects[0]);
+    CHECK(touched.objects[1] != touching.objects[1]);  // straddles z = 0: cut
+    CHECK(touched.objects[1]->bounds().lo.z == 0.0);   // and its bounds shrink to the kept side
+
     // Removed side: the object is gone, every pixel is the background.
     Scene removed = sphereFromAbove();
     removed.background = Vec3(0.25, 0.5, 0.75);
