@@ -301,3 +301,36 @@ TEST_CASE("section: the octree and beams give the cut the same depths as plain t
         }
     CHECK(hits > 500);
 }
+
+TEST_CASE("section: reflected rays see the cut, not the removed part") {
+    // A horizontal mirror below the plane z = 0 (wholly kept) reflects the centre ray up
+    // through (0.9, 0, 0.3), inside the ball's removed upper part, having crossed z = 0 at
+    // x ≈ 1.17, outside the ball: uncut, it sees the ball; cut, what a scene without the
+    // ball shows there.
+    const auto scene = [](bool withBall, bool cut) {
+        Scene s;
+        s.background = Vec3(0.25, 0.5, 0.75);
+        Material mirror = blackMaterial();
+        mirror.reflect = 0.5;
+        addObject(s, makeBox(Vec3(2.0, -3.0, -3.0), Vec3(6.0, 3.0, -2.0)), addMaterial(s, mirror));
+        if (withBall) {
+            Material green = blackMaterial();
+            green.color = Vec3(0.0, 1.0, 0.0);
+            green.ambient = 1.0;
+            addObject(s, makeSphere(Vec3(0.0), 1.0), addMaterial(s, green));
+        }
+        if (cut) s.sections.push_back(plane(Vec3(0.0), Vec3(0, 0, 1)));
+        // The mirror point (3, 0, −2) seen along (−2.1, 0, −2.3), reflected to (−2.1, 0, 2.3).
+        s.camera.eye = Vec3(3.0 + 4 * 2.1, 0.0, -2.0 + 4 * 2.3);
+        s.camera.lookAt = Vec3(3.0, 0.0, -2.0);
+        s.camera.up = Vec3(0.0, 1.0, 0.0);
+        return s;
+    };
+    const int mid = kSide / 2;
+    const Vec3 uncut = pixel(render(scene(true, false), smallImage(kSide, kSide)).color, mid, mid);
+    const Vec3 cut = pixel(render(scene(true, true), smallImage(kSide, kSide)).color, mid, mid);
+    const Vec3 none = pixel(render(scene(false, false), smallImage(kSide, kSide)).color, mid, mid);
+    CHECK(uncut.y == Approx(0.5));  // half the mirror's light is the green ball
+    CHECK(cut == none);
+    CHECK(cut == Vec3(0.5 * 0.25, 0.5 * 0.5, 0.5 * 0.75));  // half the background
+}
