@@ -8,9 +8,11 @@ namespace {
 
 /// f > 0 over the axis-aligned box [lo, hi] (one side may be flat), splitting it in two along
 /// its widest side until proved or the budget is spent.
-bool clearOver(const Tape& f, const Vec3& lo, const Vec3& hi, int& budget) {
+bool clearOver(const Tape& f, const Vec3& lo, const Vec3& hi, int& budget, std::vector<Choice>& choices) {
     if (--budget < 0) return false;
-    const Interval v = f.evalInterval({lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z});
+    // The recording evaluator keeps sums of squares non-negative, so a face through a
+    // sphere's centre line does not get a possible NaN from sqrt of a rounded 0.
+    const Interval v = f.evalInterval({lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, choices);
     if (!v.maybeNan && v.lo > 0.0) return true;
     if (!v.maybeNan && v.hi <= 0.0) return false;  // inside somewhere: not clear
     const Vec3 extent = hi - lo;
@@ -20,18 +22,19 @@ bool clearOver(const Tape& f, const Vec3& lo, const Vec3& hi, int& budget) {
     Vec3 midHi = hi, midLo = lo;
     midHi[axis] = mid;
     midLo[axis] = mid;
-    return clearOver(f, lo, midHi, budget) && clearOver(f, midLo, hi, budget);
+    return clearOver(f, lo, midHi, budget, choices) && clearOver(f, midLo, hi, budget, choices);
 }
 
 }  // namespace
 
 bool facesClear(const Tape& f, const Bounds3& box, int budget) {
+    std::vector<Choice> choices;
     for (int axis = 0; axis < 3; ++axis)
         for (int side = 0; side < 2; ++side) {
             Vec3 lo = box.lo, hi = box.hi;
             const double at = side == 0 ? box.lo[axis] : box.hi[axis];
             lo[axis] = hi[axis] = at;
-            if (!clearOver(f, lo, hi, budget)) return false;
+            if (!clearOver(f, lo, hi, budget, choices)) return false;
         }
     return true;
 }

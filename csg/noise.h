@@ -28,8 +28,9 @@ double gradientNoise(const Vec3& p, uint64_t seed, Vec3& gradient);
 /// An enclosure of the noise over the box x × y × z, and (when `gradient` is not null)
 /// enclosures of its three partial derivatives there (each holding every one-sided derivative
 /// where the clamp sets in).
-/// Boxes over at most eight lattice cells are enclosed cell by cell; wider ones get the
-/// global bounds [−1, 1] and ±kNoiseSlopeBound.
+/// A box inside one lattice cell gets the interpolation itself enclosed; one across cell
+/// walls the mean-value form about its centre with the global slope bound (slopes
+/// ±kNoiseSlopeBound), clipped to [−1, 1].
 Interval gradientNoiseRange(const Interval& x, const Interval& y, const Interval& z,
                             uint64_t seed, Interval* gradient = nullptr);
 
