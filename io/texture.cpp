@@ -28,11 +28,20 @@ std::string fileProblem(const std::string& path) {
     return {};
 }
 
-/// A derivative the plug-in can take: finite, and no wider than a few whole images (wider
-/// is the image's mean either way; an infinite one, from a mapping's pole, would be NaN).
-float derivative(double d) {
-    if (!std::isfinite(d)) return 4.0f;
-    return float(std::fmax(-4.0, std::fmin(4.0, d)));
+/// The longest footprint axis passed on, in images: further, a repeating image is near its
+/// mean along the axis anyway, and the plug-in's probes along it would only spread thinner.
+constexpr double kLongestAxis = 16.0;
+
+/// A footprint axis the plug-in can take: finite (a mapping's pole makes it infinite: then
+/// the longest), and no longer than kLongestAxis, shortened along its own direction.
+void limitAxis(double& ds, double& dt) {
+    if (!std::isfinite(ds) || !std::isfinite(dt)) {
+        ds = std::isfinite(ds) ? 0.0 : kLongestAxis;
+        dt = std::isfinite(dt) ? 0.0 : kLongestAxis;
+        return;
+    }
+    const double length = std::hypot(ds, dt);
+    if (length > kLongestAxis) ds *= kLongestAxis / length, dt *= kLongestAxis / length;
 }
 
 /// A coordinate reduced to [0, 1) in double before it becomes a float, so far from the
@@ -72,9 +81,11 @@ std::shared_ptr<const Texture> Texture::open(const std::string& path) {
 std::array<float, 3> Texture::lookup(double s, double t, double dsdx, double dtdx, double dsdy,
                                      double dtdy, Wrap wrapS, Wrap wrapT) const {
     std::array<float, 3> rgb{0.0f, 0.0f, 0.0f};
-    mPlugin->textureLookup(mHandle, coordinate(s, wrapS), coordinate(t, wrapT),
-                           derivative(dsdx), derivative(dtdx), derivative(dsdy),
-                           derivative(dtdy), wrapCode(wrapS), wrapCode(wrapT), rgb.data());
+    limitAxis(dsdx, dtdx);
+    limitAxis(dsdy, dtdy);
+    mPlugin->textureLookup(mHandle, coordinate(s, wrapS), coordinate(t, wrapT), float(dsdx),
+                           float(dtdx), float(dsdy), float(dtdy), wrapCode(wrapS),
+                           wrapCode(wrapT), rgb.data());
     return rgb;
 }
 

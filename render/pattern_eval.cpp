@@ -177,10 +177,12 @@ ImageCoordinates mapToImage(ImageMap::Mapping mapping, const Vec3& q, const Vec3
     const double rho2 = q.x * q.x + q.z * q.z;
     // The angle about y, from +z toward +x, in turns: u = atan2(x, z) / 2π, and its gradient
     // (z, 0, −x) / (2π ρ²) (infinite on the axis: the whole image's width, clamped later).
+    // g·w, 0 for a zero w even where g is infinite (a point footprint at a pole).
+    const auto along = [](const Vec3& g, const Vec3& w) { return w == Vec3(0.0) ? 0.0 : glm::dot(g, w); };
     const auto around = [&] {
         c.u = std::atan2(q.x, q.z) / kTwoPi;
         const Vec3 gu = Vec3(q.z, 0.0, -q.x) / (kTwoPi * rho2);
-        c.dua = glm::dot(gu, a), c.dub = glm::dot(gu, b);
+        c.dua = along(gu, a), c.dub = along(gu, b);
     };
     switch (mapping) {
         case ImageMap::Mapping::Planar: linear(Vec3(1, 0, 0), Vec3(0, 1, 0)); break;
@@ -195,7 +197,7 @@ ImageCoordinates mapToImage(ImageMap::Mapping mapping, const Vec3& q, const Vec3
             const double rho = std::sqrt(rho2), r2 = rho2 + q.y * q.y;
             c.v = 0.5 + std::atan2(q.y, rho) / glm::pi<double>();
             const Vec3 gv = Vec3(-q.x * q.y / rho, rho, -q.z * q.y / rho) / (glm::pi<double>() * r2);
-            c.dva = glm::dot(gv, a), c.dvb = glm::dot(gv, b);
+            c.dva = along(gv, a), c.dvb = along(gv, b);
             break;
         }
         case ImageMap::Mapping::Box: {
