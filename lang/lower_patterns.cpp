@@ -144,7 +144,8 @@ bool Lowering::lowerImage(const PropertyBlock& b, Pattern& pattern) {
         map->texture = Texture::open(path);
     } catch (const TextureError& e) {
         error(at, "cannot read texture '" + written + "': " + e.reason,
-              "texture files are relative to the model file's folder; looked for " + path);
+              path == written ? std::string()
+                              : "texture files are relative to the model file's folder; looked for " + path);
         return false;
     } catch (const ImageSupportError& e) {
         error(at, e.what());
