@@ -14,8 +14,8 @@ double gradientNoise(const Vec3& p, uint64_t seed);
 
 /// The patch of surface a sample stands for: the parallelogram p + a·du + b·dv, a and b in
 /// [−½, ½] (world vectors in the tangent plane; zero vectors for a point), and the surface's
-/// normal there (which face of a box-mapped image shows; zero when not known, which takes
-/// the +z face).
+/// unit normal there, turned toward the viewer (which face of a box-mapped image shows; zero
+/// when not known, which takes the +z face).
 struct Footprint {
     Vec3 du{0.0};
     Vec3 dv{0.0};
