@@ -187,6 +187,8 @@ private:
     void lowerMaterial(const Statement& s, Material& m);
     // lower_patterns.cpp: a `pattern KIND { … }` (kept as a Primitive solid by the parser).
     std::shared_ptr<const Pattern> lowerPattern(const Solid& s);
+    /// An image pattern's `file` (opened now: a bad file is an error here) and `mapping`.
+    bool lowerImage(const PropertyBlock& b, Pattern& pattern);
     void checkEnergy(const PropertyBlock& b, const Material& m);
     void lowerCamera(const Statement& s, CameraDesc& camera);
     std::optional<Light> lowerLight(const Statement& s);
