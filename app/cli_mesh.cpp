@@ -46,8 +46,10 @@ void printMeshStats(const MeshExportStats& s, const TriangleMesh& mesh, double s
         << " on creases, " << s.placement.projected << " projected, " << s.placement.kept
         << " kept)\n";
     out << "  triangles:            " << mesh.triangles.size() << "\n";
-    std::snprintf(line, sizeof line, "  hausdorff (mesh to surface): %.3e (%.4f voxels) over %llu points, %llu first-order\n",
-                  s.distance.hausdorff, s.distance.hausdorff / voxel,
+    std::snprintf(line, sizeof line,
+                  "  hausdorff (mesh to surface): %.3e (%.4f voxels), mean %.3e, over %llu points "
+                  "(vertices, edge midpoints, centroids), %llu first-order\n",
+                  s.distance.hausdorff, s.distance.hausdorff / voxel, s.distance.mean,
                   (unsigned long long)s.distance.samples, (unsigned long long)s.distance.firstOrder);
     out << line;
     std::snprintf(line, sizeof line, "  volume:               mesh %.9g, model in [%.9g, %.9g]\n",

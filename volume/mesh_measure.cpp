@@ -27,7 +27,7 @@ SurfaceDistance measureSurfaceDistance(const SampledField& field, const std::vec
     // Per vertex, then per triangle (its centroid and the midpoints of the edges it owns: the
     // edge from a lower to a higher index, which a closed mesh's other triangle runs the other
     // way). The largest of independent per-item values: the same whatever the threads.
-    std::vector<double> vd(vertices.size()), td(triangles.size());
+    std::vector<double> vd(vertices.size()), td(triangles.size()), tsum(triangles.size());
     std::vector<uint8_t> vf(vertices.size()), tf(triangles.size());
     tbb::parallel_for(size_t(0), vertices.size(), [&](size_t i) {
         bool first;
@@ -39,26 +39,34 @@ SurfaceDistance measureSurfaceDistance(const SampledField& field, const std::vec
         const Vec3 a = vertices[t[0]], b = vertices[t[1]], c = vertices[t[2]];
         bool first;
         double d = distanceToSurface(field, (a + b + c) / 3.0, first);
+        double sum = d;
         uint8_t firsts = first;
         for (int e = 0; e < 3; ++e) {
             const uint32_t u = t[size_t(e)], w = t[size_t((e + 1) % 3)];
             if (u > w) continue;
-            d = std::max(d, distanceToSurface(field, 0.5 * (vertices[u] + vertices[w]), first));
+            const double de = distanceToSurface(field, 0.5 * (vertices[u] + vertices[w]), first);
+            d = std::max(d, de);
+            sum += de;
             firsts += first;
         }
         td[i] = d;
         tf[i] = firsts;
+        tsum[i] = sum;
     });
     SurfaceDistance out;
+    double sum = 0.0;  // in a fixed order
     for (size_t i = 0; i < vd.size(); ++i) {
         out.hausdorff = std::max(out.hausdorff, vd[i]);
         out.firstOrder += vf[i];
+        sum += vd[i];
     }
     for (size_t i = 0; i < td.size(); ++i) {
         out.hausdorff = std::max(out.hausdorff, td[i]);
         out.firstOrder += tf[i];
+        sum += tsum[i];
     }
     out.samples = vertices.size() + triangles.size() + (3 * triangles.size()) / 2;
+    out.mean = out.samples > 0 ? sum / double(out.samples) : 0.0;
     return out;
 }
 

@@ -16,6 +16,7 @@ namespace kerf {
 /// it is the first-order estimate |f|/|∇f| (counted in `firstOrder`).
 struct SurfaceDistance {
     double hausdorff = 0.0;
+    double mean = 0.0;  ///< over all sample points
     uint64_t samples = 0;
     uint64_t firstOrder = 0;
 };
