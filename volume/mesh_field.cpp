@@ -98,7 +98,11 @@ SampledField sampleField(const MeshLattice& lattice, std::shared_ptr<const Tape>
                         o.kind = Outcome::Boundary;
                     } else {
                         o.kind = Outcome::Split;
-                        o.childTape = r.tape->simplified(o.choices);
+                        // A new tape only where a min or max was decided: otherwise the
+                        // children share the parent's, and memory does not grow per region.
+                        const bool decided = std::any_of(o.choices.begin(), o.choices.end(),
+                                                         [](Choice c) { return c != Choice::Both; });
+                        o.childTape = decided ? r.tape->simplified(o.choices) : r.tape;
                     }
             }
             o.choices.clear();

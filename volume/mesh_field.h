@@ -18,8 +18,9 @@ namespace kerf {
 
 /// Points per block side: one OpenVDB leaf (checked in volume/vdb_mesh.cpp).
 constexpr int kMeshBlock = 8;
-/// The most voxels kerf samples for one mesh (boundary blocks and the ring of constant blocks
-/// round them together): 2^26, about 1 GB with OpenVDB's meshing structures.
+/// The most voxels kerf samples for one mesh (in boundary blocks): 2^26. Measured on the cup,
+/// a run takes about 17 bytes per sampled voxel (samples, the ring of constant leaves, OpenVDB's
+/// meshing, the mesh), so about 1.2 GB at the cap.
 constexpr uint64_t kMeshMaxVoxels = uint64_t(1) << 26;
 /// The most lattice points along one axis of the bounds (OpenVDB's coordinates are int32).
 constexpr int64_t kMeshMaxAxisPoints = int64_t(1) << 24;

@@ -7,6 +7,7 @@
 #include "util/compiled_scene.h"
 
 #include <catch2/catch.hpp>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <map>
@@ -202,4 +203,22 @@ TEST_CASE("mesh_export/bad voxel sizes are refused") {
     const Scene floorOnly = test::compiledScene("object halfspace { normal <0, 1, 0> };");
     CHECK_THROWS_WITH(exportMesh(floorOnly.objects, options, stats),
                       Catch::Contains("no bounded object"));
+}
+
+TEST_CASE("mesh_export/the same mesh whatever the thread count") {
+    const Scene scene = test::compiledSceneFile(std::string(KERF_SOURCE_DIR) +
+                                                "/models/gyroid_sphere.kerf");
+    MeshExportOptions options;
+    options.voxel = 0.08;
+    options.adaptivity = 0.2;
+    MeshExportStats stats;
+    const TriangleMesh many = exportMesh(scene.objects, options, stats);
+    TriangleMesh one;
+    {
+        tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+        one = exportMesh(scene.objects, options, stats);
+    }
+    REQUIRE(one.vertices.size() == many.vertices.size());
+    CHECK(one.vertices == many.vertices);
+    CHECK(one.triangles == many.triangles);
 }
