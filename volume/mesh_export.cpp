@@ -26,22 +26,24 @@ TriangleMesh exportMesh(const std::vector<NodePtr>& objects, const MeshExportOpt
     ExprId solid = -1;
     Bounds3 bounds;
     for (const NodePtr& object : objects) {
-        if (!object->bounds().finite()) {
+        const Bounds3& b = object->bounds();
+        if (!b.empty() && !b.finite()) {
             ++stats.unboundedSkipped;
             continue;
         }
-        if (object->bounds().empty()) continue;
+        ++stats.objects;
+        if (b.empty()) continue;  // an empty solid (say, disjoint parts intersected)
         const ExprId f = treeExpr(*object, g, g.x(), g.y(), g.z());
         solid = solid < 0 ? f : g.binary(Op::Min, solid, f);
-        bounds = Bounds3::hull(bounds, object->bounds());
-        ++stats.objects;
+        bounds = Bounds3::hull(bounds, b);
     }
     // The voxel is checked before anything else can fail, so its message comes first.
     const MeshLattice lattice =
         meshLattice(bounds.empty() ? Bounds3{Vec3(0.0), Vec3(0.0)} : bounds, options.voxel);
-    if (solid < 0)
+    if (stats.objects == 0)
         throw MeshInputError("the model has no bounded object to mesh (unbounded objects such "
                              "as half-spaces are left out)");
+    if (solid < 0) return {};  // only empty solids: an empty mesh
     stats.lattice = lattice.points;
 
     auto t0 = std::chrono::steady_clock::now();
