@@ -19,6 +19,7 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 
 TriangleMesh exportMesh(const std::vector<NodePtr>& objects, const MeshExportOptions& options,
                         MeshExportStats& stats) {
+    stats = MeshExportStats{};
     if (!(options.adaptivity >= 0.0 && options.adaptivity <= 1.0))
         throw MeshInputError("--adaptivity must be a number from 0 to 1");
     // The solid: the union of the bounded objects, as one tape.

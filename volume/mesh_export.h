@@ -42,7 +42,7 @@ struct MeshExportStats {
     VolumeBounds modelVolume;
 };
 
-/// The mesh of the union of the bounded objects. Throws MeshInputError for a bad voxel or
+/// The mesh of the union of the bounded objects; `stats` is reset, then filled. Throws MeshInputError for a bad voxel or
 /// adaptivity, a voxel too fine for the caps (volume/mesh_field.h), or no bounded object.
 TriangleMesh exportMesh(const std::vector<NodePtr>& objects, const MeshExportOptions& options,
                         MeshExportStats& stats);

@@ -131,26 +131,21 @@ bool creasePoint(const Tape& tape, const MeshLattice& l, const std::array<int64_
 /// no area, which keeps the mesh closed and its crease sharp.
 bool creaseNear(const Tape& tape, const MeshLattice& l, const Vec3& index, Vec3& out) {
     constexpr double kFuzz = 1e-6;
-    std::array<int64_t, 3> lo, count;
+    // Per axis, the floor cell first, then the neighbour whose face the vertex is on.
+    int64_t choice[3][2];
+    int count[3];
     for (int a = 0; a < 3; ++a) {
         const double c = std::floor(index[a]);
-        lo[a] = int64_t(c);
+        choice[a][0] = int64_t(c);
         count[a] = 1;
-        if (index[a] - c < kFuzz) { lo[a] -= 1; count[a] = 2; }
-        else if (c + 1.0 - index[a] < kFuzz) count[a] = 2;
+        if (index[a] - c < kFuzz) choice[a][count[a]++] = int64_t(c) - 1;
+        else if (c + 1.0 - index[a] < kFuzz) choice[a][count[a]++] = int64_t(c) + 1;
     }
-    for (int k = 0; k < 8; ++k) {
-        // Candidates in a fixed order: the floor cell of each axis before its neighbour.
-        std::array<int64_t, 3> cell;
-        bool valid = true;
-        for (int a = 0; a < 3; ++a) {
-            const int64_t step = (k >> a) & 1;
-            if (step >= count[a]) valid = false;
-            const bool below = count[a] == 2 && index[a] - std::floor(index[a]) < kFuzz;
-            cell[a] = below ? lo[a] + 1 - step : lo[a] + step;
-        }
-        if (valid && creasePoint(tape, l, cell, out)) return true;
-    }
+    for (int i = 0; i < count[0]; ++i)
+        for (int j = 0; j < count[1]; ++j)
+            for (int k = 0; k < count[2]; ++k)
+                if (creasePoint(tape, l, {choice[0][i], choice[1][j], choice[2][k]}, out))
+                    return true;
     return false;
 }
 
@@ -178,10 +173,6 @@ void placeVertices(const SampledField& field, std::vector<Vec3>& points, Placeme
     stats.projected = projected;
     stats.kept = kept;
 }
-
-}  // namespace kerf
-
-namespace kerf {
 
 void splitQuads(const SampledField& field, const std::vector<Vec3>& points,
                 const std::vector<std::array<uint32_t, 4>>& quads,
