@@ -108,6 +108,28 @@ double surfaceDistance(const Tape& tape, const Vec3& q, double reach, double tol
             break;
         }
     }
+    if (!(best <= 1.5 * estimate)) {
+        // Near a crease neither gradient may point at the nearest surface: march along the 26
+        // directions of a cube's faces, edges and corners, up to the best distance so far.
+        const double range = std::min(best, reach);
+        const bool in0 = inside(fq);
+        for (int d = 0; d < 27; ++d) {
+            if (d == 13) continue;  // (0, 0, 0)
+            const Vec3 dir = glm::normalize(Vec3(d % 3 - 1, (d / 3) % 3 - 1, d / 9 - 1));
+            double ta = 0.0, fa = fq;
+            for (int k = 1; k <= 8; ++k) {
+                const double t = range * k / 8.0;
+                if (t >= best) break;
+                const double f = tape.eval(q + t * dir);
+                if (inside(f) != in0) {
+                    best = std::min(best, refineCrossing(tape, q, dir, ta, fa, t, f, tolerance));
+                    break;
+                }
+                ta = t;
+                fa = f;
+            }
+        }
+    }
     if (best < HUGE_VAL) return best;
     firstOrder = true;
     return std::isfinite(estimate) ? estimate : HUGE_VAL;

@@ -30,8 +30,9 @@ bool rootAlongGradient(const Tape& tape, const Vec3& p, double reach, double tol
 /// An upper bound of the distance from q to the surface: the nearest crossing bracketed along
 /// the gradient from q, or from the points of up to three Newton steps from q (which reach a
 /// crease, where the gradient at q points along the wrong sheet). Stops once a crossing is
-/// within 1.5× the first-order estimate |f|/|∇f| at q. Where none is bracketed within
-/// `reach`, returns the first-order estimate and sets `firstOrder`.
+/// within 1.5× the first-order estimate |f|/|∇f| at q; otherwise also marches along 26 fixed
+/// directions (8 steps up to the best so far, or `reach`). Where none is bracketed, returns
+/// the first-order estimate and sets `firstOrder`.
 double surfaceDistance(const Tape& tape, const Vec3& q, double reach, double tolerance,
                        bool& firstOrder);
 
