@@ -222,3 +222,32 @@ TEST_CASE("mesh_export/the same mesh whatever the thread count") {
     CHECK(one.vertices == many.vertices);
     CHECK(one.triangles == many.triangles);
 }
+
+TEST_CASE("mesh_export/a model scaled by 1e-6 or 1e6 meshes alike at a scaled voxel") {
+    // No tolerance depends on the model's scale: every one is a fraction of the voxel.
+    double relativeError[3], relativeDistance[3];
+    size_t triangles[3];
+    const double scales[3] = {1.0, 1e-6, 1e6};
+    for (int i = 0; i < 3; ++i) {
+        const double s = scales[i];
+        char model[160];
+        // The lattice starts 2 voxels below the bounds, so with a voxel that divides the
+        // radius the poles are lattice points, whose side comes from rounding (which differs
+        // between scales): 0.093 does not divide 1.
+        std::snprintf(model, sizeof model,
+                      "object sphere { center <%.17g, %.17g, %.17g> radius %.17g };", 0.1 * s,
+                      0.2 * s, 0.3 * s, s);
+        MeshExportStats stats;
+        const TriangleMesh mesh = meshOf(model, 0.093 * s, stats);
+        requireWatertight(mesh);
+        triangles[i] = mesh.triangles.size();
+        relativeError[i] = (4.0 / 3.0 * kPi * s * s * s - stats.meshVolume) / (s * s * s);
+        relativeDistance[i] = stats.distance.hausdorff / s;
+    }
+    for (int i = 1; i < 3; ++i) {
+        INFO("scale " << scales[i]);
+        CHECK(triangles[i] == triangles[0]);
+        CHECK(relativeError[i] == Approx(relativeError[0]).epsilon(1e-6));
+        CHECK(relativeDistance[i] == Approx(relativeDistance[0]).epsilon(1e-6));
+    }
+}
