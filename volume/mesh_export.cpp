@@ -48,7 +48,7 @@ TriangleMesh exportMesh(const std::vector<NodePtr>& objects, const MeshExportOpt
     stats.lattice = lattice.points;
 
     auto t0 = std::chrono::steady_clock::now();
-    const SampledField field = sampleField(lattice, Tape::compile(g, solid), options.innerTapes);
+    const SampledField field = sampleField(lattice, Tape::compile(g, solid));
     stats.secondsClassify = secondsSince(t0);
     stats.intervalEvaluations = field.intervalEvaluations;
     stats.boundaryBlocks = field.boundary.size();

@@ -18,10 +18,6 @@ struct MeshExportOptions {
     double voxel = 0.0;       ///< lattice spacing, model units; > 0
     double adaptivity = 0.0;  ///< OpenVDB's adaptivity in [0, 1]: 0 uniform, 1 fewest triangles
     bool measure = false;     ///< also measure the error and volumes (stats)
-    /// Samples and cells inside a boundary block use the block's tape simplified over just
-    /// its points (fast); false uses the tape widened for vertices everywhere (the reference
-    /// the tests compare with: the same mesh, bit for bit).
-    bool innerTapes = true;
 };
 
 struct TriangleMesh {

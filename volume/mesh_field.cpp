@@ -67,10 +67,8 @@ MeshLattice meshLattice(const Bounds3& bounds, double voxel) {
     return l;
 }
 
-SampledField sampleField(const MeshLattice& lattice, std::shared_ptr<const Tape> tape,
-                         bool innerTapes) {
+SampledField sampleField(const MeshLattice& lattice, std::shared_ptr<const Tape> tape) {
     SampledField field;
-    field.innerTapes = innerTapes;
     field.lattice = lattice;
     field.tape = tape;
     std::array<int32_t, 3> blocks{};
@@ -148,11 +146,6 @@ SampledField sampleField(const MeshLattice& lattice, std::shared_ptr<const Tape>
         std::vector<Choice> choices;
         tape->evalInterval(box[0], box[1], box[2], choices);
         bb.tape = tape->simplified(choices);
-        regionBox(lattice, bb.block, 1, 0, box);
-        bb.tape->evalInterval(box[0], box[1], box[2], choices);
-        const bool decided = std::any_of(choices.begin(), choices.end(),
-                                         [](Choice c) { return c != Choice::Both; });
-        bb.innerTape = decided && innerTapes ? bb.tape->simplified(choices) : bb.tape;
         bb.values.resize(kMeshBlock * kMeshBlock * kMeshBlock);
         const int64_t i0 = int64_t(bb.block[0]) * kMeshBlock;
         const int64_t j0 = int64_t(bb.block[1]) * kMeshBlock;
@@ -161,8 +154,7 @@ SampledField sampleField(const MeshLattice& lattice, std::shared_ptr<const Tape>
             for (int y = 0; y < kMeshBlock; ++y)
                 for (int z = 0; z < kMeshBlock; ++z) {
                     Vec3 g;
-                    const double f =
-                        bb.innerTape->evalGradient(lattice.at(i0 + x, j0 + y, k0 + z), g);
+                    const double f = bb.tape->evalGradient(lattice.at(i0 + x, j0 + y, k0 + z), g);
                     const double len = glm::length(g);
                     // First-order distance in voxels; where the gradient is useless, the band.
                     double d = f / (len * lattice.voxel);
@@ -176,7 +168,7 @@ SampledField sampleField(const MeshLattice& lattice, std::shared_ptr<const Tape>
                     bb.values[size_t(valueIndex(x, y, z))] = v;
                 }
     });
-    field.intervalEvaluations += 2 * boundary.size();
+    field.intervalEvaluations += boundary.size();
     return field;
 }
 

@@ -45,16 +45,12 @@ struct MeshLattice {
 };
 
 /// A block the surface may cross: its corner in blocks, its 8³ values in voxels (at
-/// valueIndex(x, y, z), z fastest as in an OpenVDB leaf), negative inside, and the solid's
-/// tape simplified over the block's points widened by kMeshTapeMargin voxels (for placing and
-/// measuring vertices near it).
+/// valueIndex(x, y, z), z fastest as in an OpenVDB leaf), negative inside, and the solid's tape simplified over the block's
+/// points widened by kMeshTapeMargin voxels (for placing and measuring vertices near it).
 struct BoundaryBlock {
     std::array<int32_t, 3> block{0, 0, 0};
     std::vector<float> values;  ///< kMeshBlock³, index valueIndex(x, y, z)
     std::shared_ptr<const Tape> tape;
-    /// `tape` simplified further over the block's own points [8b, 8b + 8] (the same doubles
-    /// there, fewer instructions): for the samples and the cells inside the block.
-    std::shared_ptr<const Tape> innerTape;
 };
 constexpr int kMeshTapeMargin = 3;
 inline int valueIndex(int x, int y, int z) { return (x * kMeshBlock + y) * kMeshBlock + z; }
@@ -71,9 +67,6 @@ struct SampledField {
     std::vector<BoundaryBlock> boundary;  ///< sorted by block
     std::vector<FullRegion> full;
     uint64_t intervalEvaluations = 0;
-    /// Whether samples and cells inside a block use its innerTape (the fast path, default) or
-    /// its widened tape (the reference the tests compare it with: the same doubles).
-    bool innerTapes = true;
 };
 
 /// The lattice for the solid within `bounds` at `voxel`, with two voxels of margin. Throws
@@ -84,7 +77,6 @@ MeshLattice meshLattice(const Bounds3& bounds, double voxel);
 /// Classifies the lattice's blocks for the solid whose implicit is `tape` and samples the
 /// boundary blocks (TBB; the result does not depend on the thread count). Throws
 /// MeshInputError when more than kMeshMaxVoxels voxels would be sampled.
-SampledField sampleField(const MeshLattice& lattice, std::shared_ptr<const Tape> tape,
-                         bool innerTapes = true);
+SampledField sampleField(const MeshLattice& lattice, std::shared_ptr<const Tape> tape);
 
 }  // namespace kerf

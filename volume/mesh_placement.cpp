@@ -61,10 +61,8 @@ void symmetricEigen(double a[3][3], double w[3], double v[3][3]) {
 
 /// The crease point of the lattice cell with lowest corner `c`, or false where the cell's
 /// crossings lie on one smooth piece of surface (or the minimum leaves the cell).
-/// `tape` holds over the cell; `wide` also within half a voxel round it, where the minimum
-/// may fall.
-bool creasePoint(const Tape& tape, const Tape& wide, const MeshLattice& l,
-                 const std::array<int64_t, 3>& c, Vec3& out) {
+bool creasePoint(const Tape& tape, const MeshLattice& l, const std::array<int64_t, 3>& c,
+                 Vec3& out) {
     Vec3 corner[8];
     double value[8];
     for (int k = 0; k < 8; ++k) {
@@ -120,7 +118,7 @@ bool creasePoint(const Tape& tape, const Tape& wide, const MeshLattice& l,
     // A crease point is on the surface (both sheets meet there); a minimum far from it means
     // the normals varied for another reason (a thin or tightly curved part of the surface).
     Vec3 g;
-    const double fx = wide.evalGradient(x, g);
+    const double fx = tape.evalGradient(x, g);
     if (!(std::fabs(fx) <= kCreaseDistance * l.voxel * glm::length(g))) return false;
     out = x;
     return true;
@@ -131,8 +129,7 @@ bool creasePoint(const Tape& tape, const Tape& wide, const MeshLattice& l,
 /// the solid through lattice points), so every cell within 1e-6 voxel is tried, nearest first.
 /// Several vertices of one cell may go to the same crease point: their polygons then have
 /// no area, which keeps the mesh closed and its crease sharp.
-bool creaseNear(const SampledField& field, const Tape& tape, const Vec3& index, Vec3& out) {
-    const MeshLattice& l = field.lattice;
+bool creaseNear(const Tape& tape, const MeshLattice& l, const Vec3& index, Vec3& out) {
     constexpr double kFuzz = 1e-6;
     // Per axis, the floor cell first, then the neighbour whose face the vertex is on.
     int64_t choice[3][2];
@@ -146,12 +143,9 @@ bool creaseNear(const SampledField& field, const Tape& tape, const Vec3& index, 
     }
     for (int i = 0; i < count[0]; ++i)
         for (int j = 0; j < count[1]; ++j)
-            for (int k = 0; k < count[2]; ++k) {
-                const std::array<int64_t, 3> cell{choice[0][i], choice[1][j], choice[2][k]};
-                // A cell inside a boundary block uses the block's shorter inner tape.
-                const Tape* inner = cellTape(field, cell);
-                if (creasePoint(inner ? *inner : tape, tape, l, cell, out)) return true;
-            }
+            for (int k = 0; k < count[2]; ++k)
+                if (creasePoint(tape, l, {choice[0][i], choice[1][j], choice[2][k]}, out))
+                    return true;
     return false;
 }
 
@@ -164,7 +158,7 @@ void placeVertices(const SampledField& field, std::vector<Vec3>& points, Placeme
         const Tape& tape = tapeNear(field, points[i]);
         const Vec3 p = modelFromIndex(l, points[i]);
         Vec3 placed;
-        if (creaseNear(field, tape, points[i], placed)) {
+        if (creaseNear(tape, l, points[i], placed)) {
             points[i] = placed;
             features.fetch_add(1, std::memory_order_relaxed);
         } else if (rootAlongGradient(tape, p, l.voxel, kRootTolerance * l.voxel, placed)) {

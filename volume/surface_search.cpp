@@ -10,20 +10,6 @@ namespace {
 
 bool inside(double f) { return f <= 0.0; }
 
-/// The boundary block at `block`, or nullptr.
-const BoundaryBlock* findBlock(const SampledField& field, const std::array<int32_t, 3>& block) {
-    BoundaryBlock key;
-    key.block = block;
-    const auto it = std::lower_bound(
-        field.boundary.begin(), field.boundary.end(), key,
-        [](const BoundaryBlock& a, const BoundaryBlock& b) { return a.block < b.block; });
-    return it == field.boundary.end() || it->block != block ? nullptr : &*it;
-}
-
-int32_t blockOf(int64_t i) {
-    return int32_t(i >= 0 ? i / kMeshBlock : -((-i + kMeshBlock - 1) / kMeshBlock));
-}
-
 }  // namespace
 
 const Tape& tapeNear(const SampledField& field, const Vec3& index) {
@@ -31,19 +17,20 @@ const Tape& tapeNear(const SampledField& field, const Vec3& index) {
     const std::array<int64_t, 3> c{int64_t(std::floor(index.x)), int64_t(std::floor(index.y)),
                                    int64_t(std::floor(index.z))};
     for (int k = 0; k < 8; ++k) {
-        std::array<int32_t, 3> block;
-        for (int a = 0; a < 3; ++a) block[a] = blockOf(c[a] + ((k >> a) & 1));
+        BoundaryBlock key;
+        for (int a = 0; a < 3; ++a) {
+            const int64_t i = c[a] + ((k >> a) & 1);
+            key.block[a] = int32_t(i >= 0 ? i / kMeshBlock : -((-i + kMeshBlock - 1) / kMeshBlock));
+        }
+        const auto it = std::lower_bound(
+            field.boundary.begin(), field.boundary.end(), key,
+            [](const BoundaryBlock& a, const BoundaryBlock& b) { return a.block < b.block; });
+        if (it == field.boundary.end() || it->block != key.block) continue;
         // The block's tape holds over its points widened by kMeshTapeMargin (3): cells from
         // c − 2 to c + 3 fit whenever c or c + 1 is one of its own points.
-        if (const BoundaryBlock* b = findBlock(field, block)) return *b->tape;
+        return *it->tape;
     }
     return *field.tape;
-}
-
-const Tape* cellTape(const SampledField& field, const std::array<int64_t, 3>& cell) {
-    if (!field.innerTapes) return nullptr;
-    const BoundaryBlock* b = findBlock(field, {blockOf(cell[0]), blockOf(cell[1]), blockOf(cell[2])});
-    return b ? b->innerTape.get() : nullptr;
 }
 
 double refineCrossing(const Tape& tape, const Vec3& from, const Vec3& dir, double ta, double fa,

@@ -13,10 +13,6 @@ namespace kerf {
 /// boundary block is that near.
 const Tape& tapeNear(const SampledField& field, const Vec3& index);
 
-/// The inner tape of the boundary block that holds the lattice cell with lowest corner `cell`
-/// (the cell lies within the block's own points), or nullptr.
-const Tape* cellTape(const SampledField& field, const std::array<int64_t, 3>& cell);
-
 /// Where the segment from + t·dir (t in [ta, tb]) crosses the surface, given f(ta) = fa and
 /// f(tb) = fb on opposite sides (inside is f ≤ 0): Illinois false position until the bracket
 /// is narrower than `tolerance` (in t). Returns the end of the final bracket with the

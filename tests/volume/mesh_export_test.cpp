@@ -251,28 +251,3 @@ TEST_CASE("mesh_export/a model scaled by 1e-6 or 1e6 meshes alike at a scaled vo
         CHECK(relativeDistance[i] == Approx(relativeDistance[0]).epsilon(1e-6));
     }
 }
-
-TEST_CASE("mesh_export/inner block tapes give the same mesh as the widened tapes") {
-    // The fast path (samples and cells inside a block evaluated with the block's tape
-    // simplified over just its points) against the reference, bit for bit.
-    const char* models[] = {
-        "solid s = implicit { f abs(sin(4*x)*cos(4*y) + sin(4*y)*cos(4*z) + sin(4*z)*cos(4*x)) - 0.35 "
-        "bound box { min <-1.6, -1.6, -1.6> max <1.6, 1.6, 1.6> } };"
-        "object intersection { s sphere { radius 1.5 } };",
-        "object difference { box { min <-1, -1, -1> max <1, 1, 1> }"
-        "  for i in 0 .. 40 { sphere { center <2 * random(1, 3 * i) - 1, 2 * random(1, 3 * i + 1) - 1,"
-        "  1> radius 0.1 + 0.1 * random(1, 3 * i + 2) } } };"};
-    for (const char* model : models) {
-        INFO(model);
-        const Scene scene = test::compiledScene(model);
-        MeshExportOptions options;
-        options.voxel = 0.05;
-        MeshExportStats fastStats, referenceStats;
-        const TriangleMesh fast = exportMesh(scene.objects, options, fastStats);
-        options.innerTapes = false;
-        const TriangleMesh reference = exportMesh(scene.objects, options, referenceStats);
-        REQUIRE(fast.triangles.size() > 1000);
-        CHECK(fast.vertices == reference.vertices);
-        CHECK(fast.triangles == reference.triangles);
-    }
-}
