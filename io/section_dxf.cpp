@@ -140,21 +140,23 @@ std::string sectionDxf(const SectionDrawing& drawing) {
     body.handle();
     body.pair(100, "AcDbSymbolTable");
     body.integer(70, long(drawing.layers.size()) + 1);
-    const auto layerRecord = [&](const std::string& name, const Rgb& rgb) {
+    // rgb null: the default layer's colour 7, white or black against the background.
+    const auto layerRecord = [&](const std::string& name, const Rgb* rgb) {
         body.pair(0, "LAYER");
         body.handle();
         body.pair(100, "AcDbSymbolTableRecord");
         body.pair(100, "AcDbLayerTableRecord");
         body.pair(2, name);
         body.integer(70, 0);
-        body.integer(62, nearestAci(rgb));
-        body.integer(420, (long(rgb[0]) << 16) | (rgb[1] << 8) | rgb[2]);
+        body.integer(62, rgb ? nearestAci(*rgb) : 7);
+        if (rgb) body.integer(420, (long((*rgb)[0]) << 16) | ((*rgb)[1] << 8) | (*rgb)[2]);
         body.pair(6, "CONTINUOUS");
     };
-    layerRecord("0", {255, 255, 255});
+    layerRecord("0", nullptr);
     for (size_t l = 0; l < drawing.layers.size(); ++l) {
         const auto& c = drawing.layers[l].color;
-        layerRecord(names[l], {srgbByte(float(c[0])), srgbByte(float(c[1])), srgbByte(float(c[2]))});
+        const Rgb rgb = {srgbByte(float(c[0])), srgbByte(float(c[1])), srgbByte(float(c[2]))};
+        layerRecord(names[l], &rgb);
     }
     body.pair(0, "ENDTAB");
     body.pair(0, "ENDSEC");

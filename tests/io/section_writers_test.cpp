@@ -313,7 +313,8 @@ TEST_CASE("sectionDxf reads back to the same loops, layers and colours") {
 
     SECTION("an empty section is a valid file") {
         const DxfRead empty = readDxf(sectionDxf(SectionDrawing{}));
-        CHECK(empty.layers.size() == 1);
+        REQUIRE(empty.layers.size() == 1);
+        CHECK(empty.layers[0].aci == 7);  // the default layer: white or black by background
         CHECK(empty.sections == std::vector<std::string>{"HEADER", "TABLES", "ENTITIES"});
     }
 }
