@@ -99,15 +99,22 @@ void coverageRows(const std::vector<SectionLoop>& loops, const SectionGrid& grid
             edges.push_back(e);
         }
     }
-    std::stable_sort(edges.begin(), edges.end(),
-                     [](const Edge& a, const Edge& b) { return a.firstRow < b.firstRow; });
+    // The edges by first row (a counting sort: one pass, and the order within a row kept, so
+    // the sums are added in the same order every run).
+    std::vector<size_t> rowStart(size_t(height) + 1, 0);
+    for (const Edge& e : edges) ++rowStart[size_t(e.firstRow) + 1];
+    for (int j = 0; j < height; ++j) rowStart[j + 1] += rowStart[j];
+    std::vector<const Edge*> byRow(edges.size());
+    {
+        std::vector<size_t> fill(rowStart.begin(), rowStart.end() - 1);
+        for (const Edge& e : edges) byRow[fill[e.firstRow]++] = &e;
+    }
 
     RowSums sums{std::vector<double>(width, 0.0), std::vector<double>(size_t(width) + 1, 0.0)};
     std::vector<double> coverage(width);
     std::vector<const Edge*> active;
-    size_t next = 0;
     for (int j = 0; j < height; ++j) {
-        while (next < edges.size() && edges[next].firstRow == j) active.push_back(&edges[next++]);
+        active.insert(active.end(), byRow.begin() + rowStart[j], byRow.begin() + rowStart[j + 1]);
         for (const Edge* e : active) {
             const double ya = std::clamp(e->y0, double(j), double(j + 1));
             const double yb = std::clamp(e->y1, double(j), double(j + 1));

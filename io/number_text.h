@@ -10,15 +10,25 @@
 
 namespace kerf {
 
-/// The shortest text that parses back to exactly `value` ("0.1", "2.5e-07", "1200");
+/// Appends the shortest text that parses back to exactly `value` ("0.1", "2.5e-07", "1200");
 /// -0 is written "0". Throws std::invalid_argument for NaN and infinities, which no SVG or
 /// DXF reader accepts, so a bad coordinate is never written silently.
-inline std::string exactNumber(double value) {
+inline void appendExactNumber(std::string& out, double value) {
     if (!std::isfinite(value)) throw std::invalid_argument("a non-finite coordinate");
-    if (value == 0.0) return "0";
+    if (value == 0.0) {
+        out += '0';
+        return;
+    }
     char text[32];
     const auto result = std::to_chars(text, text + sizeof text, value);
-    return std::string(text, result.ptr);
+    out.append(text, result.ptr);
+}
+
+/// The same as a string of its own.
+inline std::string exactNumber(double value) {
+    std::string out;
+    appendExactNumber(out, value);
+    return out;
 }
 
 }  // namespace kerf

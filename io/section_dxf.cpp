@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -89,9 +90,15 @@ std::string uniqueLayerName(const std::string& name, std::set<std::string>& used
 class DxfText {
 public:
     void pair(int code, const std::string& value) {
-        mText += std::to_string(code) + "\n" + value + "\n";
+        appendCode(code);
+        mText += value;
+        mText += '\n';
     }
-    void pair(int code, double value) { pair(code, exactNumber(value)); }
+    void pair(int code, double value) {
+        appendCode(code);
+        appendExactNumber(mText, value);
+        mText += '\n';
+    }
     void integer(int code, long value) { pair(code, std::to_string(value)); }
     /// A new entity handle (code 5), hexadecimal.
     void handle() {
@@ -102,7 +109,15 @@ public:
     unsigned nextHandle() const { return mNextHandle; }
     std::string& text() { return mText; }
 
+    void reserve(size_t bytes) { mText.reserve(bytes); }
+
 private:
+    void appendCode(int code) {
+        char text[16];
+        const auto result = std::to_chars(text, text + sizeof text, code);
+        mText.append(text, result.ptr);
+        mText += '\n';
+    }
     std::string mText;
     unsigned mNextHandle = 0x20;
 };
@@ -111,6 +126,10 @@ private:
 
 std::string sectionDxf(const SectionDrawing& drawing) {
     DxfText body;  // tables and entities first: the header needs the next free handle
+    size_t points = 0;
+    for (const SectionLayer& layer : drawing.layers)
+        for (const SectionLoop& loop : layer.loops) points += loop.points.size();
+    body.reserve(4096 + points * 48);
     std::set<std::string> used = {"0"};
     std::vector<std::string> names;
     for (const SectionLayer& layer : drawing.layers)

@@ -47,11 +47,16 @@ std::string uniqueId(const std::string& name, std::set<std::string>& used) {
 /// three points encloses nothing and is left out (as in the DXF).
 std::string pathData(const std::vector<SectionLoop>& loops) {
     std::string d;
+    size_t points = 0;
+    for (const SectionLoop& loop : loops) points += loop.points.size();
+    d.reserve(points * 40);
     for (const SectionLoop& loop : loops) {
         if (loop.points.size() < 3) continue;
         for (size_t k = 0; k < loop.points.size(); ++k) {
-            d += k == 0 ? "M" : (k == 1 ? " L" : "");
-            d += " " + exactNumber(loop.points[k][0]) + " " + exactNumber(loop.points[k][1]);
+            d += k == 0 ? "M " : (k == 1 ? " L " : " ");
+            appendExactNumber(d, loop.points[k][0]);
+            d += ' ';
+            appendExactNumber(d, loop.points[k][1]);
         }
         d += " Z ";
     }
@@ -84,7 +89,7 @@ std::string sectionSvg(const SectionDrawing& drawing, bool outline) {
         svg.beginGroup({{"id", uniqueId(layer.name, ids)}});
         svg.element("title", {}, layer.name);
         const std::string color = svgColor(layer.color);
-        SvgAttributes attributes = {{"d", pathData(layer.loops)}};
+        SvgAttributes attributes;
         if (outline) {
             // One screen pixel wide at any zoom: model units say nothing of a pen's width.
             attributes.insert(attributes.end(), {{"fill", "none"},
@@ -94,7 +99,7 @@ std::string sectionSvg(const SectionDrawing& drawing, bool outline) {
         } else {
             attributes.insert(attributes.end(), {{"fill", color}, {"fill-rule", "evenodd"}});
         }
-        svg.element("path", attributes);
+        svg.path(attributes, pathData(layer.loops));
         svg.endGroup();
     }
     svg.endGroup();

@@ -100,6 +100,14 @@ void SvgWriter::polyline(const SvgAttributes& attributes,
     mText += "</polyline>\n";
 }
 
+void SvgWriter::path(const SvgAttributes& attributes, const std::string& d) {
+    openTag("path", attributes);
+    mText.reserve(mText.size() + d.size() + 8);
+    mText += " d=\"";
+    mText += d;
+    mText += "\"/>\n";
+}
+
 std::string SvgWriter::finish() {
     std::string document = std::move(mText) + "</svg>\n";
     mText.clear();

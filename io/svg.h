@@ -53,6 +53,10 @@ public:
                   const std::vector<std::pair<double, double>>& points,
                   const std::string& title = "");
 
+    /// <path …attributes d="d"/>, `d` written as it is (path data is letters, digits, signs,
+    /// points and spaces, nothing to escape; a section's may be tens of megabytes).
+    void path(const SvgAttributes& attributes, const std::string& d);
+
     /// Closes the document and returns it; the writer is then empty.
     std::string finish();
 
