@@ -91,11 +91,11 @@ std::string sectionSvg(const SectionDrawing& drawing, bool outline) {
         const std::string color = svgColor(layer.color);
         SvgAttributes attributes;
         if (outline) {
-            // One screen pixel wide at any zoom: model units say nothing of a pen's width.
+            // One pixel at the displayed size, in model units (vector-effect's non-scaling
+            // strokes would say it better, but librsvg and older Inkscape ignore it).
             attributes.insert(attributes.end(), {{"fill", "none"},
                                                  {"stroke", color},
-                                                 {"stroke-width", "1"},
-                                                 {"vector-effect", "non-scaling-stroke"}});
+                                                 {"stroke-width", exactNumber(1.0 / scale)}});
         } else {
             attributes.insert(attributes.end(), {{"fill", color}, {"fill-rule", "evenodd"}});
         }

@@ -271,7 +271,9 @@ TEST_CASE("sectionSvg reads back to the same loops, layers and colours") {
         const SvgRead outline = readSvg(sectionSvg(d, true));
         REQUIRE(outline.layers.size() == d.layers.size());
         CHECK(outline.paths[0].at("fill") == "none");
-        CHECK(outline.paths[0].at("vector-effect") == "non-scaling-stroke");
+        // One pixel of the 1000 the longer side is shown at, in model units.
+        CHECK(std::strtod(outline.paths[0].at("stroke-width").c_str(), nullptr) ==
+              Approx(4.25 / 1000).epsilon(1e-12));
         CHECK(outline.layers[0].rgb == expectedRgb(d.layers[0].color));
         requireSameLoops(outline.layers[0].loops, d.layers[0].loops);
     }
