@@ -30,16 +30,17 @@ MODELS = {
 
 
 def hyperfine(command, runs, json_path):
-    """Median and standard deviation (s) of `runs` whole-process runs after one warm-up."""
+    """Median and standard deviation of the wall time, and the mean CPU time (user + system),
+    in seconds, of `runs` whole-process runs after one warm-up."""
     subprocess.run(["hyperfine", "-N", "-w", "1", "-r", str(runs), "--export-json", json_path,
                     "--style", "none", command], check=True, stdout=subprocess.DEVNULL)
     with open(json_path) as f:
         result = json.load(f)["results"][0]
-    return result["median"], result["stddev"] or 0.0
+    return result["median"], result["stddev"] or 0.0, result["user"] + result["system"]
 
 
 def timed_once(argv, timeout, log_path):
-    """One run under `timeout` with /usr/bin/time -v: (seconds, max RSS in MB) or None."""
+    """One run under `timeout` with /usr/bin/time -v: (wall s, CPU s, max RSS MB) or None."""
     command = ["/usr/bin/time", "-v", "timeout", str(timeout)] + argv
     with open(log_path, "w") as log:
         done = subprocess.run(command, stdout=log, stderr=subprocess.STDOUT)
@@ -48,8 +49,9 @@ def timed_once(argv, timeout, log_path):
         return None
     wall = [l for l in text.splitlines() if "Elapsed (wall clock)" in l][0].split(": ")[-1]
     seconds = sum(float(part) * 60 ** k for k, part in enumerate(reversed(wall.split(":"))))
-    rss = [l for l in text.splitlines() if "Maximum resident set size" in l][0].split(": ")[-1]
-    return seconds, int(rss) / 1024.0
+    field = lambda name: [l for l in text.splitlines() if name in l][0].split(": ")[-1]
+    cpu = float(field("User time (seconds)")) + float(field("System time (seconds)"))
+    return seconds, cpu, int(field("Maximum resident set size")) / 1024.0
 
 
 def kerf_has_slice(kerf):
@@ -77,7 +79,7 @@ def main():
     if not have_kerf:
         print(f"slice_bench: {args.kerf} has no 'slice' command yet: kerf rows skipped", file=sys.stderr)
 
-    rows = []  # (model, tool, setting, median s, sd s, area, relative error, note)
+    rows = []  # (model, tool, setting, median s, sd s, CPU s, area, relative error, note)
     for name in args.models.split(","):
         scad, kerf_model, plane, exact, _ = MODELS[name]
         fns = args.fn if name == "cup" else args.voids_fn
@@ -86,8 +88,8 @@ def main():
             dxf = os.path.join(args.out, f"{name}_openscad_fn{fn}.dxf")
             argv = [args.openscad, "-o", svg, "-D", f"$fn={fn}", scad]
             if name == "cup":
-                median, sd = hyperfine(" ".join(shlex.quote(a) for a in argv), args.runs,
-                                       os.path.join(args.out, f"{name}_fn{fn}.json"))
+                median, sd, cpu = hyperfine(" ".join(shlex.quote(a) for a in argv), args.runs,
+                                            os.path.join(args.out, f"{name}_fn{fn}.json"))
                 subprocess.run([args.openscad, "-o", dxf, "-D", f"$fn={fn}", scad], check=True,
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
                 dxf_area, _ = file_area(dxf)
@@ -95,13 +97,13 @@ def main():
             else:
                 once = timed_once(argv, args.voids_timeout, os.path.join(args.out, f"{name}_fn{fn}.log"))
                 if once is None:
-                    rows.append((name, "OpenSCAD", f"$fn={fn}", None, None, None, None,
+                    rows.append((name, "OpenSCAD", f"$fn={fn}", None, None, None, None, None,
                                  f"did not finish in {args.voids_timeout} s"))
                     continue
-                median, sd = once[0], 0.0
-                note = f"one run, max RSS {once[1]:.0f} MB"
+                median, sd, cpu = once[0], 0.0, once[1]
+                note = f"one run, max RSS {once[2]:.0f} MB"
             area, _ = file_area(svg)
-            rows.append((name, "OpenSCAD", f"$fn={fn}", median, sd, area, (area - exact) / exact, note))
+            rows.append((name, "OpenSCAD", f"$fn={fn}", median, sd, cpu, area, (area - exact) / exact, note))
             print(f"{name} OpenSCAD $fn={fn}: {median:.3f} s, area error {(area - exact) / exact:+.2e}",
                   file=sys.stderr)
         if not have_kerf:
@@ -110,30 +112,30 @@ def main():
             svg = os.path.join(args.out, f"{name}_kerf_{tolerance}.svg")
             argv = [args.kerf, "slice", kerf_model, "--plane", plane, "-o", svg,
                     "--tolerance", tolerance, "--stats"]
-            median, sd = hyperfine(" ".join(shlex.quote(a) for a in argv), args.runs,
-                                   os.path.join(args.out, f"{name}_kerf_{tolerance}.json"))
+            median, sd, cpu = hyperfine(" ".join(shlex.quote(a) for a in argv), args.runs,
+                                        os.path.join(args.out, f"{name}_kerf_{tolerance}.json"))
             with open(os.path.join(args.out, f"{name}_kerf_{tolerance}.stats"), "w") as log:
                 subprocess.run(argv, stdout=log, stderr=subprocess.STDOUT, check=True)
             area, _ = file_area(svg)
-            rows.append((name, "kerf", f"--tolerance {tolerance}", median, sd, area, (area - exact) / exact, ""))
+            rows.append((name, "kerf", f"--tolerance {tolerance}", median, sd, cpu, area, (area - exact) / exact, ""))
             print(f"{name} kerf {tolerance}: {median:.3f} s, area error {(area - exact) / exact:+.2e}",
                   file=sys.stderr)
 
-    print("| model | tool | setting | median s | sd s | area error | ÷ OpenSCAD $fn=64 time | "
+    print("| model | tool | setting | median s | sd s | CPU s | area error | ÷ OpenSCAD $fn=64 time | "
           "÷ OpenSCAD $fn=64 abs(error) | note |")
-    print("|---|---|---|---:|---:|---:|---:|---:|---|")
+    print("|---|---|---|---:|---:|---:|---:|---:|---:|---|")
     for name in args.models.split(","):
         reference = [r for r in rows if r[0] == name and r[2] == "$fn=64" and r[3] is not None]
         for r in [r for r in rows if r[0] == name]:
             if r[3] is None:
-                print(f"| {name} | {r[1]} | {r[2]} | — | — | — | — | — | {r[7]} |")
+                print(f"| {name} | {r[1]} | {r[2]} | — | — | — | — | — | — | {r[8]} |")
                 continue
             ratio_t = ratio_e = "—"
             if reference:
                 ratio_t = f"{r[3] / reference[0][3]:.3g}"
-                ratio_e = f"{abs(r[6]) / abs(reference[0][6]):.2g}" if reference[0][6] else "—"
-            print(f"| {name} | {r[1]} | {r[2]} | {r[3]:.4g} | {r[4]:.2g} | {r[6]:+.2e} | {ratio_t} | "
-                  f"{ratio_e} | {r[7]} |")
+                ratio_e = f"{abs(r[7]) / abs(reference[0][7]):.2g}" if reference[0][7] else "—"
+            print(f"| {name} | {r[1]} | {r[2]} | {r[3]:.4g} | {r[4]:.2g} | {r[5]:.4g} | {r[7]:+.2e} | "
+                  f"{ratio_t} | {ratio_e} | {r[8]} |")
     print()
     for name in args.models.split(","):
         if any(r[0] == name for r in rows):
