@@ -97,6 +97,17 @@ TEST_CASE("coverage of a square with a square hole") {
     const std::vector<SectionLoop> loops = {rectangle(0, 0, 10, 10, true),
                                             rectangle(h0, h0, h1, h1, false)};
     const std::vector<double> coverage = coverageGrid(loops, grid);
+    SECTION("the same at any scale: model and grid scaled by 1e-6 or 1e6") {
+        for (const double scale : {1e-6, 1e6}) {
+            std::vector<SectionLoop> scaled = loops;
+            for (SectionLoop& loop : scaled)
+                for (auto& p : loop.points) p = {p[0] * scale, p[1] * scale};
+            const SectionGrid g{grid.width, grid.height, grid.u0 * scale, grid.v1 * scale,
+                                grid.pixel * scale};
+            const std::vector<double> c = coverageGrid(scaled, g);
+            for (size_t k = 0; k < c.size(); ++k) CHECK(std::fabs(c[k] - coverage[k]) <= 1e-12);
+        }
+    }
     for (int j = 0; j < grid.height; ++j)
         for (int i = 0; i < grid.width; ++i) {
             const double u0 = grid.u0 + i, u1 = u0 + 1, v1 = grid.v1 - j, v0 = v1 - 1;
