@@ -80,7 +80,8 @@ void coverageRows(const std::vector<SectionLoop>& loops, const SectionGrid& grid
         throw std::invalid_argument("a raster with a negative size");
     if (!(grid.pixel > 0) || !std::isfinite(grid.pixel) || !std::isfinite(grid.u0) ||
         !std::isfinite(grid.v1))
-        throw std::invalid_argument("a raster whose pixel size or origin is not finite and positive");
+        throw std::invalid_argument(
+            "a raster whose pixel size or origin is not finite and positive");
     const int width = grid.width, height = grid.height;
 
     std::vector<Edge> edges;
@@ -90,8 +91,12 @@ void coverageRows(const std::vector<SectionLoop>& loops, const SectionGrid& grid
             const auto& a = loop.points[k];
             const auto& b = loop.points[(k + 1) % n];
             checkPoint(a);
-            Edge e{(a[0] - grid.u0) / grid.pixel, (grid.v1 - a[1]) / grid.pixel,
-                   (b[0] - grid.u0) / grid.pixel, (grid.v1 - b[1]) / grid.pixel, 0, 0};
+            Edge e{(a[0] - grid.u0) / grid.pixel,
+                   (grid.v1 - a[1]) / grid.pixel,
+                   (b[0] - grid.u0) / grid.pixel,
+                   (grid.v1 - b[1]) / grid.pixel,
+                   0,
+                   0};
             const double top = std::min(e.y0, e.y1), bottom = std::max(e.y0, e.y1);
             if (top == bottom || bottom <= 0 || top >= height) continue;  // adds nothing
             e.firstRow = top < 0 ? 0 : int(std::floor(top));

@@ -8,10 +8,10 @@
 /// plus one pass over each row; memory: one row.
 #pragma once
 
-#include "io/section_writers.h"
-
 #include <functional>
 #include <vector>
+
+#include "io/section_writers.h"
 
 namespace kerf {
 

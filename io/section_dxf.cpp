@@ -3,16 +3,16 @@
 /// (version, units, extent, next handle), TABLES with the CONTINUOUS line type and one LAYER
 /// per section layer (its colour as the nearest AutoCAD Colour Index and as a true colour),
 /// and ENTITIES, one closed LWPOLYLINE per loop, every number exact (io/number_text.h).
-#include "io/number_text.h"
-#include "io/section_writers.h"
-#include "io/srgb.h"
-
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <set>
+
+#include "io/number_text.h"
+#include "io/section_writers.h"
+#include "io/srgb.h"
 
 namespace kerf {
 namespace {
@@ -24,8 +24,8 @@ using Rgb = std::array<int, 3>;
 /// 15° apart, each at five values (1, 0.65, 0.5, 0.3, 0.15), even indices fully saturated
 /// and odd ones half; 250–255 are greys.
 Rgb aciColor(int index) {
-    static const Rgb named[10] = {{0, 0, 0},     {255, 0, 0},   {255, 255, 0}, {0, 255, 0},
-                                  {0, 255, 255}, {0, 0, 255},   {255, 0, 255}, {255, 255, 255},
+    static const Rgb named[10] = {{0, 0, 0},       {255, 0, 0},    {255, 255, 0}, {0, 255, 0},
+                                  {0, 255, 255},   {0, 0, 255},    {255, 0, 255}, {255, 255, 255},
                                   {128, 128, 128}, {192, 192, 192}};
     if (index < 10) return named[index];
     if (index >= 250) {
@@ -71,8 +71,8 @@ int nearestAci(const Rgb& rgb) {
 std::string uniqueLayerName(const std::string& name, std::set<std::string>& used) {
     std::string out;
     for (char c : name) {
-        const bool bad = (unsigned char)c < 32 || std::string("<>/\\\":;?*|=`").find(c) !=
-                                                      std::string::npos;
+        const bool bad =
+            (unsigned char)c < 32 || std::string("<>/\\\":;?*|=`").find(c) != std::string::npos;
         out += bad ? '_' : c;
     }
     if (out.empty()) out = "layer";

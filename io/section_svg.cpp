@@ -2,14 +2,14 @@
 /// @brief sectionSvg: a section as SVG paths in model units. The viewBox is the drawing's
 /// rectangle with v negated, and one group flips v back (scale(1,-1)), so every coordinate in
 /// the file is the model's own, written exactly (io/number_text.h).
+#include <algorithm>
+#include <cstdio>
+#include <set>
+
 #include "io/number_text.h"
 #include "io/section_writers.h"
 #include "io/srgb.h"
 #include "io/svg.h"
-
-#include <algorithm>
-#include <cstdio>
-#include <set>
 
 namespace kerf {
 namespace {
@@ -35,8 +35,7 @@ std::string uniqueId(const std::string& name, std::set<std::string>& used) {
                           (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.';
         id += keep ? c : '_';
     }
-    if (id.empty() || (id[0] >= '0' && id[0] <= '9') || id[0] == '-' || id[0] == '.')
-        id = "_" + id;
+    if (id.empty() || (id[0] >= '0' && id[0] <= '9') || id[0] == '-' || id[0] == '.') id = "_" + id;
     std::string candidate = id;
     for (int n = 2; used.count(candidate); ++n) candidate = id + "-" + std::to_string(n);
     used.insert(candidate);
@@ -93,9 +92,9 @@ std::string sectionSvg(const SectionDrawing& drawing, bool outline) {
         if (outline) {
             // One pixel at the displayed size, in model units (vector-effect's non-scaling
             // strokes would say it better, but librsvg and older Inkscape ignore it).
-            attributes.insert(attributes.end(), {{"fill", "none"},
-                                                 {"stroke", color},
-                                                 {"stroke-width", exactNumber(1.0 / scale)}});
+            attributes.insert(
+                attributes.end(),
+                {{"fill", "none"}, {"stroke", color}, {"stroke-width", exactNumber(1.0 / scale)}});
         } else {
             attributes.insert(attributes.end(), {{"fill", color}, {"fill-rule", "evenodd"}});
         }

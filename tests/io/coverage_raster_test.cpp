@@ -6,7 +6,6 @@
 #include "io/coverage_raster.h"
 
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 using namespace kerf;
@@ -69,7 +68,8 @@ TEST_CASE("coverage of a half-plane at an arbitrary angle is each pixel's closed
             if (fp <= 0) loop.points.push_back({double(p[0]), double(p[1])});
             if ((fp < 0) != (fq < 0) && fp != 0 && fq != 0) {
                 const LD t = fp / (fp - fq);
-                loop.points.push_back({double(p[0] + t * (q[0] - p[0])), double(p[1] + t * (q[1] - p[1]))});
+                loop.points.push_back(
+                    {double(p[0] + t * (q[0] - p[0])), double(p[1] + t * (q[1] - p[1]))});
             }
         }
         const std::vector<double> coverage = coverageGrid({loop}, grid);
@@ -77,12 +77,14 @@ TEST_CASE("coverage of a half-plane at an arbitrary angle is each pixel's closed
         int partial = 0;
         for (int j = 0; j < grid.height; ++j)
             for (int i = 0; i < grid.width; ++i) {
-                // Pixel (i, j) in unit coordinates: u = u0 + (i + x)·pixel, v = v1 − (j + 1 − y)·pixel.
+                // Pixel (i, j) in unit coordinates: u = u0 + (i + x)·pixel, v = v1 − (j + 1 −
+                // y)·pixel.
                 const LD ux = LD(grid.u0) + LD(i) * LD(grid.pixel);
                 const LD vy = LD(grid.v1) - LD(j + 1) * LD(grid.pixel);
                 const LD expected = unitSquareUnderLine(a * LD(grid.pixel), b * LD(grid.pixel),
                                                         c - a * ux - b * vy);
-                worst = std::max(worst, double(std::fabs(LD(coverage[size_t(j) * grid.width + i]) - expected)));
+                worst = std::max(
+                    worst, double(std::fabs(LD(coverage[size_t(j) * grid.width + i]) - expected)));
                 partial += expected > 0 && expected < 1;
             }
         INFO("angle " << angle);
@@ -122,7 +124,8 @@ TEST_CASE("coverage of a square with a square hole") {
         std::vector<SectionLoop> reversed = loops;
         for (SectionLoop& loop : reversed) std::reverse(loop.points.begin(), loop.points.end());
         const std::vector<double> negated = coverageGrid(reversed, grid);
-        for (size_t k = 0; k < coverage.size(); ++k) CHECK(negated[k] == Approx(-coverage[k]).margin(1e-15));
+        for (size_t k = 0; k < coverage.size(); ++k)
+            CHECK(negated[k] == Approx(-coverage[k]).margin(1e-15));
     }
 }
 
@@ -135,7 +138,8 @@ TEST_CASE("coverage of a tiny triangle inside one pixel is its area fraction") {
     for (int j = 0; j < grid.height; ++j)
         for (int i = 0; i < grid.width; ++i) {
             const double expected = (i == 2 && j == 1) ? fraction : 0.0;
-            CHECK(coverage[size_t(j) * grid.width + i] == Approx(expected).epsilon(1e-9).margin(1e-18));
+            CHECK(coverage[size_t(j) * grid.width + i] ==
+                  Approx(expected).epsilon(1e-9).margin(1e-18));
         }
 }
 

@@ -3,14 +3,14 @@
 /// the SVG, a group-code reader for the DXF) to the same loops (bit for bit: the numbers are
 /// written exactly), layers, colours and orientations.
 #include "io/section_writers.h"
-#include "io/srgb.h"
 
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <cstdlib>
 #include <map>
 #include <sstream>
+
+#include "io/srgb.h"
 
 using namespace kerf;
 
@@ -123,12 +123,14 @@ SvgRead readSvg(const std::string& svg) {
         if (tag.name == "g" && tag.attributes.count("id")) out.layers.emplace_back();
         if (tag.name == "title") out.layers.back().name = tag.textAfter;
         if (tag.name == "path") {
-            const std::string color = tag.attributes.count("fill") && tag.attributes.at("fill") != "none"
-                                          ? tag.attributes.at("fill")
-                                          : tag.attributes.at("stroke");
+            const std::string color =
+                tag.attributes.count("fill") && tag.attributes.at("fill") != "none"
+                    ? tag.attributes.at("fill")
+                    : tag.attributes.at("stroke");
             REQUIRE(color.size() == 7);
             for (int c = 0; c < 3; ++c)
-                out.layers.back().rgb[c] = int(std::strtol(color.substr(1 + 2 * c, 2).c_str(), nullptr, 16));
+                out.layers.back().rgb[c] =
+                    int(std::strtol(color.substr(1 + 2 * c, 2).c_str(), nullptr, 16));
             out.layers.back().loops = readPath(tag.attributes.at("d"));
             out.paths.push_back(tag.attributes);
         }
@@ -151,7 +153,8 @@ DxfRead readDxf(const std::string& dxf) {
     std::istringstream in(dxf);
     std::vector<std::pair<int, std::string>> pairs;
     std::string code, value;
-    while (std::getline(in, code) && std::getline(in, value)) pairs.push_back({std::stoi(code), value});
+    while (std::getline(in, code) && std::getline(in, value))
+        pairs.push_back({std::stoi(code), value});
     REQUIRE(!pairs.empty());
     CHECK(pairs.back() == std::pair<int, std::string>{0, "EOF"});
     DxfRead out;
@@ -230,7 +233,8 @@ SectionDrawing sampleDrawing() {
     return d;
 }
 
-void requireSameLoops(const std::vector<SectionLoop>& read, const std::vector<SectionLoop>& written) {
+void requireSameLoops(const std::vector<SectionLoop>& read,
+                      const std::vector<SectionLoop>& written) {
     REQUIRE(read.size() == written.size());
     for (size_t l = 0; l < read.size(); ++l) {
         REQUIRE(read[l].points.size() == written[l].points.size());
@@ -264,7 +268,8 @@ TEST_CASE("sectionSvg reads back to the same loops, layers and colours") {
     SECTION("ids are valid and unique whatever the names") {
         std::vector<std::string> ids;
         for (const Tag& tag : readTags(sectionSvg(d, false)))
-            if (tag.name == "g" && tag.attributes.count("id")) ids.push_back(tag.attributes.at("id"));
+            if (tag.name == "g" && tag.attributes.count("id"))
+                ids.push_back(tag.attributes.at("id"));
         CHECK(ids == std::vector<std::string>{"clay", "a_b_____c__d", "empty", "clay-2"});
     }
     SECTION("outline: strokes only, the same geometry") {
