@@ -4,6 +4,7 @@
 #include "app/cli_bench.h"
 #include "app/cli_check.h"
 #include "app/cli_render.h"
+#include "app/cli_slice.h"
 #include "app/exit_codes.h"
 #include "io/image.h"
 
@@ -33,6 +34,8 @@ int run(int argc, char** argv) {
     CLI::App* renderCmd = addRenderCommand(cli, renderLine);
     CLI::App* checkCmd = addCheckCommand(cli, checkLine);
     CLI::App* benchCmd = addBenchCommand(cli, benchLine);
+    SliceCommandLine sliceLine;
+    CLI::App* sliceCmd = addSliceCommand(cli, sliceLine);
 
     try {
         cli.parse(argc, argv);
@@ -48,6 +51,7 @@ int run(int argc, char** argv) {
         if (renderCmd->parsed()) return runRender(renderLine);
         if (checkCmd->parsed()) return runCheck(checkLine);
         if (benchCmd->parsed()) return runBench(benchLine);
+        if (sliceCmd->parsed()) return runSlice(sliceLine);
     } catch (const UsageError& e) {
         std::cerr << "kerf: error: " << e.what() << "\n";
         return kExitUsage;

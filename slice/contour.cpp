@@ -1,0 +1,390 @@
+// The quadtree contouring of one plane section (the method is in slice/contour.h).
+#include "slice/contour.h"
+
+#include "slice/section_tape.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+
+namespace kerf {
+
+void ContourStats::add(const ContourStats& o) {
+    cells += o.cells;
+    boundaryLeaves += o.boundaryLeaves;
+    simpleLeaves += o.simpleLeaves;
+    pointEvals += o.pointEvals;
+    repairedLoops += o.repairedLoops;
+    depth = std::max(depth, o.depth);
+}
+
+double loopArea(const SectionLoop& loop) {
+    const auto& p = loop.points;
+    double a = 0.0;
+    for (size_t i = 0, n = p.size(); i < n; ++i) {
+        const auto& s = p[i];
+        const auto& t = p[(i + 1) % n];
+        a += s[0] * t[1] - t[0] * s[1];
+    }
+    return 0.5 * a;
+}
+
+double loopLength(const SectionLoop& loop) {
+    const auto& p = loop.points;
+    double l = 0.0;
+    for (size_t i = 0, n = p.size(); i < n; ++i)
+        l += std::hypot(p[(i + 1) % n][0] - p[i][0], p[(i + 1) % n][1] - p[i][1]);
+    return l;
+}
+
+namespace {
+
+using Pt = std::array<double, 2>;
+
+/// A lattice point of the finest level, in units of the finest cell.
+struct Key {
+    int64_t x, y;
+    bool operator==(const Key& o) const { return x == o.x && y == o.y; }
+};
+struct KeyHash {
+    size_t operator()(const Key& k) const {
+        uint64_t h = static_cast<uint64_t>(k.x) * 0x9E3779B97F4A7C15ull;
+        h ^= static_cast<uint64_t>(k.y) + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2);
+        return static_cast<size_t>(h);
+    }
+};
+/// An edge piece between two neighbouring lattice points, first the smaller.
+struct EdgeKey {
+    Key a, b;
+    bool operator==(const EdgeKey& o) const { return a == o.a && b == o.b; }
+};
+struct EdgeKeyHash {
+    size_t operator()(const EdgeKey& k) const {
+        return KeyHash()(k.a) * 31 + KeyHash()(k.b);
+    }
+};
+
+enum class State : uint8_t { Empty, Full, Boundary };
+/// How a boundary leaf's curve is followed: lines of constant v (f monotone in u), of
+/// constant u, either (monotone in both), or not at all (a finest cell).
+enum class Simple : uint8_t { None, AlongU, AlongV, Both };
+
+struct Cell {
+    int64_t x, y;
+    int level;
+    int firstChild = -1;  // four consecutive cells: (x, y), (x+h, y), (x, y+h), (x+h, y+h)
+    State state = State::Boundary;
+    Simple simple = Simple::None;
+    std::shared_ptr<const Tape> tape;  // boundary leaves only
+};
+
+struct Chain {
+    int from, to;            // crossing vertices
+    std::vector<Pt> inner;   // vertices between them
+};
+
+class Contourer {
+public:
+    Contourer(const Tape& tape, double w, const ContourOptions& o, ContourStats& stats)
+        : mW(w), mTol(o.tolerance), mStats(stats) {
+        // The root square holds the rectangle with a margin of odd (non-dyadic) size, so the
+        // lattice lines seldom fall exactly on a model's round coordinates: a face lying on a
+        // cell edge makes f ≡ 0 there, which interval rounding cannot call inside, and the
+        // cells along it would all be split to the finest level.
+        const double extent = std::max(o.rect.maxU - o.rect.minU, o.rect.maxV - o.rect.minV);
+        const double side = extent * 1.0731;
+        mU0 = o.rect.minU - extent * 0.0317;
+        mV0 = o.rect.minV - extent * 0.0291;
+        // Finest cells of at most half the tolerance: a straight segment across one is within
+        // the tolerance of whatever curve crosses it.
+        const double ratio = side / (0.5 * mTol);
+        mDepth = ratio > 1.0 ? std::min(44, static_cast<int>(std::ceil(std::log2(ratio)))) : 1;
+        mUnit = side / std::ldexp(1.0, mDepth);
+        stats.depth = mDepth;
+        mCells.push_back(Cell{0, 0, 0, -1, State::Boundary, Simple::None, nullptr});
+        build(0, std::shared_ptr<const Tape>(std::shared_ptr<const Tape>(), &tape));
+    }
+
+    std::vector<SectionLoop> run();
+
+private:
+    int64_t sizeOf(int level) const { return int64_t(1) << (mDepth - level); }
+    double uOf(int64_t x) const { return mU0 + static_cast<double>(x) * mUnit; }
+    double vOf(int64_t y) const { return mV0 + static_cast<double>(y) * mUnit; }
+    double evalAt(const Tape& t, double u, double v) {
+        ++mStats.pointEvals;
+        return t.eval(Vec3(u, v, mW));
+    }
+
+    void build(int index, const std::shared_ptr<const Tape>& parentTape);
+    Simple provedSimple(const Tape& tape, const Interval& U, const Interval& V);
+    void edgeSplits(int node, int side, const Cell& c, std::vector<int64_t>& out) const;
+    bool inside(const Key& k, const Tape& t);
+    int crossing(const Key& a, const Key& b, bool aInside, const Tape& t);
+    Pt rootOnSegment(const Tape& t, Pt in, Pt out);
+    void contourCell(const Cell& c);
+    void refine(const Cell& c, const Pt& p, const Pt& q, int depth, std::vector<Pt>& out);
+
+    double mW, mTol, mU0 = 0, mV0 = 0, mUnit = 1;
+    int mDepth = 1;
+    ContourStats& mStats;
+    std::vector<Cell> mCells;
+    std::vector<Choice> mChoices;
+    std::vector<Interval> mScratch;
+    std::unordered_map<Key, bool, KeyHash> mSign;
+    std::unordered_map<EdgeKey, int, EdgeKeyHash> mCrossing;
+    std::vector<Pt> mVertices;
+    std::vector<Chain> mChains;
+};
+
+Simple Contourer::provedSimple(const Tape& tape, const Interval& U, const Interval& V) {
+    const IntervalSlopes s = evalIntervalSlopes(tape, U, V, mW, mScratch);
+    if (!s.ok) return Simple::None;
+    const bool monoU = s.du.lo > 0.0 || s.du.hi < 0.0;
+    const bool monoV = s.dv.lo > 0.0 || s.dv.hi < 0.0;
+    if (monoU && monoV) return Simple::Both;
+    // Monotone in one direction: the edge where f is least must be wholly inside and the
+    // opposite one wholly outside; then every line along that direction crosses once.
+    auto edgesSplit = [&](bool alongU, bool increasing) {
+        const Interval& across = alongU ? U : V;
+        const double lowEnd = increasing ? across.lo : across.hi;
+        const double highEnd = increasing ? across.hi : across.lo;
+        const Interval a = alongU ? tape.evalInterval(lowEnd, V, mW) : tape.evalInterval(U, lowEnd, mW);
+        const Interval b = alongU ? tape.evalInterval(highEnd, V, mW) : tape.evalInterval(U, highEnd, mW);
+        return a.classify() == Classification::Filled && b.classify() == Classification::Empty;
+    };
+    if (monoU && edgesSplit(true, s.du.lo > 0.0)) return Simple::AlongU;
+    if (monoV && edgesSplit(false, s.dv.lo > 0.0)) return Simple::AlongV;
+    return Simple::None;
+}
+
+void Contourer::build(int index, const std::shared_ptr<const Tape>& parentTape) {
+    ++mStats.cells;
+    const Cell c = mCells[index];
+    const int64_t h = sizeOf(c.level);
+    const Interval U(uOf(c.x), uOf(c.x + h)), V(vOf(c.y), vOf(c.y + h));
+    const Interval f = parentTape->evalInterval(U, V, Interval(mW), mChoices);
+    const Classification k = f.classify();
+    if (k != Classification::Ambiguous) {
+        mCells[index].state = k == Classification::Empty ? State::Empty : State::Full;
+        return;
+    }
+    // Only a decided min/max makes a shorter tape worth building.
+    bool decided = false;
+    for (const Choice ch : mChoices) decided = decided || ch != Choice::Both;
+    std::shared_ptr<const Tape> tape = decided ? parentTape->simplified(mChoices) : parentTape;
+    const Simple simple = provedSimple(*tape, U, V);
+    if (simple != Simple::None || c.level == mDepth) {
+        mCells[index].simple = simple;
+        mCells[index].tape = tape;
+        return;
+    }
+    const int first = static_cast<int>(mCells.size());
+    mCells[index].firstChild = first;
+    const int64_t half = h / 2;
+    for (int i = 0; i < 4; ++i)
+        mCells.push_back(Cell{c.x + (i & 1) * half, c.y + (i >> 1) * half, c.level + 1, -1,
+                              State::Boundary, Simple::None, nullptr});
+    for (int i = 0; i < 4; ++i) build(first + i, tape);
+}
+
+/// Lattice coordinates strictly inside one side of leaf c where leaves across that side
+/// begin or end (side 0 bottom, 1 right, 2 top, 3 left), in no particular order.
+void Contourer::edgeSplits(int node, int side, const Cell& c, std::vector<int64_t>& out) const {
+    const Cell& n = mCells[node];
+    const int64_t h = sizeOf(n.level), ch = sizeOf(c.level);
+    // The row or column just across the side, and the span along it.
+    const bool horizontal = side == 0 || side == 2;
+    const int64_t across = side == 0 ? c.y - 1 : side == 1 ? c.x + ch : side == 2 ? c.y + ch : c.x - 1;
+    const int64_t lo = horizontal ? c.x : c.y;
+    const int64_t nAcross = horizontal ? n.y : n.x;
+    const int64_t nAlong = horizontal ? n.x : n.y;
+    if (across < nAcross || across >= nAcross + h) return;
+    if (nAlong + h <= lo || nAlong >= lo + ch) return;
+    if (n.firstChild < 0) {
+        if (nAlong > lo) out.push_back(nAlong);
+        if (nAlong + h < lo + ch) out.push_back(nAlong + h);
+        return;
+    }
+    for (int i = 0; i < 4; ++i) edgeSplits(n.firstChild + i, side, c, out);
+}
+
+bool Contourer::inside(const Key& k, const Tape& t) {
+    auto it = mSign.find(k);
+    if (it != mSign.end()) return it->second;
+    // Any leaf's simplified tape gives the same doubles at a point of its closed cell.
+    const bool in = evalAt(t, uOf(k.x), vOf(k.y)) <= 0.0;
+    mSign.emplace(k, in);
+    return in;
+}
+
+Pt Contourer::rootOnSegment(const Tape& t, Pt in, Pt out) {
+    // Illinois regula falsi on a bracket [in (f ≤ 0), out (f > 0)].
+    double fin = evalAt(t, in[0], in[1]);
+    double fout = evalAt(t, out[0], out[1]);
+    if (!(fin <= 0.0) || !(fout > 0.0)) return {0.5 * (in[0] + out[0]), 0.5 * (in[1] + out[1])};
+    int side = 0;
+    for (int iter = 0; iter < 200; ++iter) {
+        const double len = std::hypot(out[0] - in[0], out[1] - in[1]);
+        if (len <= 0.25 * mTol) break;
+        double s = fin / (fin - fout);
+        if (!(s > 0.0 && s < 1.0)) s = 0.5;
+        // Keep the step inside the bracket by a margin so it always shrinks.
+        s = std::min(std::max(s, 1e-3), 1.0 - 1e-3);
+        const Pt m{in[0] + s * (out[0] - in[0]), in[1] + s * (out[1] - in[1])};
+        const double fm = evalAt(t, m[0], m[1]);
+        if (fm <= 0.0) {
+            in = m;
+            fin = fm;
+            if (side == -1) fout *= 0.5;
+            side = -1;
+            if (fm == 0.0) return m;
+        } else {
+            out = m;
+            fout = fm;
+            if (side == 1) fin *= 0.5;
+            side = 1;
+        }
+    }
+    const double s = (fin < 0.0 && fout > 0.0) ? fin / (fin - fout) : 0.5;
+    return {in[0] + s * (out[0] - in[0]), in[1] + s * (out[1] - in[1])};
+}
+
+int Contourer::crossing(const Key& a, const Key& b, bool aInside, const Tape& t) {
+    const bool aFirst = a.x < b.x || (a.x == b.x && a.y < b.y);
+    const EdgeKey key = aFirst ? EdgeKey{a, b} : EdgeKey{b, a};
+    auto it = mCrossing.find(key);
+    if (it != mCrossing.end()) return it->second;
+    const Key& in = aInside ? a : b;
+    const Key& out = aInside ? b : a;
+    const Pt p = rootOnSegment(t, {uOf(in.x), vOf(in.y)}, {uOf(out.x), vOf(out.y)});
+    const int id = static_cast<int>(mVertices.size());
+    mVertices.push_back(p);
+    mCrossing.emplace(key, id);
+    return id;
+}
+
+void Contourer::refine(const Cell& c, const Pt& p, const Pt& q, int depth, std::vector<Pt>& out) {
+    if (depth > 60) return;
+    const Tape& t = *c.tape;
+    // Lines of constant v (a root along u) or of constant u.
+    bool lineOfV;
+    if (c.simple == Simple::AlongU) lineOfV = true;
+    else if (c.simple == Simple::AlongV) lineOfV = false;
+    else lineOfV = std::fabs(q[1] - p[1]) > std::fabs(q[0] - p[0]);
+    const int param = lineOfV ? 1 : 0;
+    if (std::fabs(q[param] - p[param]) <= mTol) return;
+    const double m = 0.5 * (p[param] + q[param]);
+    const int64_t h = sizeOf(c.level);
+    Pt a, b;  // the line across the cell
+    if (lineOfV) {
+        a = {uOf(c.x), m};
+        b = {uOf(c.x + h), m};
+    } else {
+        a = {m, vOf(c.y)};
+        b = {m, vOf(c.y + h)};
+    }
+    const double fa = evalAt(t, a[0], a[1]), fb = evalAt(t, b[0], b[1]);
+    Pt mid;
+    if (fa <= 0.0 && fb > 0.0) mid = rootOnSegment(t, a, b);
+    else if (fb <= 0.0 && fa > 0.0) mid = rootOnSegment(t, b, a);
+    else return;  // no sign change (rounding at the very end of the curve): keep the chord
+    // Distance of the curve's point from the chord p–q.
+    const double dx = q[0] - p[0], dy = q[1] - p[1];
+    const double len = std::hypot(dx, dy);
+    const double dev = len > 0.0 ? std::fabs(dx * (mid[1] - p[1]) - dy * (mid[0] - p[0])) / len
+                                 : std::hypot(mid[0] - p[0], mid[1] - p[1]);
+    if (dev <= mTol) return;
+    refine(c, p, mid, depth + 1, out);
+    out.push_back(mid);
+    refine(c, mid, q, depth + 1, out);
+}
+
+void Contourer::contourCell(const Cell& c) {
+    const Tape& t = *c.tape;
+    const int64_t h = sizeOf(c.level);
+    // The cell's boundary, counter-clockwise, through every corner of smaller neighbours.
+    std::vector<Key> ring;
+    std::vector<int64_t> splits;
+    const Key corner[4] = {{c.x, c.y}, {c.x + h, c.y}, {c.x + h, c.y + h}, {c.x, c.y + h}};
+    for (int side = 0; side < 4; ++side) {
+        ring.push_back(corner[side]);
+        splits.clear();
+        if (h > 1) edgeSplits(0, side, c, splits);
+        std::sort(splits.begin(), splits.end());
+        splits.erase(std::unique(splits.begin(), splits.end()), splits.end());
+        if (side >= 2) std::reverse(splits.begin(), splits.end());
+        for (const int64_t s : splits)
+            ring.push_back(side == 0 ? Key{s, c.y} : side == 1 ? Key{c.x + h, s}
+                           : side == 2 ? Key{s, c.y + h} : Key{c.x, s});
+    }
+    const size_t n = ring.size();
+    std::vector<char> in(n);
+    for (size_t i = 0; i < n; ++i) in[i] = inside(ring[i], t);
+    // Crossings in ring order; they alternate between leaving (in → out) and entering.
+    struct X { int vertex; bool leaving; };
+    std::vector<X> xs;
+    for (size_t i = 0; i < n; ++i) {
+        const size_t j = (i + 1) % n;
+        if (in[i] != in[j]) xs.push_back({crossing(ring[i], ring[j], in[i], t), bool(in[i])});
+    }
+    if (xs.empty()) return;
+    const size_t m = xs.size();
+    // A segment runs from a leaving crossing to an entering one, inside on its left. With
+    // more than two, the centre's sign says whether the inside joins across the cell (pair
+    // with the next entering crossing) or not (the previous one).
+    bool joinNext = true;
+    if (m > 2) joinNext = evalAt(t, uOf(c.x) + 0.5 * h * mUnit, vOf(c.y) + 0.5 * h * mUnit) <= 0.0;
+    for (size_t i = 0; i < m; ++i) {
+        if (!xs[i].leaving) continue;
+        const X& to = xs[joinNext ? (i + 1) % m : (i + m - 1) % m];
+        Chain chain{xs[i].vertex, to.vertex, {}};
+        if (c.simple != Simple::None && m == 2)
+            refine(c, mVertices[chain.from], mVertices[chain.to], 0, chain.inner);
+        mChains.push_back(std::move(chain));
+    }
+}
+
+std::vector<SectionLoop> Contourer::run() {
+    for (const Cell& c : mCells) {
+        if (c.firstChild >= 0 || c.state != State::Boundary) continue;
+        ++mStats.boundaryLeaves;
+        if (c.simple != Simple::None) ++mStats.simpleLeaves;
+        contourCell(c);
+    }
+    // Link the chains: each crossing ends one chain and starts the next.
+    std::vector<int> startsAt(mVertices.size(), -1);
+    for (size_t i = 0; i < mChains.size(); ++i) startsAt[mChains[i].from] = static_cast<int>(i);
+    std::vector<char> used(mChains.size(), 0);
+    std::vector<SectionLoop> loops;
+    for (size_t first = 0; first < mChains.size(); ++first) {
+        if (used[first]) continue;
+        SectionLoop loop;
+        int at = static_cast<int>(first);
+        bool closed = false;
+        while (at >= 0 && !used[at]) {
+            used[at] = 1;
+            const Chain& ch = mChains[at];
+            loop.points.push_back(mVertices[ch.from]);
+            loop.points.insert(loop.points.end(), ch.inner.begin(), ch.inner.end());
+            at = startsAt[ch.to];
+            if (at == static_cast<int>(first)) closed = true;
+        }
+        if (!closed) ++mStats.repairedLoops;  // closed by its last segment back to the start
+        if (loop.points.size() >= 3) loops.push_back(std::move(loop));
+    }
+    return loops;
+}
+
+}  // namespace
+
+std::vector<SectionLoop> contourSection(const Tape& tape, double w, const ContourOptions& options,
+                                        ContourStats& stats) {
+    if (options.rect.empty()) return {};
+    Contourer c(tape, w, options, stats);
+    return c.run();
+}
+
+}  // namespace kerf
