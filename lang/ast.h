@@ -109,15 +109,17 @@ struct Property {
 };
 
 /// A modifier after a solid: `translate v`, `rotate v`, `scale s|v`, `matrix [12 numbers]`,
-/// `material NAME`.
+/// `material NAME`, `displace PATTERN by DEPTH`.
 struct Modifier {
     /// Move and Spin: motion over scene time (csg/motion.h), `move <v>`, `spin <degrees>`.
-    enum class Kind : uint8_t { Translate, Rotate, Scale, Matrix, Material, Move, Spin };
+    /// Displace: the solid's surface moved by a pattern (args[0] is the depth).
+    enum class Kind : uint8_t { Translate, Rotate, Scale, Matrix, Material, Move, Spin, Displace };
     Kind kind = Kind::Translate;
     SourcePos loc;  ///< of the keyword
     ExprList args;  ///< one, or twelve for matrix
     Name material;
     SourcePos materialLoc;
+    SolidPtr pattern = nullptr;  ///< Displace's pattern, read as a pattern is in a material
 };
 
 /// A solid as written. Trivially copyable like Expr: its lists are in the arena.

@@ -168,6 +168,8 @@ private:
     std::optional<Bounds3> boxBounds(const Solid& s, const char* what);
     NodePtr applyModifiers(NodePtr node, const Solid& s);
     std::optional<Affine> modifierTransform(const Modifier& m);
+    /// lower_displace.cpp: `node` displaced by m's pattern (null with an error when it cannot be).
+    NodePtr displaced(const NodePtr& node, const Modifier& m);
     /// A move's or spin's vector, checked.
     std::optional<Vec3> motionVector(const Modifier& m);
     /// False, with an error at `m`, when the transforms folded up to `m` are unusable.

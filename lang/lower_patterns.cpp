@@ -72,6 +72,11 @@ std::shared_ptr<const Pattern> Lowering::lowerPattern(const Solid& s) {
             ok = false;
             continue;
         }
+        if (m.kind == Modifier::Kind::Move || m.kind == Modifier::Kind::Spin || m.kind == Modifier::Kind::Displace) {
+            error(m.loc, "a pattern takes only translate, rotate, scale and matrix");
+            ok = false;
+            continue;
+        }
         const auto t = modifierTransform(m);
         if (!t) {
             ok = false;

@@ -406,6 +406,19 @@ ArenaList<Modifier> Parser::parseModifiers() {
             m.kind = Modifier::Kind::Matrix;
             next();
             parseMatrix(m);
+        } else if (word == "displace") {
+            // `displace KIND { … } transforms by DEPTH`
+            m.kind = Modifier::Kind::Displace;
+            next();
+            if (peek().kind != TokenKind::Identifier || peek(1).kind != TokenKind::LBrace)
+                fail(peek().loc, "expected a pattern after 'displace' (displace noise { … } by 0.1), found " +
+                                     describe(peek()));
+            m.pattern = store(parsePattern());
+            if (!checkWord("by"))
+                fail(peek().loc, "expected 'by DEPTH' after the displacement's pattern, found " + describe(peek()));
+            next();
+            const Expr arg = parseExpr();
+            m.args = list(&arg, 1);
         } else if (word == "material" && peek(1).kind != TokenKind::Identifier) {
             fail(peek(1).loc, "expected a material name after 'material', found " + describe(peek(1)));
         } else if (word == "material" && peek(2).kind != TokenKind::LBrace) {

@@ -2,29 +2,11 @@
 /// @brief Solid textures and gradient noise.
 #include "render/pattern_eval.h"
 
-#include "render/sampler.h"
-
 #include <algorithm>
 #include <cmath>
 
 namespace kerf {
 namespace {
-
-/// 6t⁵ − 15t⁴ + 10t³: zero first and second derivatives at 0 and 1.
-double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
-
-/// The 12 directions to the edges' midpoints of a cube (Perlin 2002).
-constexpr double kGradients[12][3] = {{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0},
-                                      {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
-                                      {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}};
-
-double cornerValue(int64_t i, int64_t j, int64_t k, uint64_t seed, double x, double y, double z) {
-    const uint64_t h = mixBits(mixBits(mixBits(seed ^ uint64_t(i)) ^ uint64_t(j)) ^ uint64_t(k));
-    const double* g = kGradients[h % 12];
-    return g[0] * x + g[1] * y + g[2] * z;
-}
-
-double lerp(double a, double b, double t) { return a + t * (b - a); }
 
 /// The largest absolute row sum of the map's linear part: how much it can stretch a length.
 double stretch(const Affine& a) {
@@ -48,24 +30,7 @@ double squareWaveIntegral(double x) {
     return 1.0 - std::fabs(m - 1.0);
 }
 
-
-
 }  // namespace
-
-double gradientNoise(const Vec3& p, uint64_t seed) {
-    const double fx = std::floor(p.x), fy = std::floor(p.y), fz = std::floor(p.z);
-    const int64_t i = int64_t(fx), j = int64_t(fy), k = int64_t(fz);
-    const double x = p.x - fx, y = p.y - fy, z = p.z - fz;
-    const double u = fade(x), v = fade(y), w = fade(z);
-    double c[2][2][2];
-    for (int a = 0; a < 2; ++a)
-        for (int b = 0; b < 2; ++b)
-            for (int d = 0; d < 2; ++d)
-                c[a][b][d] = cornerValue(i + a, j + b, k + d, seed, x - a, y - b, z - d);
-    const double v0 = lerp(lerp(c[0][0][0], c[1][0][0], u), lerp(c[0][1][0], c[1][1][0], u), v);
-    const double v1 = lerp(lerp(c[0][0][1], c[1][0][1], u), lerp(c[0][1][1], c[1][1][1], u), v);
-    return std::clamp(lerp(v0, v1, w), -1.0, 1.0);
-}
 
 double filteredSquareWave(double x, double w, double slack) {
     if (!(w > kFilterFloor)) return (cell(x, slack) & 1) == 0 ? 1.0 : -1.0;

@@ -3,14 +3,11 @@
 /// gradient noise they use.
 #pragma once
 
+#include "csg/noise.h"
 #include "scene/pattern.h"
 #include "scene/scene.h"
 
 namespace kerf {
-
-/// Gradient noise (Perlin's improved noise, with its gradients chosen by a hash of the
-/// lattice point and the seed): C² smooth, 0 at every integer point, within [−1, 1].
-double gradientNoise(const Vec3& p, uint64_t seed);
 
 /// The patch of surface a sample stands for: the parallelogram p + a·du + b·dv, a and b in
 /// [−½, ½] (world vectors in the tangent plane; zero vectors for a point).
