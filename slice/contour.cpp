@@ -123,7 +123,11 @@ private:
     void edgeSplits(int node, int side, const Cell& c, std::vector<int64_t>& out) const;
     bool inside(const Key& k, const Tape& t);
     int crossing(const Key& a, const Key& b, bool aInside, const Tape& t);
-    Pt rootOnSegment(const Tape& t, Pt in, Pt out);
+    /// A point within the tolerance of a root of f on the segment from `in` (f = fin ≤ 0) to
+    /// `out` (f = fout > 0), starting from the fraction `guess` (or the secant's, if outside
+    /// (0, 1)).
+    Pt rootOnSegment(const Tape& t, const Pt& in, const Pt& out, double fin, double fout,
+                     double guess = -1.0);
     void contourCell(const Cell& c);
     void refine(const Cell& c, const Pt& p, const Pt& q, int depth, std::vector<Pt>& out);
 
@@ -220,36 +224,56 @@ bool Contourer::inside(const Key& k, const Tape& t) {
     return in;
 }
 
-Pt Contourer::rootOnSegment(const Tape& t, Pt in, Pt out) {
-    // Illinois regula falsi on a bracket [in (f ≤ 0), out (f > 0)].
-    double fin = evalAt(t, in[0], in[1]);
-    double fout = evalAt(t, out[0], out[1]);
-    if (!(fin <= 0.0) || !(fout > 0.0)) return {0.5 * (in[0] + out[0]), 0.5 * (in[1] + out[1])};
-    int side = 0;
-    for (int iter = 0; iter < 200; ++iter) {
-        const double len = std::hypot(out[0] - in[0], out[1] - in[1]);
-        if (len <= 0.25 * mTol) break;
-        double s = fin / (fin - fout);
-        if (!(s > 0.0 && s < 1.0)) s = 0.5;
-        // Keep the step inside the bracket by a margin so it always shrinks.
-        s = std::min(std::max(s, 1e-3), 1.0 - 1e-3);
-        const Pt m{in[0] + s * (out[0] - in[0]), in[1] + s * (out[1] - in[1])};
-        const double fm = evalAt(t, m[0], m[1]);
-        if (fm <= 0.0) {
-            in = m;
-            fin = fm;
-            if (side == -1) fout *= 0.5;
-            side = -1;
-            if (fm == 0.0) return m;
+Pt Contourer::rootOnSegment(const Tape& t, const Pt& in, const Pt& out, double fin, double fout,
+                            double guess) {
+    // The secant method on s ∈ [0, 1] along in → out from the guess and a point a tolerance
+    // away, kept inside the bracket [lo, hi] (f(lo) ≤ 0 < f(hi)): a step that would leave it
+    // is replaced by Illinois regula falsi on the bracket. Ends when a step is below a
+    // sixteenth of the tolerance (superlinear convergence puts the root far closer) or the
+    // bracket is within a quarter of it.
+    const double du = out[0] - in[0], dv = out[1] - in[1];
+    const double len = std::hypot(du, dv);
+    auto at = [&](double s) { return Pt{in[0] + s * du, in[1] + s * dv}; };
+    if (!(fin <= 0.0) || !(fout > 0.0) || !(len > 0.0)) return at(0.5);
+    double lo = 0.0, hi = 1.0, flo = fin, fhi = fout;
+    const double step = mTol / len;
+    double s = guess > 0.0 && guess < 1.0 ? guess : fin / (fin - fout);
+    double sPrev = -1.0, fPrev = 0.0;
+    int stale = 0;  // Illinois: halve the end that stays put twice in a row
+    for (int iter = 0; iter < 100; ++iter) {
+        if ((hi - lo) * len <= 0.25 * mTol) break;
+        const Pt p = at(s);
+        const double f = evalAt(t, p[0], p[1]);
+        if (f == 0.0) return p;
+        if (f < 0.0) {
+            lo = s;
+            flo = f;
+            stale = stale <= 0 ? stale - 1 : -1;
+        } else if (f > 0.0) {
+            hi = s;
+            fhi = f;
+            stale = stale >= 0 ? stale + 1 : 1;
         } else {
-            out = m;
-            fout = fm;
-            if (side == 1) fin *= 0.5;
-            side = 1;
+            break;  // NaN: keep the bracket
         }
+        double next;
+        if (sPrev < 0.0) next = f < 0.0 ? s + step : s - step;  // the second point
+        else next = f != fPrev ? s - f * (s - sPrev) / (f - fPrev) : -1.0;
+        if (!(next > lo && next < hi)) {
+            double a = flo, b = fhi;
+            if (stale <= -2) b *= 0.5;
+            if (stale >= 2) a *= 0.5;
+            next = lo + (hi - lo) * (a / (a - b));
+            if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        } else if (sPrev >= 0.0 && std::fabs(next - s) * len <= 0.0625 * mTol) {
+            return at(next);
+        }
+        sPrev = s;
+        fPrev = f;
+        s = next;
     }
-    const double s = (fin < 0.0 && fout > 0.0) ? fin / (fin - fout) : 0.5;
-    return {in[0] + s * (out[0] - in[0]), in[1] + s * (out[1] - in[1])};
+    const double k = (flo < 0.0 && fhi > 0.0) ? flo / (flo - fhi) : 0.5;
+    return at(lo + (hi - lo) * k);
 }
 
 int Contourer::crossing(const Key& a, const Key& b, bool aInside, const Tape& t) {
@@ -259,7 +283,8 @@ int Contourer::crossing(const Key& a, const Key& b, bool aInside, const Tape& t)
     if (it != mCrossing.end()) return it->second;
     const Key& in = aInside ? a : b;
     const Key& out = aInside ? b : a;
-    const Pt p = rootOnSegment(t, {uOf(in.x), vOf(in.y)}, {uOf(out.x), vOf(out.y)});
+    const Pt pin{uOf(in.x), vOf(in.y)}, pout{uOf(out.x), vOf(out.y)};
+    const Pt p = rootOnSegment(t, pin, pout, evalAt(t, pin[0], pin[1]), evalAt(t, pout[0], pout[1]));
     const int id = static_cast<int>(mVertices.size());
     mVertices.push_back(p);
     mCrossing.emplace(key, id);
@@ -287,9 +312,13 @@ void Contourer::refine(const Cell& c, const Pt& p, const Pt& q, int depth, std::
         b = {m, vOf(c.y + h)};
     }
     const double fa = evalAt(t, a[0], a[1]), fb = evalAt(t, b[0], b[1]);
+    // Start from where the chord meets the line: within the chord's error of the curve.
+    const double k = (m - p[param]) / (q[param] - p[param]);
+    const double other = p[1 - param] + k * (q[1 - param] - p[1 - param]);
+    const double g = (other - a[1 - param]) / (b[1 - param] - a[1 - param]);
     Pt mid;
-    if (fa <= 0.0 && fb > 0.0) mid = rootOnSegment(t, a, b);
-    else if (fb <= 0.0 && fa > 0.0) mid = rootOnSegment(t, b, a);
+    if (fa <= 0.0 && fb > 0.0) mid = rootOnSegment(t, a, b, fa, fb, g);
+    else if (fb <= 0.0 && fa > 0.0) mid = rootOnSegment(t, b, a, fb, fa, 1.0 - g);
     else return;  // no sign change (rounding at the very end of the curve): keep the chord
     // Distance of the curve's point from the chord p–q.
     const double dx = q[0] - p[0], dy = q[1] - p[1];
