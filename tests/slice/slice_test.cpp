@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <map>
 
 using namespace kerf;
 
@@ -71,7 +72,7 @@ object difference {
 
 }  // namespace
 
-TEST_CASE("slice/cup wall is the annulus pi (R^2 - r^2)") {
+TEST_CASE("cup wall is the annulus pi (R^2 - r^2)") {
     const double R = 1.2, r = 1.08;
     const double exact = kPi * (R * R - r * r);
     for (const double rel : {1e-4, 1e-7, 1e-10}) {
@@ -94,7 +95,7 @@ TEST_CASE("slice/cup wall is the annulus pi (R^2 - r^2)") {
     }
 }
 
-TEST_CASE("slice/box minus circles") {
+TEST_CASE("box minus circles") {
     const Cut c = cut(R"(
 object difference {
     box { min <0, 0, -1> max <4, 2, 1> }
@@ -110,7 +111,7 @@ object difference {
     CHECK(std::fabs(s.perimeter - (12.0 + 2 * kPi * 0.8)) <= 1e-6);
 }
 
-TEST_CASE("slice/torus through its axis is two circles") {
+TEST_CASE("torus through its axis is two circles") {
     // Around the y axis: the plane x = 0 (u = y, v = z) meets it in circles at z = ±2.
     const Cut c = cut("object torus { major 2 minor 0.5 };", SlicePlane::axisAligned(0, 0.0), 1e-9);
     const SliceStats& s = c.result.stats;
@@ -122,7 +123,7 @@ TEST_CASE("slice/torus through its axis is two circles") {
             CHECK(std::fabs(std::hypot(p[0], std::fabs(p[1]) - 2.0) - 0.5) <= c.tolerance);
 }
 
-TEST_CASE("slice/cone cut obliquely is an ellipse") {
+TEST_CASE("cone cut obliquely is an ellipse") {
     // Cone of apex height H = 2 and base radius 1 (t = 1/2), plane z = 0.8 + 0.5 x: the
     // ellipse's area is π t² c² √(1 + s²) / (1 − t² s²)^{3/2}, c = H − 0.8, s = 0.5.
     const double t = 0.5, cc = 1.2, sl = 0.5;
@@ -135,7 +136,7 @@ TEST_CASE("slice/cone cut obliquely is an ellipse") {
     CHECK(std::fabs(s.area - exact) <= c.tolerance * s.perimeter);
 }
 
-TEST_CASE("slice/sphere near its pole is a tiny circle") {
+TEST_CASE("sphere near its pole is a tiny circle") {
     const double z = 1.0 - 1e-6;
     const double exact = kPi * (1.0 - z * z);
     const Cut c = cut("object sphere { center <0, 0, 0> radius 1 };", SlicePlane::axisAligned(2, z), 1e-10);
@@ -145,7 +146,7 @@ TEST_CASE("slice/sphere near its pole is a tiny circle") {
     CHECK(std::fabs(s.area - exact) <= c.tolerance * s.perimeter);
 }
 
-TEST_CASE("slice/a slot 1e-6 wide is found") {
+TEST_CASE("a slot 1e-6 wide is found") {
     const Cut c = cut(R"(
 object difference {
     box { min <0, 0, -1> max <1, 1, 1> }
@@ -159,7 +160,7 @@ object difference {
     CHECK(std::fabs((1.0 - s.area) - 1e-9) <= c.tolerance * 2.002e-3);
 }
 
-TEST_CASE("slice/sharp corner of a box minus a cylinder") {
+TEST_CASE("sharp corner of a box minus a cylinder") {
     // The cylinder around (2, 2) of radius 1 cuts the box's corner: the section's corners are
     // at (1, 2) and (2, 1) exactly.
     const Cut c = cut(R"(
@@ -180,7 +181,7 @@ object difference {
     CHECK(std::fabs(c.result.stats.area - exact) <= c.tolerance * c.result.stats.perimeter);
 }
 
-TEST_CASE("slice/loops are closed, oriented and never self-intersect") {
+TEST_CASE("loops are closed, oriented and never self-intersect") {
     // A mixed model at a coarse tolerance (few vertices, so every pair can be checked).
     const Cut c = cut(R"(
 object union {
@@ -200,7 +201,7 @@ object union {
     CHECK(s.holes >= 1);
 }
 
-TEST_CASE("slice/a stack equals single slices") {
+TEST_CASE("a stack equals single slices") {
     Scene scene = test::compiledScene(kCupBody);
     const SlicePlane family = SlicePlane::axisAligned(1, 0.0);
     SliceOptions o;
@@ -222,7 +223,7 @@ TEST_CASE("slice/a stack equals single slices") {
     CHECK(std::fabs(stack[0].stats.area - kPi * 1.44) <= 1e-6 * 2.5 * stack[0].stats.perimeter);
 }
 
-TEST_CASE("slice/plane axes are right-handed") {
+TEST_CASE("plane axes are right-handed") {
     for (int axis = 0; axis < 3; ++axis) {
         const SlicePlane p = SlicePlane::axisAligned(axis, 0.0);
         CHECK(glm::length(glm::cross(p.u, p.v) - p.normal) == 0.0);
@@ -230,4 +231,26 @@ TEST_CASE("slice/plane axes are right-handed") {
     const SlicePlane g = SlicePlane::throughPoint(Vec3(1, 2, 3), Vec3(0.3, -2, 0.5));
     CHECK(glm::length(glm::cross(g.u, g.v) - g.normal) < 1e-15);
     CHECK(std::fabs(glm::dot(g.u, g.v)) < 1e-15);
+}
+
+TEST_CASE("regions go to the layer of their material") {
+    const Cut c = cut(R"(
+material red { color <1, 0, 0> }
+material blue { color <0, 0, 1> }
+object union {
+    sphere { center <-2, 0, 0> radius 1 } material red
+    box { min <1, -1, -1> max <3, 1, 1> } material blue
+};
+object sphere { center <0, 5, 0> radius 0.5 };
+)", SlicePlane::axisAligned(2, 0.0), 1e-9);
+    const SectionDrawing& d = c.result.drawing;
+    REQUIRE(d.layers.size() == 3);
+    std::map<std::string, double> area;
+    for (const SectionLayer& layer : d.layers)
+        for (const SectionLoop& loop : layer.loops) area[layer.name] += loopArea(loop);
+    CHECK(std::fabs(area["red"] - kPi) <= c.tolerance * 2 * kPi);
+    CHECK(std::fabs(area["blue"] - 4.0) <= c.tolerance * 8);
+    CHECK(std::fabs(area["default"] - kPi * 0.25) <= c.tolerance * kPi);
+    for (const SectionLayer& layer : d.layers)
+        if (layer.name == "red") CHECK(layer.color == std::array<double, 3>{1, 0, 0});
 }
