@@ -136,6 +136,7 @@ void printStats(const SliceResult& r, const std::string& label, std::ostream& ou
                   s.contour.pointEvals);
     out << buf;
     if (s.contour.repairedLoops > 0) out << "  open chains closed: " << s.contour.repairedLoops << "\n";
+    if (s.contour.flatCells > 0) out << "  cells with f within rounding of 0: " << s.contour.flatCells << "\n";
     std::snprintf(buf, sizeof buf, "  time: contour %.3f ms, regions %.3f ms\n", 1e3 * s.contourSeconds,
                   1e3 * s.regionSeconds);
     out << buf;
@@ -234,6 +235,14 @@ int runSlice(const SliceCommandLine& line) {
     const std::vector<SliceResult> results = slicer.sliceMany(offsets);
     const auto tSliced = std::chrono::steady_clock::now();
     for (size_t i = 0; i < results.size(); ++i) {
+        if (results[i].stats.contour.budgetExceeded)
+            std::cerr << "kerf: warning: " << paths[i]
+                      << ": the section needed more quadtree cells than allowed; parts are drawn coarser "
+                         "than --tolerance\n";
+        if (results[i].stats.contour.flatCells > 0 && !line.quiet)
+            std::cerr << "kerf: note: " << paths[i]
+                      << ": the plane holds a face of the model, or faces coincide, where the section is "
+                         "decided by the sign of f within rounding\n";
         if (results[i].drawing.layers.empty())
             std::cerr << "kerf: note: " << paths[i] << ": the section is empty\n";
         writeSection(results[i].drawing, paths[i], format, line);

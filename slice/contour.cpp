@@ -17,6 +17,8 @@ void ContourStats::add(const ContourStats& o) {
     simpleLeaves += o.simpleLeaves;
     pointEvals += o.pointEvals;
     repairedLoops += o.repairedLoops;
+    flatCells += o.flatCells;
+    budgetExceeded = budgetExceeded || o.budgetExceeded;
     depth = std::max(depth, o.depth);
 }
 
@@ -102,9 +104,10 @@ public:
         const double ratio = side / (0.5 * mTol);
         mDepth = ratio > 1.0 ? std::min(44, static_cast<int>(std::ceil(std::log2(ratio)))) : 1;
         mUnit = side / std::ldexp(1.0, mDepth);
+        mFlat = std::ldexp(side, -44);
         stats.depth = mDepth;
         mCells.push_back(Cell{0, 0, 0, -1, State::Boundary, Simple::None, nullptr});
-        build(0, std::shared_ptr<const Tape>(std::shared_ptr<const Tape>(), &tape));
+        build(std::shared_ptr<const Tape>(std::shared_ptr<const Tape>(), &tape));
     }
 
     std::vector<SectionLoop> run();
@@ -118,7 +121,11 @@ private:
         return t.eval(Vec3(u, v, mW));
     }
 
-    void build(int index, const std::shared_ptr<const Tape>& parentTape);
+    /// Classifies cell `index` with its parent's tape; a boundary cell keeps its own
+    /// (simplified) tape in `tape`. True when the cell is to be split.
+    bool classify(int index, const std::shared_ptr<const Tape>& parentTape,
+                  std::shared_ptr<const Tape>& tape);
+    void build(const std::shared_ptr<const Tape>& rootTape);
     Simple provedSimple(const Tape& tape, const Interval& U, const Interval& V);
     void edgeSplits(int node, int side, const Cell& c, std::vector<int64_t>& out) const;
     bool inside(const Key& k, const Tape& t);
@@ -131,7 +138,9 @@ private:
     void contourCell(const Cell& c);
     void refine(const Cell& c, const Pt& p, const Pt& q, int depth, std::vector<Pt>& out);
 
+    static constexpr size_t kMaxCells = size_t(1) << 21;
     double mW, mTol, mU0 = 0, mV0 = 0, mUnit = 1;
+    double mFlat = 0.0;  ///< the rounding scale of f within which a cell is taken as flat
     int mDepth = 1;
     ContourStats& mStats;
     std::vector<Cell> mCells;
@@ -164,7 +173,8 @@ Simple Contourer::provedSimple(const Tape& tape, const Interval& U, const Interv
     return Simple::None;
 }
 
-void Contourer::build(int index, const std::shared_ptr<const Tape>& parentTape) {
+bool Contourer::classify(int index, const std::shared_ptr<const Tape>& parentTape,
+                         std::shared_ptr<const Tape>& tape) {
     ++mStats.cells;
     const Cell c = mCells[index];
     const int64_t h = sizeOf(c.level);
@@ -173,25 +183,60 @@ void Contourer::build(int index, const std::shared_ptr<const Tape>& parentTape) 
     const Classification k = f.classify();
     if (k != Classification::Ambiguous) {
         mCells[index].state = k == Classification::Empty ? State::Empty : State::Full;
-        return;
+        return false;
     }
     // Only a decided min/max makes a shorter tape worth building.
     bool decided = false;
     for (const Choice ch : mChoices) decided = decided || ch != Choice::Both;
-    std::shared_ptr<const Tape> tape = decided ? parentTape->simplified(mChoices) : parentTape;
-    const Simple simple = provedSimple(*tape, U, V);
-    if (simple != Simple::None || c.level == mDepth) {
-        mCells[index].simple = simple;
-        mCells[index].tape = tape;
-        return;
+    tape = decided ? parentTape->simplified(mChoices) : parentTape;
+    mCells[index].tape = tape;
+    // f within rounding of 0 on one side over the whole cell: a face lying in the plane.
+    // Intervals cannot prove the sign of an exact 0, so splitting would go to the finest
+    // level over the whole face; the cell is contoured as it is, by its samples (f ≤ 0
+    // inside). Only a feature whose f stays within this rounding scale could be missed.
+    if ((f.hi <= mFlat || f.lo >= -mFlat) && !f.maybeNan) {
+        ++mStats.flatCells;
+        return false;
     }
-    const int first = static_cast<int>(mCells.size());
-    mCells[index].firstChild = first;
-    const int64_t half = h / 2;
-    for (int i = 0; i < 4; ++i)
-        mCells.push_back(Cell{c.x + (i & 1) * half, c.y + (i >> 1) * half, c.level + 1, -1,
-                              State::Boundary, Simple::None, nullptr});
-    for (int i = 0; i < 4; ++i) build(first + i, tape);
+    mCells[index].simple = provedSimple(*tape, U, V);
+    return mCells[index].simple == Simple::None && c.level < mDepth;
+}
+
+void Contourer::build(const std::shared_ptr<const Tape>& rootTape) {
+    // Level by level, so that if the cell budget runs out (faces that coincide inside a
+    // union, where intervals cannot prove f ≤ 0, split to the finest level along the whole
+    // face), every part of the plane has been refined to the same level and the cells left
+    // are contoured at that size: coarser than the tolerance, but closed and consistent.
+    struct Pending {
+        int index;
+        std::shared_ptr<const Tape> tape;
+    };
+    std::vector<Pending> level{{0, rootTape}}, split, next;
+    while (!level.empty()) {
+        split.clear();
+        for (const Pending& p : level) {
+            std::shared_ptr<const Tape> tape;
+            if (classify(p.index, p.tape, tape)) split.push_back({p.index, std::move(tape)});
+        }
+        if (mCells.size() + 4 * split.size() > kMaxCells) {
+            if (!split.empty()) mStats.budgetExceeded = true;
+            break;  // the cells of `split` stay boundary leaves, contoured by their samples
+        }
+        next.clear();
+        for (Pending& p : split) {
+            const Cell c = mCells[p.index];
+            const int64_t half = sizeOf(c.level) / 2;
+            const int first = static_cast<int>(mCells.size());
+            mCells[p.index].firstChild = first;
+            mCells[p.index].tape.reset();
+            for (int i = 0; i < 4; ++i) {
+                mCells.push_back(Cell{c.x + (i & 1) * half, c.y + (i >> 1) * half, c.level + 1, -1,
+                                      State::Boundary, Simple::None, nullptr});
+                next.push_back({first + i, p.tape});
+            }
+        }
+        level.swap(next);
+    }
 }
 
 /// Lattice coordinates strictly inside one side of leaf c where leaves across that side

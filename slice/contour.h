@@ -44,6 +44,8 @@ struct ContourStats {
     size_t simpleLeaves = 0;     ///< of those, proved simple before the finest level
     size_t pointEvals = 0;       ///< tape evaluations at points (signs and root finding)
     size_t repairedLoops = 0;    ///< open chains closed by a segment (rounding at a tangency)
+    size_t flatCells = 0;        ///< cells where f is within rounding of 0 (a face in the plane)
+    bool budgetExceeded = false; ///< the cell budget (2^21 per object) was reached
     int depth = 0;               ///< the finest level allowed
     void add(const ContourStats& o);
 };
