@@ -254,3 +254,30 @@ object sphere { center <0, 5, 0> radius 0.5 };
     for (const SectionLayer& layer : d.layers)
         if (layer.name == "red") CHECK(layer.color == std::array<double, 3>{1, 0, 0});
 }
+
+TEST_CASE("boxes sharing a face make one region without a seam") {
+    const Cut c = cut(R"(
+object union {
+    box { min <0, 0, -1> max <1, 1, 1> }
+    box { min <1, 0, -1> max <2, 1, 1> }
+};
+)", SlicePlane::axisAligned(2, 0.0), 1e-4);
+    const SliceStats& s = c.result.stats;
+    CHECK(s.contours == 1);
+    CHECK(s.contour.repairedLoops == 0);
+    CHECK(std::fabs(s.area - 2.0) <= c.tolerance * s.perimeter);
+    CHECK(std::fabs(s.perimeter - 6.0) <= 8 * c.tolerance);
+}
+
+TEST_CASE("a plane holding a face ends quickly with a closed section") {
+    // The plane z = 1 holds the box's top face, where f is 0 up to rounding and intervals
+    // cannot prove a sign: the section is either the face or nothing (here nothing: f ≥ 0 on
+    // the whole plane), but it is closed and found without splitting the face to the finest
+    // level.
+    const Cut c = cut("object box { min <0, 0, 0> max <1, 1, 1> };", SlicePlane::axisAligned(2, 1.0), 1e-9);
+    const SliceStats& s = c.result.stats;
+    CHECK(!s.contour.budgetExceeded);
+    CHECK(s.contour.repairedLoops == 0);
+    CHECK(s.contour.cells < 1000);
+    CHECK(std::min(std::fabs(s.area), std::fabs(s.area - 1.0)) <= c.tolerance * 4);
+}
