@@ -80,6 +80,7 @@ struct Cell {
     State state = State::Boundary;
     Simple simple = Simple::None;
     std::shared_ptr<const Tape> tape;  // boundary leaves only
+    int8_t slopeU = 0, slopeV = 0;     // sign of ∂f/∂u, ∂f/∂v where proved (simple cells)
 };
 
 struct Chain {
@@ -126,7 +127,7 @@ private:
     bool classify(int index, const std::shared_ptr<const Tape>& parentTape,
                   std::shared_ptr<const Tape>& tape);
     void build(const std::shared_ptr<const Tape>& rootTape);
-    Simple provedSimple(const Tape& tape, const Interval& U, const Interval& V);
+    Simple provedSimple(const Tape& tape, const Interval& U, const Interval& V, Cell& cell);
     void edgeSplits(int node, int side, const Cell& c, std::vector<int64_t>& out) const;
     bool inside(const Key& k, const Tape& t);
     int crossing(const Key& a, const Key& b, bool aInside, const Tape& t);
@@ -152,11 +153,13 @@ private:
     std::vector<Chain> mChains;
 };
 
-Simple Contourer::provedSimple(const Tape& tape, const Interval& U, const Interval& V) {
+Simple Contourer::provedSimple(const Tape& tape, const Interval& U, const Interval& V, Cell& cell) {
     const IntervalSlopes s = evalIntervalSlopes(tape, U, V, mW, mScratch);
     if (!s.ok) return Simple::None;
     const bool monoU = s.du.lo > 0.0 || s.du.hi < 0.0;
     const bool monoV = s.dv.lo > 0.0 || s.dv.hi < 0.0;
+    cell.slopeU = monoU ? (s.du.lo > 0.0 ? 1 : -1) : 0;
+    cell.slopeV = monoV ? (s.dv.lo > 0.0 ? 1 : -1) : 0;
     if (monoU && monoV) return Simple::Both;
     // Monotone in one direction: the edge where f is least must be wholly inside and the
     // opposite one wholly outside; then every line along that direction crosses once.
@@ -198,7 +201,7 @@ bool Contourer::classify(int index, const std::shared_ptr<const Tape>& parentTap
         ++mStats.flatCells;
         return false;
     }
-    mCells[index].simple = provedSimple(*tape, U, V);
+    mCells[index].simple = provedSimple(*tape, U, V, mCells[index]);
     return mCells[index].simple == Simple::None && c.level < mDepth;
 }
 
@@ -279,10 +282,13 @@ Pt Contourer::rootOnSegment(const Tape& t, const Pt& in, const Pt& out, double f
     const double du = out[0] - in[0], dv = out[1] - in[1];
     const double len = std::hypot(du, dv);
     auto at = [&](double s) { return Pt{in[0] + s * du, in[1] + s * dv}; };
-    if (!(fin <= 0.0) || !(fout > 0.0) || !(len > 0.0)) return at(0.5);
+    // fin, fout may be NaN: not evaluated, the ends' signs known from a proof.
+    if ((!std::isnan(fin) && !(fin <= 0.0)) || (!std::isnan(fout) && !(fout > 0.0)) || !(len > 0.0))
+        return at(0.5);
     double lo = 0.0, hi = 1.0, flo = fin, fhi = fout;
     const double step = mTol / len;
     double s = guess > 0.0 && guess < 1.0 ? guess : fin / (fin - fout);
+    if (!(s > 0.0 && s < 1.0)) s = 0.5;
     double sPrev = -1.0, fPrev = 0.0;
     int stale = 0;  // Illinois: halve the end that stays put twice in a row
     for (int iter = 0; iter < 100; ++iter) {
@@ -308,7 +314,7 @@ Pt Contourer::rootOnSegment(const Tape& t, const Pt& in, const Pt& out, double f
             double a = flo, b = fhi;
             if (stale <= -2) b *= 0.5;
             if (stale >= 2) a *= 0.5;
-            next = lo + (hi - lo) * (a / (a - b));
+            next = lo + (hi - lo) * (a / (a - b));  // NaN (an end not evaluated): bisect
             if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
         } else if (sPrev >= 0.0 && std::fabs(next - s) * len <= 0.0625 * mTol) {
             return at(next);
@@ -356,21 +362,39 @@ void Contourer::refine(const Cell& c, const Pt& p, const Pt& q, int depth, std::
         a = {m, vOf(c.y)};
         b = {m, vOf(c.y + h)};
     }
-    const double fa = evalAt(t, a[0], a[1]), fb = evalAt(t, b[0], b[1]);
     // Start from where the chord meets the line: within the chord's error of the curve.
     const double k = (m - p[param]) / (q[param] - p[param]);
     const double other = p[1 - param] + k * (q[1 - param] - p[1 - param]);
     const double g = (other - a[1 - param]) / (b[1 - param] - a[1 - param]);
+    // The line meets the curve once, and the proved slope along it says which end is inside:
+    // its ends need no evaluation.
+    const int slope = lineOfV ? c.slopeU : c.slopeV;
+    const double unknown = std::nan("");
     Pt mid;
-    if (fa <= 0.0 && fb > 0.0) mid = rootOnSegment(t, a, b, fa, fb, g);
-    else if (fb <= 0.0 && fa > 0.0) mid = rootOnSegment(t, b, a, fb, fa, 1.0 - g);
-    else return;  // no sign change (rounding at the very end of the curve): keep the chord
+    if (slope > 0) {
+        mid = rootOnSegment(t, a, b, unknown, unknown, g);
+    } else if (slope < 0) {
+        mid = rootOnSegment(t, b, a, unknown, unknown, 1.0 - g);
+    } else {
+        const double fa = evalAt(t, a[0], a[1]), fb = evalAt(t, b[0], b[1]);
+        if (fa <= 0.0 && fb > 0.0) mid = rootOnSegment(t, a, b, fa, fb, g);
+        else if (fb <= 0.0 && fa > 0.0) mid = rootOnSegment(t, b, a, fb, fa, 1.0 - g);
+        else return;  // no sign change (rounding at the very end of the curve): keep the chord
+    }
     // Distance of the curve's point from the chord p–q.
     const double dx = q[0] - p[0], dy = q[1] - p[1];
     const double len = std::hypot(dx, dy);
     const double dev = len > 0.0 ? std::fabs(dx * (mid[1] - p[1]) - dy * (mid[0] - p[0])) / len
                                  : std::hypot(mid[0] - p[0], mid[1] - p[1]);
-    if (dev <= mTol) return;
+    // Within a quarter of the tolerance the chord stands. Up to twice the tolerance the point
+    // found is kept and the two halves are not checked: an arc's halves deviate a quarter as
+    // much (a corner's at most half), so they are within the tolerance; the root found to
+    // check a chord is not wasted.
+    if (dev <= 0.25 * mTol) return;
+    if (dev <= 2.0 * mTol) {
+        out.push_back(mid);
+        return;
+    }
     refine(c, p, mid, depth + 1, out);
     out.push_back(mid);
     refine(c, mid, q, depth + 1, out);
