@@ -2,6 +2,8 @@
 /// @brief SVG text, written as it is added.
 #include "io/svg.h"
 
+#include "io/number_text.h"
+
 #include <cmath>
 #include <cstdio>
 
@@ -10,6 +12,13 @@ namespace kerf {
 SvgWriter::SvgWriter(double width, double height) {
     mText = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + number(width) + "\" height=\"" +
             number(height) + "\" viewBox=\"0 0 " + number(width) + " " + number(height) + "\">\n";
+}
+
+SvgWriter::SvgWriter(double minX, double minY, double width, double height, double displayWidth,
+                     double displayHeight) {
+    mText = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + number(displayWidth) +
+            "\" height=\"" + number(displayHeight) + "\" viewBox=\"" + exactNumber(minX) + " " +
+            exactNumber(minY) + " " + exactNumber(width) + " " + exactNumber(height) + "\">\n";
 }
 
 std::string SvgWriter::number(double value) {

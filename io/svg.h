@@ -21,6 +21,11 @@ class SvgWriter {
 public:
     /// Starts a document `width` × `height` user units, with a matching viewBox.
     SvgWriter(double width, double height);
+    /// Starts a document whose viewBox is [minX, minX + width] × [minY, minY + height] written
+    /// exactly (io/number_text.h), shown `displayWidth` × `displayHeight` (sections in model
+    /// units, drawn at a readable size).
+    SvgWriter(double minX, double minY, double width, double height, double displayWidth,
+              double displayHeight);
 
     /// A coordinate as written: two decimals, C locale ("12.50").
     static std::string number(double value);

@@ -91,6 +91,15 @@ TEST_CASE("cup wall is the annulus pi (R^2 - r^2)") {
             const double radius = loopArea(*loop) > 0 ? R : r;
             for (const auto& p : loop->points)
                 CHECK(std::fabs(std::hypot(p[0], p[1]) - radius) <= c.tolerance);
+            // Each chord's middle, its farthest point from the arc, within the tolerance too.
+            double worst = 0.0;
+            const auto& pts = loop->points;
+            for (size_t i = 0; i < pts.size(); ++i) {
+                const auto& a = pts[i];
+                const auto& b = pts[(i + 1) % pts.size()];
+                worst = std::max(worst, std::fabs(std::hypot(0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])) - radius));
+            }
+            CHECK(worst <= c.tolerance);
         }
     }
 }
