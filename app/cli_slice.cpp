@@ -10,6 +10,8 @@
 #include "slice/slice.h"
 
 #include <CLI/CLI.hpp>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <chrono>
@@ -245,7 +247,18 @@ int runSlice(const SliceCommandLine& line) {
                          "decided by the sign of f within rounding\n";
         if (results[i].drawing.layers.empty())
             std::cerr << "kerf: note: " << paths[i] << ": the section is empty\n";
-        writeSection(results[i].drawing, paths[i], format, line);
+    }
+    // A stack's files are independent: vector files are written a few at a time, so one
+    // file's fsync does not wait for the last. Images go one by one (the image plug-in is
+    // loaded on the first).
+    if (format == Format::Png || results.size() == 1) {
+        for (size_t i = 0; i < results.size(); ++i) writeSection(results[i].drawing, paths[i], format, line);
+    } else {
+        tbb::task_arena writers(8);
+        writers.execute([&] {
+            tbb::parallel_for(size_t(0), results.size(),
+                              [&](size_t i) { writeSection(results[i].drawing, paths[i], format, line); });
+        });
     }
     const auto tWritten = std::chrono::steady_clock::now();
     if (line.stats) {
