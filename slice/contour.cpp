@@ -135,8 +135,11 @@ private:
     /// `out` (f = fout > 0), starting from the fraction `guess` (or the secant's, if outside
     /// (0, 1)).
     Pt rootOnSegment(const Tape& t, const Pt& in, const Pt& out, double fin, double fout,
-                     double guess = -1.0);
+                     double guess = -1.0, double accuracy = 0.25);
     void contourCell(const Cell& c);
+    /// In a finest cell, the vertex where two operands' boundaries meet between crossings a
+    /// and b, if they do.
+    void placeCorner(const Cell& c, const Pt& a, const Pt& b, std::vector<Pt>& out);
     void refine(const Cell& c, const Pt& p, const Pt& q, int depth, std::vector<Pt>& out);
 
     static constexpr size_t kMaxCells = size_t(1) << 21;
@@ -273,12 +276,12 @@ bool Contourer::inside(const Key& k, const Tape& t) {
 }
 
 Pt Contourer::rootOnSegment(const Tape& t, const Pt& in, const Pt& out, double fin, double fout,
-                            double guess) {
+                            double guess, double accuracy) {
     // The secant method on s ∈ [0, 1] along in → out from the guess and a point a tolerance
     // away, kept inside the bracket [lo, hi] (f(lo) ≤ 0 < f(hi)): a step that would leave it
-    // is replaced by Illinois regula falsi on the bracket. Ends when a step is below a
-    // sixteenth of the tolerance (superlinear convergence puts the root far closer) or the
-    // bracket is within a quarter of it.
+    // is replaced by Illinois regula falsi on the bracket. Ends when a step is below a quarter
+    // of accuracy × tolerance (superlinear convergence puts the root far closer) or the
+    // bracket is within accuracy × tolerance.
     const double du = out[0] - in[0], dv = out[1] - in[1];
     const double len = std::hypot(du, dv);
     auto at = [&](double s) { return Pt{in[0] + s * du, in[1] + s * dv}; };
@@ -292,7 +295,7 @@ Pt Contourer::rootOnSegment(const Tape& t, const Pt& in, const Pt& out, double f
     double sPrev = -1.0, fPrev = 0.0;
     int stale = 0;  // Illinois: halve the end that stays put twice in a row
     for (int iter = 0; iter < 100; ++iter) {
-        if ((hi - lo) * len <= 0.25 * mTol) break;
+        if ((hi - lo) * len <= accuracy * mTol) break;
         const Pt p = at(s);
         const double f = evalAt(t, p[0], p[1]);
         if (f == 0.0) return p;
@@ -316,7 +319,7 @@ Pt Contourer::rootOnSegment(const Tape& t, const Pt& in, const Pt& out, double f
             if (stale >= 2) a *= 0.5;
             next = lo + (hi - lo) * (a / (a - b));  // NaN (an end not evaluated): bisect
             if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-        } else if (sPrev >= 0.0 && std::fabs(next - s) * len <= 0.0625 * mTol) {
+        } else if (sPrev >= 0.0 && std::fabs(next - s) * len <= 0.25 * accuracy * mTol) {
             return at(next);
         }
         sPrev = s;
@@ -335,7 +338,9 @@ int Contourer::crossing(const Key& a, const Key& b, bool aInside, const Tape& t)
     const Key& in = aInside ? a : b;
     const Key& out = aInside ? b : a;
     const Pt pin{uOf(in.x), vOf(in.y)}, pout{uOf(out.x), vOf(out.y)};
-    const Pt p = rootOnSegment(t, pin, pout, evalAt(t, pin[0], pin[1]), evalAt(t, pout[0], pout[1]));
+    // Crossings to a 64th of the tolerance: corners are placed from them (placeCorner).
+    const Pt p = rootOnSegment(t, pin, pout, evalAt(t, pin[0], pin[1]), evalAt(t, pout[0], pout[1]), -1.0,
+                               1.0 / 64.0);
     const int id = static_cast<int>(mVertices.size());
     mVertices.push_back(p);
     mCrossing.emplace(key, id);
@@ -400,6 +405,30 @@ void Contourer::refine(const Cell& c, const Pt& p, const Pt& q, int depth, std::
     refine(c, mid, q, depth + 1, out);
 }
 
+void Contourer::placeCorner(const Cell& c, const Pt& a, const Pt& b, std::vector<Pt>& out) {
+    // As dual contouring does: where the boundary's normals at the two crossings differ by
+    // more than 20°, two operands' boundaries meet in the cell (a CSG edge); the corner is
+    // where their tangent lines at the crossings meet, kept if it lies in the cell. The cell
+    // is at most half the tolerance wide, so any point of it is within the tolerance of the
+    // boundary; the corner is then exact up to the curvature of the operands across the cell.
+    Vec3 ga, gb;
+    mStats.pointEvals += 2;
+    c.tape->evalGradient(Vec3(a[0], a[1], mW), ga);
+    c.tape->evalGradient(Vec3(b[0], b[1], mW), gb);
+    const double la = std::hypot(ga.x, ga.y), lb = std::hypot(gb.x, gb.y);
+    if (!(la > 0.0) || !(lb > 0.0) || !std::isfinite(la) || !std::isfinite(lb)) return;
+    const double ax = ga.x / la, ay = ga.y / la, bx = gb.x / lb, by = gb.y / lb;
+    if (ax * bx + ay * by > 0.94) return;  // cos 20°: a smooth turn, the segment stands
+    const double det = ax * by - ay * bx;
+    if (std::fabs(det) < 1e-6) return;  // parallel tangents: no corner between them
+    const double ra = ax * a[0] + ay * a[1], rb = bx * b[0] + by * b[1];
+    const Pt corner{(ra * by - ay * rb) / det, (ax * rb - ra * bx) / det};
+    const int64_t h = sizeOf(c.level);
+    if (corner[0] < uOf(c.x) || corner[0] > uOf(c.x + h) || corner[1] < vOf(c.y) || corner[1] > vOf(c.y + h))
+        return;
+    out.push_back(corner);
+}
+
 void Contourer::contourCell(const Cell& c) {
     const Tape& t = *c.tape;
     const int64_t h = sizeOf(c.level);
@@ -441,6 +470,8 @@ void Contourer::contourCell(const Cell& c) {
         Chain chain{xs[i].vertex, to.vertex, {}};
         if (c.simple != Simple::None && m == 2)
             refine(c, mVertices[chain.from], mVertices[chain.to], 0, chain.inner);
+        else if (m == 2)
+            placeCorner(c, mVertices[chain.from], mVertices[chain.to], chain.inner);
         mChains.push_back(std::move(chain));
     }
 }

@@ -186,6 +186,22 @@ object difference {
         INFO("corner " << corner[0] << ", " << corner[1]);
         CHECK(nearest <= c.tolerance);
     }
+    // The corner vertex is the tangents' meeting point, far closer than the tolerance: the
+    // face is straight and the circle bends by h²/2 over a finest cell h ≈ 1e-6.
+    const Cut coarse = cut(R"(
+object difference {
+    box { min <0, 0, -1> max <2, 2, 1> }
+    cylinder { from <2, 2, -2> to <2, 2, 2> radius 1 }
+};
+)", SlicePlane::axisAligned(2, 0.0), 1e-6);
+    for (const auto& corner : {std::array<double, 2>{1, 2}, std::array<double, 2>{2, 1}}) {
+        double nearest = INFINITY;
+        for (const SectionLoop* loop : allLoops(coarse.result.drawing))
+            for (const auto& p : loop->points)
+                nearest = std::min(nearest, std::hypot(p[0] - corner[0], p[1] - corner[1]));
+        INFO("corner " << corner[0] << ", " << corner[1]);
+        CHECK(nearest <= 1e-9);
+    }
     const double exact = 4.0 - kPi / 4;
     CHECK(std::fabs(c.result.stats.area - exact) <= c.tolerance * c.result.stats.perimeter);
 }
