@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 
 using namespace kerf;
 
@@ -49,16 +50,35 @@ bool properCross(const std::array<double, 2>& a, const std::array<double, 2>& b,
     return orient(a, b, c) * orient(a, b, d) < 0 && orient(c, d, a) * orient(c, d, b) < 0;
 }
 
+/// Pairs of segments that cross, over all loops of the drawing: segments are bucketed on a
+/// grid by their boxes and only pairs sharing a bucket are tested.
 size_t selfIntersections(const SectionDrawing& d) {
     std::vector<std::array<std::array<double, 2>, 2>> segs;
     for (const SectionLoop* loop : allLoops(d))
         for (size_t i = 0; i < loop->points.size(); ++i)
             segs.push_back({loop->points[i], loop->points[(i + 1) % loop->points.size()]});
-    size_t n = 0;
-    for (size_t i = 0; i < segs.size(); ++i)
-        for (size_t j = i + 1; j < segs.size(); ++j)
-            if (properCross(segs[i][0], segs[i][1], segs[j][0], segs[j][1])) ++n;
-    return n;
+    const int n = 256;
+    const double w = (d.maxU - d.minU) / n, h = (d.maxV - d.minV) / n;
+    auto bucket = [&](double x, double lo, double step) {
+        return std::min(n - 1, std::max(0, static_cast<int>((x - lo) / step)));
+    };
+    std::map<int, std::vector<size_t>> grid;
+    for (size_t i = 0; i < segs.size(); ++i) {
+        const auto& s = segs[i];
+        const int u0 = bucket(std::min(s[0][0], s[1][0]), d.minU, w), u1 = bucket(std::max(s[0][0], s[1][0]), d.minU, w);
+        const int v0 = bucket(std::min(s[0][1], s[1][1]), d.minV, h), v1 = bucket(std::max(s[0][1], s[1][1]), d.minV, h);
+        for (int u = u0; u <= u1; ++u)
+            for (int v = v0; v <= v1; ++v) grid[u * n + v].push_back(i);
+    }
+    std::set<std::pair<size_t, size_t>> crossing;
+    for (const auto& [cell, list] : grid)
+        for (size_t a = 0; a < list.size(); ++a)
+            for (size_t b = a + 1; b < list.size(); ++b) {
+                const auto& s = segs[list[a]];
+                const auto& t = segs[list[b]];
+                if (properCross(s[0], s[1], t[0], t[1])) crossing.insert({list[a], list[b]});
+            }
+    return crossing.size();
 }
 
 const char* kCupBody = R"(
@@ -305,4 +325,17 @@ TEST_CASE("a plane holding a face ends quickly with a closed section") {
     CHECK(s.contour.repairedLoops == 0);
     CHECK(s.contour.cells < 1000);
     CHECK(std::min(std::fabs(s.area), std::fabs(s.area - 1.0)) <= c.tolerance * 4);
+}
+
+TEST_CASE("the gears' sections have sharp closed loops that never self-intersect") {
+    // models/gear.kerf: three gears, each a union of teeth (boxes cut by half-spaces) on a disc,
+    // minus a bore and holes: hundreds of CSG corners.
+    Scene scene = test::compiledSceneFile(std::string(KERF_SOURCE_DIR) + "/models/gear.kerf");
+    SliceOptions o;
+    o.tolerance = 1e-5;
+    SceneSlicer slicer(scene, SlicePlane::axisAligned(1, 0.1), o);
+    const SliceResult r = slicer.slice(0.1);
+    CHECK(r.stats.contour.repairedLoops == 0);
+    CHECK(r.stats.holes >= 9);
+    CHECK(selfIntersections(r.drawing) == 0);
 }
