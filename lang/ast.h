@@ -161,6 +161,7 @@ struct Statement {
         Assert,           ///< expr: the condition, properties[0].expr: the message (optional)
         Echo,             ///< properties: the values printed, each expr
         DefaultMaterial,  ///< name: the material
+        Section,          ///< properties: point, normal, color (a section plane)
     };
     Kind kind = Kind::Let;
     /// A definition whose body had a syntax error (already reported): its name exists, so
@@ -171,7 +172,7 @@ struct Statement {
     SourcePos nameLoc;
     ExprPtr expr = nullptr;  ///< let, background
     SolidPtr solid = nullptr;  ///< solid, object
-    ArenaList<Property> properties;  ///< material, camera, light, mist, render
+    ArenaList<Property> properties;  ///< material, camera, light, mist, render, section
     std::unique_ptr<Block> block;    ///< for, if
     /// The statement's own nodes (expr, solid, properties and all below), in one exact-size
     /// block, so that lowering can free them statement by statement (releaseTree).

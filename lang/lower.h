@@ -193,6 +193,8 @@ private:
     void lowerMist(const Statement& s, Mist& mist);
     void lowerRender(const Statement& s, RenderSettings& settings);
     void lowerBackground(const Statement& s, Scene& scene);
+    // lower_sections.cpp
+    void lowerSection(const Statement& s, Scene& scene);
 
     DiagnosticSink& mSink;
     EvalLimits mLimits;

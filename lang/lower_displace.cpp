@@ -16,24 +16,14 @@
 namespace kerf {
 namespace {
 
-/// v − 2·⌊v/2⌋ for a whole number v: 0 when even, 1 when odd.
-ExprId parity(ExprBuilder& e, ExprId v) {
-    return e.sub(v, e.mul(e.c(2.0), e.g.unary(Op::Floor, e.mul(v, e.c(0.5)))));
-}
-
 /// The pattern's own value (its weight of b, as render/pattern_eval.cpp computes it without
-/// filtering) at the pattern-space point q, mapped from [0, 1] to h in [−1, 1].
+/// filtering) at the pattern-space point q, mapped from [0, 1] to h in [−1, 1]. Only the
+/// continuous patterns: a jump (a checker's cell wall) lying along a ray keeps every interval
+/// over it ambiguous, and root isolation would split the whole ray down to the tolerance.
 ExprId heightExpr(const Pattern& pattern, ExprBuilder& e, const ExprId q[3]) {
     ExprGraph& g = e.g;
-    const auto floorOf = [&](ExprId v) { return g.unary(Op::Floor, v); };
     const auto fromWeight = [&](ExprId v) { return e.sub(e.mul(e.c(2.0), v), e.c(1.0)); };
     switch (pattern.kind) {
-        case Pattern::Kind::Checker:
-            return fromWeight(parity(e, e.add(e.add(floorOf(q[0]), floorOf(q[1])), floorOf(q[2]))));
-        case Pattern::Kind::Stripes: return fromWeight(parity(e, floorOf(q[0])));
-        case Pattern::Kind::Rings:
-            return fromWeight(parity(e, floorOf(e.sqrt(e.add(e.sqr(q[0]), e.sqr(q[2]))))));
-        case Pattern::Kind::Gradient: return fromWeight(e.sub(q[0], floorOf(q[0])));
         case Pattern::Kind::Noise: return g.noise(q[0], q[1], q[2], pattern.seed);
         case Pattern::Kind::Turbulence: {
             // Σ |noise(2ᵒ·q)| / 2ᵒ over the octaves, normalised to [0, 1].
@@ -48,8 +38,8 @@ ExprId heightExpr(const Pattern& pattern, ExprBuilder& e, const ExprId q[3]) {
             }
             return fromWeight(e.mul(sum, e.c(1.0 / norm)));
         }
+        default: return -1;
     }
-    return e.c(0.0);
 }
 
 bool hasMotion(const Node& node) {
@@ -69,6 +59,11 @@ NodePtr Lowering::displaced(const NodePtr& node, const Modifier& m) {
     const std::shared_ptr<const Pattern> pattern = lowerPattern(*m.pattern);
     const auto depthValue = evaluate(m.args[0], nullptr);
     if (!pattern || !depthValue) return nullptr;
+    if (pattern->kind != Pattern::Kind::Noise && pattern->kind != Pattern::Kind::Turbulence) {
+        error(m.pattern->loc, "displace takes a continuous pattern: noise or turbulence",
+              "the steps of '" + m.pattern->name + "' would make walls no ray could resolve");
+        return nullptr;
+    }
     if (depthValue->type != Value::Type::Number || !std::isfinite(depthValue->number)) {
         error(m.args[0].start, "the displacement's depth must be a finite number, got " +
                                    (depthValue->type == Value::Type::Number ? formatNumber(depthValue->number)
