@@ -5,6 +5,7 @@
 #include "app/cli_check.h"
 #include "app/cli_mesh.h"
 #include "app/cli_render.h"
+#include "app/cli_slice.h"
 #include "app/exit_codes.h"
 #include "io/image.h"
 
@@ -36,6 +37,8 @@ int run(int argc, char** argv) {
     CLI::App* benchCmd = addBenchCommand(cli, benchLine);
     MeshCommandLine meshLine;
     CLI::App* meshCmd = addMeshCommand(cli, meshLine);
+    SliceCommandLine sliceLine;
+    CLI::App* sliceCmd = addSliceCommand(cli, sliceLine);
 
     try {
         cli.parse(argc, argv);
@@ -52,6 +55,7 @@ int run(int argc, char** argv) {
         if (checkCmd->parsed()) return runCheck(checkLine);
         if (benchCmd->parsed()) return runBench(benchLine);
         if (meshCmd->parsed()) return runMesh(meshLine);
+        if (sliceCmd->parsed()) return runSlice(sliceLine);
     } catch (const UsageError& e) {
         std::cerr << "kerf: error: " << e.what() << "\n";
         return kExitUsage;
