@@ -128,7 +128,10 @@ struct RenderSettings {
     /// Adaptive sampling: a pixel stops once the standard error of its mean (luminance) is
     /// below this, after at least kMinAdaptiveSamples samples; 0: always spp samples.
     double noise = 0.0;
-    int maxDepth = 8;  ///< bounces of reflection and refraction
+    /// Bounces of reflection and refraction. High by default: paths end when their weight
+    /// falls below kMinRayWeight (render/shading.h) long before, so a closed glass body is not
+    /// darkened by running out of bounces (POV-Ray's max_trace_level 5 darkens its pixels).
+    int maxDepth = 64;
 };
 
 struct Scene {
