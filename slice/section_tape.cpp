@@ -2,6 +2,7 @@
 #include "slice/section_tape.h"
 
 #include "csg/interval_ops.h"
+#include "csg/noise.h"
 #include "csg/tree_tape.h"
 
 namespace kerf {
@@ -110,6 +111,13 @@ IntervalSlopes evalIntervalSlopes(const Tape& tape, const Interval& u, const Int
                 const bool aWins = isMin ? a[0].hi < b[0].lo : a[0].lo > b[0].hi;
                 const bool bWins = isMin ? b[0].hi < a[0].lo : b[0].lo > a[0].hi;
                 for (int k = 1; k < 3; ++k) r[k] = aWins ? a[k] : bWins ? b[k] : hull(a[k], b[k]);
+                break;
+            }
+            case Op::Noise: {  // the chain rule through the noise's gradient enclosure
+                const Interval* c = &s[3 * in.c];
+                Interval g[3];
+                r[0] = gradientNoiseRange(a[0], b[0], c[0], noiseSeed(in), g);
+                for (int k = 1; k < 3; ++k) r[k] = g[0] * a[k] + g[1] * b[k] + g[2] * c[k];
                 break;
             }
             default:
