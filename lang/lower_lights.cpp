@@ -29,10 +29,12 @@ std::optional<Light> Lowering::lowerLight(const Statement& s) {
         specs.push_back({"corner", PropertyType::Vector, true});
         specs.push_back({"edge1", PropertyType::Vector, true});
         specs.push_back({"edge2", PropertyType::Vector, true});
+        specs.push_back({"samples", PropertyType::Number});
     } else if (s.name == "sphere") {
         light.kind = Light::Kind::Sphere;
         specs.push_back({"at", PropertyType::Vector, true});
         specs.push_back({"radius", PropertyType::Number, true});
+        specs.push_back({"samples", PropertyType::Number});
     } else {
         std::string hint = didYouMean(s.name, {"point", "directional", "area", "sphere"});
         error(s.nameLoc, "unknown light kind '" + s.name + "'",
@@ -49,6 +51,7 @@ std::optional<Light> Lowering::lowerLight(const Statement& s) {
     bool ok = b.ok();
     ok &= readVector(b, "color", light.color);
     ok &= readBool(b, "shadows", light.shadows);
+    ok &= readInteger(b, "samples", 1, 4096, light.samples);
     if (light.kind == Light::Kind::Directional) {
         ok &= readVector(b, "direction", light.direction);
     } else {

@@ -95,6 +95,8 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const SceneGeometry& ge
       mMaxDepth(std::max(0, maxDepth)) {
     for (const Material& m : scene.materials)
         if (m.transmit > 0) mAnyTransmissive = true;
+    for (const Light& light : scene.lights)
+        mLightLattice.push_back(light.samples > 1 ? PixelSampler::latticeGenerator(uint32_t(light.samples)) : 1);
 }
 
 const Material& WhittedIntegrator::material(int32_t index) const {
@@ -209,32 +211,45 @@ Vec3 WhittedIntegrator::directLight(const Material& m, const Vec3& albedo, const
     for (size_t k = 0; k < mScene.lights.size(); ++k) {
         const Light& light = mScene.lights[k];
         const bool sampled = light.kind == Light::Kind::Area || light.kind == Light::Kind::Sphere;
-        // Each light of each bounce draws from its own dimension.
-        const SubPixel u =
+        // Each light of each bounce draws from its own dimension; its `samples` points are a
+        // rank-1 lattice shifted by that one point (Cranley–Patterson), so they cover the
+        // light evenly and their mean stays unbiased.
+        const SubPixel u0 =
             sampled ? ctx.sample2D(sample_dim::light(depth) + (uint32_t(k) << 16)) : SubPixel{};
-        LightSample ls = sampleLight(light, p, origin, u);
-        ls.radiance *= falloffScale(light, p);
-        const Vec3& l = ls.direction;
-        const Vec3& radiance = ls.radiance;
-        const double tmax = ls.distance;
-        if (maxComponent(radiance) <= 0) continue;
-        const double cosL = glm::dot(n, l);
-        if (cosL <= 0) continue;  // the light is behind the surface as seen
+        const uint32_t count = sampled ? uint32_t(std::max(1, light.samples)) : 1;
+        Vec3 lightSum(0.0);
+        for (uint32_t s = 0; s < count; ++s) {
+            SubPixel u = u0;
+            if (count > 1) {
+                u.x += double(s) / count;
+                u.y += double((uint64_t(s) * mLightLattice[k]) % count) / count;
+                u.x -= std::floor(u.x), u.y -= std::floor(u.y);
+            }
+            LightSample ls = sampleLight(light, p, origin, u);
+            ls.radiance *= falloffScale(light, p);
+            const Vec3& l = ls.direction;
+            const Vec3& radiance = ls.radiance;
+            const double tmax = ls.distance;
+            if (maxComponent(radiance) <= 0) continue;
+            const double cosL = glm::dot(n, l);
+            if (cosL <= 0) continue;  // the light is behind the surface as seen
 
-        Vec3 pass(1.0);
-        if (light.shadows) {
-            ++ctx.rays.shadow;
-            pass = transmittance(Ray{origin, l}, tmax, ctx);
-            if (maxComponent(pass) <= 0) continue;
-        }
+            Vec3 pass(1.0);
+            if (light.shadows) {
+                ++ctx.rays.shadow;
+                pass = transmittance(Ray{origin, l}, tmax, ctx);
+                if (maxComponent(pass) <= 0) continue;
+            }
 
-        Vec3 term = (1.0 - m.transmit) * m.diffuse * cosL * albedo;
-        if (m.specular > 0) {
-            const Vec3 r = 2.0 * cosL * n - l;  // l mirrored about n
-            const double cosR = std::max(0.0, -glm::dot(r, d));
-            term += Vec3(m.specular * std::pow(cosR, m.shininess));
+            Vec3 term = (1.0 - m.transmit) * m.diffuse * cosL * albedo;
+            if (m.specular > 0) {
+                const Vec3 r = 2.0 * cosL * n - l;  // l mirrored about n
+                const double cosR = std::max(0.0, -glm::dot(r, d));
+                term += Vec3(m.specular * std::pow(cosR, m.shininess));
+            }
+            lightSum += pass * radiance * term;
         }
-        sum += pass * radiance * term;
+        sum += lightSum / double(count);
     }
     return sum;
 }

@@ -120,6 +120,9 @@ private:
     const SceneGeometry& mShadowGeometry;
     int mMaxDepth;
     bool mAnyTransmissive = false;  ///< else shadow rays only ask for any hit
+    /// Per light: the generator of the rank-1 lattice its `samples` points follow (1 when it
+    /// takes one sample).
+    std::vector<uint32_t> mLightLattice;
 };
 
 }  // namespace kerf

@@ -73,6 +73,10 @@ struct Light {
     /// k = 2 for inverse_square, 1 for linear (POV-Ray's fade_power); 0: the falloff alone.
     double fadeDistance = 0.0;
     bool shadows = true;  ///< false: this light's shadow rays are not traced (nothing blocks it)
+    /// Area and sphere lights: points sampled on the light per shading point (their estimates
+    /// averaged), placed by a rank-1 lattice shifted by the sample's own point, so they are
+    /// stratified over the light and still unbiased.
+    int samples = 1;
 };
 
 /// The sky rays that hit nothing see: a flat colour, or a gradient from the horizon to the
