@@ -112,8 +112,8 @@ def kerf_command(kerf, path, output, extra):
 
 def pov_command(path, output, gradient, alpha=False):
     return ["povray", "+I" + path, "+O" + output, "+W%d" % SIZE[0], "+H%d" % SIZE[1], "-A",
-            "+Q9", "+WT%d" % THREADS, "-D", "-V", "+FN", "+L" + POV_INCLUDE, "Declare=MaxGradient=" + gradient] \
-        + (["+UA"] if alpha else [])
+            "+Q9", "+WT%d" % THREADS, "-D", "-V", "+FN", "+L" + POV_INCLUDE,
+            "Declare=MaxGradient=" + gradient] + (["+UA"] if alpha else [])
 
 
 def gradient_found(text):
@@ -221,7 +221,8 @@ def markdown(results, runs):
             "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
         for row in result["rows"]:
             m, c = row.get("mask"), row.get("coverage")
-            lines.append("| %s | %.3f | %.3f–%.3f | %.3f | %.2f | %d | %s | %s | %s | %s | %s |" % (
+            lines.append("| %s | %.3f | %.3f–%.3f | %.3f | %.2f | %d | %s | %s | %s | %s | %s |"
+                         % (
                 row["label"], row["trace"], min(row["traces"]), max(row["traces"]), row["wall"],
                 row["trace"] / pov[0]["trace"], row["rays"],
                 "%.2f" % row["evals_per_ray"] if "evals_per_ray" in row else "—",
@@ -249,7 +250,8 @@ def main():
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--scenes", nargs="+", default=list(SCENES), choices=list(SCENES))
     parser.add_argument("--pov-gradients", nargs="+", metavar="NAME=G1,G2", default=[],
-                        help="POV-Ray's max_gradients per scene (default: the file's, 1.1, 0.8, 0.5)")
+                        help="POV-Ray's max_gradients per scene "
+                        "(default: the file's, 1.1, 0.8, 0.5)")
     parser.add_argument("--pov-reference-factor", type=float, default=4.0)
     parser.add_argument("--write-only", action="store_true", help="write the scenes and stop")
     parser.add_argument("--out", default=os.path.join(here, "out", "displace"))

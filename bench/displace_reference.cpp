@@ -7,6 +7,7 @@
 ///     displace_reference --width W --height H --camera EX EY EZ LX LY LZ FOV
 ///         --sphere CX CY CZ R --pattern noise|turbulence --scale S --depth D
 ///         [--octaves N] [--seed K] [--threads N] --write REF.exr
+///     displace_reference --self-test
 ///
 /// The solid is what lang/lower_displace.cpp builds: {|p − c| − R − D·h(p − c) ≤ 0}, with
 /// h(q) = noise(q/S, K) for noise and 2·Σₒ|noise(2ᵒq/S, K + o)|/2ᵒ / Σₒ2⁻ᵒ − 1 for turbulence.
@@ -17,8 +18,6 @@
 /// |∇f| ≤ L = 1 + |D|·|∇h|max and no root lies within f(t)/L of t. Steps of f/L, at least
 /// kMinStep·t; a sign change then bisects to long-double precision. A span thinner than the
 /// minimum step may be stepped over: kerf drops spans thinner than its tolerance by design.
-#include "csg/noise.h"
-
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -30,6 +29,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "csg/noise.h"
 
 namespace {
 
@@ -61,14 +62,22 @@ Options parseArguments(int argc, char** argv) {
             return argv[++i];
         };
         auto number = [&]() { return std::stold(value()); };
-        if (arg == "--width") o.width = std::stoi(value());
-        else if (arg == "--height") o.height = std::stoi(value());
-        else if (arg == "--threads") o.threads = std::stoi(value());
-        else if (arg == "--octaves") o.octaves = std::stoi(value());
-        else if (arg == "--seed") o.seed = std::stoull(value());
-        else if (arg == "--scale") o.scale = number();
-        else if (arg == "--depth") o.depth = number();
-        else if (arg == "--write") o.write = value();
+        if (arg == "--width")
+            o.width = std::stoi(value());
+        else if (arg == "--height")
+            o.height = std::stoi(value());
+        else if (arg == "--threads")
+            o.threads = std::stoi(value());
+        else if (arg == "--octaves")
+            o.octaves = std::stoi(value());
+        else if (arg == "--seed")
+            o.seed = std::stoull(value());
+        else if (arg == "--scale")
+            o.scale = number();
+        else if (arg == "--depth")
+            o.depth = number();
+        else if (arg == "--write")
+            o.write = value();
         else if (arg == "--pattern") {
             const std::string p = value();
             if (p != "noise" && p != "turbulence") throw std::runtime_error("unknown pattern " + p);
@@ -80,7 +89,8 @@ Options parseArguments(int argc, char** argv) {
         } else if (arg == "--sphere") {
             for (int k = 0; k < 3; ++k) o.center[k] = number();
             o.radius = number();
-        } else throw std::runtime_error("unknown argument " + arg);
+        } else
+            throw std::runtime_error("unknown argument " + arg);
     }
     if (o.write.empty()) throw std::runtime_error("--write REF.exr is required");
     if (o.width < 1 || o.height < 1 || o.octaves < 1 || !(o.scale > 0))
@@ -135,7 +145,8 @@ Real firstRoot(const Displaced& s, V3 eye, V3 d, Real t0, Real t1) {
         Real next = std::min(t + step, t1), w = s.f(eye + next * d);
         if (w <= 0) {
             Real lo = t, hi = next;  // f(lo) > 0 ≥ f(hi)
-            for (int k = 0; k < 200 && hi - lo > 4 * std::numeric_limits<Real>::epsilon() * hi; ++k) {
+            for (int k = 0; k < 200 && hi - lo > 4 * std::numeric_limits<Real>::epsilon() * hi;
+                 ++k) {
                 const Real mid = (lo + hi) / 2;
                 (s.f(eye + mid * d) <= 0 ? hi : lo) = mid;
             }
@@ -156,7 +167,8 @@ Real traceRay(const Displaced& s, V3 eye, V3 d) {
     const V3 m = eye - s.o.center;
     const Real b = glm::dot(m, d), c = glm::dot(m, m) - outer * outer, disc = b * b - c;
     if (disc <= 0) return best;
-    const Real root = std::sqrt(disc), t0 = std::max(Real(0), -b - root), t1 = std::min(best, -b + root);
+    const Real root = std::sqrt(disc), t0 = std::max(Real(0), -b - root),
+               t1 = std::min(best, -b + root);
     if (t0 < t1) best = std::min(best, firstRoot(s, eye, d, t0, t1));
     return best;
 }
@@ -177,7 +189,8 @@ std::vector<Real> traceImage(const Options& o) {
                 depth[size_t(j) * o.width + i] = traceRay(solid, o.eye, d);
             }
     };
-    const int n = o.threads > 0 ? o.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    const int n =
+        o.threads > 0 ? o.threads : int(std::max(1u, std::thread::hardware_concurrency()));
     std::vector<std::thread> pool;
     for (int t = 0; t < n; ++t) pool.emplace_back(rows, t, n);
     for (std::thread& t : pool) t.join();
@@ -194,10 +207,61 @@ void writeDepthExr(const std::string& path, const std::vector<Real>& depth, int 
     out->close();
 }
 
+/// Checks of the oracle's two assumptions: with D = 0 it finds the sphere's and the floor's
+/// closed-form hits; and no sampled slope of f exceeds the Lipschitz bound it steps by.
+int selfTest() {
+    int failures = 0;
+    auto expect = [&](bool ok, const char* what) {
+        if (!ok)
+            std::fprintf(stderr, "displace_reference self-test failed: %s\n", what), ++failures;
+    };
+    Options o;
+    o.center = V3(0, 1, 0);
+    o.depth = 0;
+    const Displaced plain(o);
+    const V3 eye(0.3L, 2.2L, -4.2L);
+    for (int k = 0; k < 50; ++k) {
+        const V3 d = glm::normalize(V3(-0.3L + 0.01L * k, -0.25L - 0.004L * k, 1));
+        const V3 m = eye - o.center;
+        const Real b = glm::dot(m, d), disc = b * b - (glm::dot(m, m) - 1);
+        Real expected = disc > 0 ? -b - std::sqrt(disc) : Real(INFINITY);
+        expected = std::min(expected, -eye.y / d.y);
+        const Real got = traceRay(plain, eye, d);
+        expect(std::fabs(got - expected) <= 1e-15L * expected, "closed-form sphere and floor");
+    }
+    // Slopes along random segments of 1e-6 in the shell the search covers.
+    for (int turbulence = 0; turbulence < 2; ++turbulence) {
+        Options t;
+        t.turbulence = turbulence == 1;
+        t.octaves = t.turbulence ? 4 : 1;
+        t.scale = t.turbulence ? 0.5L : 0.3L;
+        const Displaced s(t);
+        Real worst = 0;
+        uint64_t state = 12345;
+        auto uniform = [&]() {  // a small LCG: deterministic, no library
+            state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+            return Real(state >> 11) / Real(1ULL << 53) * 2 - 1;
+        };
+        for (int k = 0; k < 200000; ++k) {
+            const V3 p(1.1L * uniform(), 1.1L * uniform(), 1.1L * uniform());
+            const V3 step = 1e-6L * glm::normalize(V3(uniform(), uniform(), uniform()));
+            worst = std::max(worst, std::fabs(s.f(p + step) - s.f(p)) / 1e-6L);
+        }
+        expect(worst <= s.lipschitz(), "a sampled slope above the Lipschitz bound");
+        std::fprintf(stderr,
+                     "displace_reference self-test: %s: largest sampled slope %.3Lg, "
+                     "bound %.3Lg\n",
+                     t.turbulence ? "turbulence" : "noise", worst, s.lipschitz());
+    }
+    if (failures == 0) std::fprintf(stderr, "displace_reference self-test: ok\n");
+    return failures == 0 ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     try {
+        if (argc == 2 && std::string(argv[1]) == "--self-test") return selfTest();
         const Options o = parseArguments(argc, argv);
         const std::vector<Real> depth = traceImage(o);
         writeDepthExr(o.write, depth, o.width, o.height);

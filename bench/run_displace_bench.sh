@@ -25,7 +25,8 @@ bench_setup run_displace_bench.sh
 bench_build="${BENCH_BUILD:-$root/build/bench-reference}"
 cmake -S bench -B "$bench_build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$bench_build" --target hit_mask displace_reference -j"$(nproc)" >/dev/null
-"$bench_build/hit_mask" --self-test   # the checker checks itself before it judges anything
+"$bench_build/hit_mask" --self-test   # the checkers check themselves before they judge anything
+"$bench_build/displace_reference" --self-test
 
 exec python3 bench/displace_bench.py --kerf "$KERF" --hit-mask "$bench_build/hit_mask" \
     --reference "$bench_build/displace_reference" "$@"
