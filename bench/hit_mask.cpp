@@ -8,6 +8,10 @@
 //       pixels POV-Ray misses where kerf hits (its holes), those whose 8 neighbours kerf also
 //       hits (holes away from any silhouette, so not a half-pixel framing difference), and
 //       pixels POV-Ray hits where kerf does not.
+//   hit_mask alpha REFERENCE.png TEST.png [--diff OUT.png]
+//       two POV-Ray images rendered with +UA (bench/displace_bench.py: POV-Ray at a given
+//       max_gradient against itself at a generous one): pixels TEST misses where REFERENCE
+//       hits (holes), those away from any silhouette, and pixels only TEST hits.
 //   hit_mask --self-test
 // --list FILE writes every disagreeing pixel as "i j first second" (inf = miss), and with depth
 // every pixel beyond T too.
@@ -178,6 +182,7 @@ int selfTest() {
 int usage() {
     std::fprintf(stderr, "usage: hit_mask depth TEST.exr REFERENCE.exr [--tolerance T] [--diff OUT.png] [--list OUT.txt]\n"
                          "       hit_mask coverage KERF.exr POV.png [--diff OUT.png] [--list OUT.txt]\n"
+                         "       hit_mask alpha REFERENCE.png TEST.png [--diff OUT.png] [--list OUT.txt]\n"
                          "       hit_mask --self-test\n");
     return 2;
 }
@@ -188,7 +193,8 @@ int main(int argc, char** argv) {
     if (argc == 2 && std::strcmp(argv[1], "--self-test") == 0) return selfTest();
     if (argc < 4) return usage();
     const std::string mode = argv[1];
-    if (mode != "depth" && mode != "coverage") return usage();
+    if (mode != "depth" && mode != "coverage" && mode != "alpha") return usage();
+    const bool alphas = mode == "alpha";
     double tolerance = 0.0;
     std::string diff, list;
     for (int k = 4; k < argc; ++k) {
@@ -199,12 +205,12 @@ int main(int argc, char** argv) {
     }
     const bool depths = mode == "depth";
     Mask a, b;
-    if (!readChannel(argv[2], 0, a) || !readChannel(argv[3], depths ? 0 : -1, b)) return 1;
+    if (!readChannel(argv[2], alphas ? -1 : 0, a) || !readChannel(argv[3], depths ? 0 : -1, b)) return 1;
     if (a.width != b.width || a.height != b.height) {
         std::fprintf(stderr, "hit_mask: sizes differ (%dx%d, %dx%d)\n", a.width, a.height, b.width, b.height);
         return 1;
     }
-    depthHits(a);
+    alphas ? alphaHits(a) : depthHits(a);
     depths ? depthHits(b) : alphaHits(b);
     const Counts c = compare(a, b, depths, tolerance);
     if (!diff.empty() && !writeDiff(diff, a, b)) return 1;
@@ -215,6 +221,11 @@ int main(int argc, char** argv) {
                     "\"tolerance\": %.9g, \"over_tolerance\": %ld}\n",
                     long(a.value.size()), c.firstHit, c.secondHit, c.both, c.firstOnly,
                     c.secondOnly, c.relMax, tolerance, c.overTolerance);
+    else if (alphas)
+        std::printf("{\"pixels\": %ld, \"reference_hit\": %ld, \"test_hit\": %ld, \"both\": %ld, "
+                    "\"test_missed\": %ld, \"test_missed_interior\": %ld, \"test_extra\": %ld}\n",
+                    long(a.value.size()), c.firstHit, c.secondHit, c.both, c.firstOnly,
+                    c.firstOnlyInterior, c.secondOnly);
     else
         std::printf("{\"pixels\": %ld, \"kerf_hit\": %ld, \"pov_hit\": %ld, \"both\": %ld, "
                     "\"pov_missed\": %ld, \"pov_missed_interior\": %ld, \"pov_extra\": %ld}\n",
