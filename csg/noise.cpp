@@ -3,6 +3,7 @@
 // same order, so pattern colours keep their bits.
 #include "csg/noise.h"
 
+#include "csg/interval_ops.h"
 #include "csg/mix_bits.h"
 
 #include <algorithm>
@@ -90,12 +91,42 @@ Dual lerp(const Dual& a, const Dual& b, const Dual& t) {
 
 Interval clampUnit(const Interval& t) { return {std::clamp(t.lo, 0.0, 1.0), std::clamp(t.hi, 0.0, 1.0)}; }
 
+// The enclosures run inline, with the evaluators' kernels (csg/interval_ops.h): they are most
+// of the cost of tracing a displaced solid.
+using interval_kernel::down;
+using interval_kernel::up;
+
+[[gnu::always_inline]] inline Interval join(const Interval& a, const Interval& b) {
+    return {std::min(a.lo, b.lo), std::max(a.hi, b.hi), a.maybeNan || b.maybeNan};
+}
+
+/// (1 − t)·A + t·B for one t in [0, 1], enclosed: both weights are ≥ 0, so each end of the
+/// result comes from the matching ends of A and B (1 − t is enclosed, as it may round).
+[[gnu::always_inline]] inline Interval mixAt(const Interval& A, const Interval& B, double t) {
+    const double wLo = down(1.0 - t), wHi = up(1.0 - t);
+    const double lo = down(down((A.lo >= 0.0 ? wLo : wHi) * A.lo) + down(t * B.lo));
+    const double hi = up(up((A.hi >= 0.0 ? wHi : wLo) * A.hi) + up(t * B.hi));
+    return {std::max(lo, std::min(A.lo, B.lo)), std::min(hi, std::max(A.hi, B.hi)), A.maybeNan || B.maybeNan};
+}
+
 /// The range of a + t·(b − a) for a ∈ A, b ∈ B, t ∈ T ⊂ [0, 1], taking a, b and t as
 /// independent: it is (1 − t)·a + t·b with both weights ≥ 0, so linear in each argument, and
-/// its extremes are at T's ends with A's and B's matching ends.
+/// its extremes are at T's ends with A's and B's matching ends. (A convex combination never
+/// leaves [min(A.lo, B.lo), max(A.hi, B.hi)]: mixAt clips its rounding to that.)
 Interval lerpRange(const Interval& A, const Interval& B, const Interval& T) {
-    const auto at = [&](double t) { return (Interval(1.0) - Interval(t)) * A + Interval(t) * B; };
-    return T.lo == T.hi ? at(T.lo) : hull(at(T.lo), at(T.hi));
+    return T.lo == T.hi ? mixAt(A, B, T.lo) : join(mixAt(A, B, T.lo), mixAt(A, B, T.hi));
+}
+
+/// fade over [0, 1] is increasing: its range over [lo, hi] is its values at the ends, each
+/// enclosed by interval arithmetic on the point.
+Interval fadeRange(const Interval& o) {
+    const auto at = [](double t) {
+        using namespace interval_kernel;
+        const Interval T(t);
+        const Interval inner = add(mul(T, sub(mul(T, Interval(6.0)), Interval(15.0))), Interval(10.0));
+        return mul(mul(mul(T, T), T), inner);
+    };
+    return {std::clamp(at(o.lo).lo, 0.0, 1.0), std::clamp(at(o.hi).hi, 0.0, 1.0)};
 }
 
 /// Interpolates c over the axes other than `skip` (lower axis first) with weights W; with
@@ -123,28 +154,40 @@ Interval interpolate(const Interval c[2][2][2], const Interval W[3], int skip, i
 /// The noise over a box inside one lattice cell (lo = the cell's corner), and its gradient
 /// when `gradient` is not null.
 Interval cellRange(const int64_t cell[3], const Interval box[3], uint64_t seed, Interval* gradient) {
-    Interval o[3], W[3];
+    using interval_kernel::add;
+    using interval_kernel::sub;
+    Interval o[2][3], W[3];  // o[s][a]: the offset from the cell's corner s (0 or 1) along a
     for (int a = 0; a < 3; ++a) {
-        o[a] = clampUnit(box[a] - Interval(double(cell[a])));
-        // fade is increasing on [0, 1]: its range is its values at the ends, enclosed.
-        W[a] = clampUnit(Interval(fade(Interval(o[a].lo)).lo, fade(Interval(o[a].hi)).hi));
+        o[0][a] = clampUnit(sub(box[a], Interval(double(cell[a]))));
+        o[1][a] = sub(o[0][a], Interval(1.0));
+        W[a] = fadeRange(o[0][a]);
     }
     Interval c[2][2][2], g[3][2][2][2];
     for (int a = 0; a < 2; ++a)
         for (int b = 0; b < 2; ++b)
             for (int d = 0; d < 2; ++d) {
                 const double* k = gradientAt(cell[0] + a, cell[1] + b, cell[2] + d, seed);
-                c[a][b][d] = Interval(k[0]) * (o[0] - Interval(a)) + Interval(k[1]) * (o[1] - Interval(b)) +
-                             Interval(k[2]) * (o[2] - Interval(d));
-                for (int axis = 0; axis < 3; ++axis) g[axis][a][b][d] = Interval(k[axis]);
+                // g · offset with every g component −1, 0 or 1: sums and negations, exact.
+                const int side[3] = {a, b, d};
+                Interval sum(0.0);
+                for (int axis = 0; axis < 3; ++axis) {
+                    const Interval& off = o[side[axis]][axis];
+                    if (k[axis] > 0.0) sum = add(sum, off);
+                    if (k[axis] < 0.0) sum = sub(sum, off);
+                    g[axis][a][b][d] = Interval(k[axis]);
+                }
+                c[a][b][d] = sum;
             }
     const Interval value = interpolate(c, W, -1, 0);
     if (!gradient) return value;
     // ∂n/∂x_k = fade′(o_k)·(the far face's interpolation − the near face's) + the gradients'
     // own interpolation.
     for (int axis = 0; axis < 3; ++axis) {
-        const Interval across = interpolate(c, W, axis, 1) - interpolate(c, W, axis, 0);
-        gradient[axis] = fadeSlope(o[axis]) * across + interpolate(g[axis], W, -1, 0);
+        using interval_kernel::mul;
+        const Interval across = sub(interpolate(c, W, axis, 1), interpolate(c, W, axis, 0));
+        const Interval t = o[0][axis];
+        const Interval slope = mul(mul(Interval(30.0), mul(t, t)), mul(o[1][axis], o[1][axis]));
+        gradient[axis] = add(mul(slope, across), interpolate(g[axis], W, -1, 0));
     }
     return value;
 }
