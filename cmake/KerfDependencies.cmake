@@ -10,3 +10,6 @@ find_package(Catch2 REQUIRED)
 # OpenVDB ships its find module (not a config file) in its own folder.
 list(APPEND CMAKE_MODULE_PATH /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/OpenVDB)
 find_package(OpenVDB REQUIRED)
+# Assimp reads mesh files (OBJ, PLY, STL, glTF) for mesh/ only; Debian's libassimp-dev ships a
+# CMake config with the imported target assimp::assimp.
+find_package(assimp REQUIRED)

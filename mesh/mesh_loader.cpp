@@ -1,0 +1,200 @@
+// Mesh files through Assimp. Assimp parses; this file checks what it returns (a null or
+// incomplete scene, missing arrays, indices, finite coordinates) before anything is copied,
+// flattens the node hierarchy into one mesh, and joins equal vertices across meshes.
+#include "mesh/mesh_loader.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <unordered_map>
+
+namespace kerf {
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+    throw MeshError(path + ": " + what);
+}
+
+std::string lowerExtension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+/// The node transform in double: Assimp's matrices are row-major (a1..a4 is the first row).
+struct NodeTransform {
+    glm::dmat4 worldFromMesh{1.0};
+    glm::dmat3 normalWorldFromMesh{1.0};
+};
+
+glm::dmat4 toGlm(const aiMatrix4x4& m) {
+    glm::dmat4 r;
+    const double rows[4][4] = {{m.a1, m.a2, m.a3, m.a4},
+                               {m.b1, m.b2, m.b3, m.b4},
+                               {m.c1, m.c2, m.c3, m.c4},
+                               {m.d1, m.d2, m.d3, m.d4}};
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col) r[col][row] = rows[row][col];
+    return r;
+}
+
+struct Placement {
+    const aiMesh* mesh;
+    NodeTransform transform;
+};
+
+void collect(const aiScene& scene, const aiNode& node, const glm::dmat4& parent,
+             std::vector<Placement>& out, const std::string& path, int depth) {
+    // A hierarchy deeper than this is a cycle or a hostile file, not a model.
+    if (depth > 1024) fail(path, "node hierarchy deeper than 1024 levels");
+    const glm::dmat4 world = parent * toGlm(node.mTransformation);
+    NodeTransform t;
+    t.worldFromMesh = world;
+    t.normalWorldFromMesh = glm::transpose(glm::inverse(glm::dmat3(world)));
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+        if (node.mMeshes == nullptr || node.mMeshes[i] >= scene.mNumMeshes ||
+            scene.mMeshes == nullptr || scene.mMeshes[node.mMeshes[i]] == nullptr)
+            fail(path, "a node refers to a mesh that does not exist");
+        out.push_back({scene.mMeshes[node.mMeshes[i]], t});
+    }
+    for (unsigned i = 0; i < node.mNumChildren; ++i) {
+        if (node.mChildren == nullptr || node.mChildren[i] == nullptr)
+            fail(path, "a node has a missing child");
+        collect(scene, *node.mChildren[i], world, out, path, depth + 1);
+    }
+}
+
+bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+/// Position, normal and UV of one vertex, compared exactly (with -0 equal to +0).
+struct VertexKey {
+    double v[8];
+    bool operator==(const VertexKey& o) const {
+        for (int i = 0; i < 8; ++i)
+            if (v[i] != o.v[i]) return false;
+        return true;
+    }
+};
+
+struct VertexKeyHash {
+    size_t operator()(const VertexKey& k) const {
+        uint64_t h = 1469598103934665603ull;
+        for (double d : k.v) {
+            const double z = d == 0.0 ? 0.0 : d;  // -0 and +0 are one vertex
+            uint64_t bits;
+            std::memcpy(&bits, &z, sizeof bits);
+            h = (h ^ bits) * 1099511628211ull;
+            h ^= h >> 29;
+        }
+        return static_cast<size_t>(h);
+    }
+};
+
+}  // namespace
+
+TriangleMesh loadMesh(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) fail(path, "no such file");
+    if (!std::filesystem::is_regular_file(path, ec)) fail(path, "not a regular file");
+    if (!std::ifstream(path, std::ios::binary)) fail(path, "cannot be opened for reading");
+    if (std::filesystem::file_size(path, ec) == 0) fail(path, "empty file");
+
+    Assimp::Importer importer;
+    const aiScene* scene = nullptr;
+    try {
+        scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                            aiProcess_ValidateDataStructure);
+    } catch (const std::exception& e) {
+        fail(path, std::string("not a readable mesh (") + e.what() + ")");
+    }
+    if (scene == nullptr) {
+        const std::string why = importer.GetErrorString();
+        fail(path, "not a readable mesh" + (why.empty() ? std::string() : " (" + why + ")"));
+    }
+    if (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) fail(path, "incomplete scene (no mesh data)");
+    if (scene->mRootNode == nullptr) fail(path, "the scene has no root node");
+
+    std::vector<Placement> placements;
+    collect(*scene, *scene->mRootNode, glm::dmat4(1.0), placements, path, 0);
+
+    // STL normals are per facet, not smooth-shading normals: dropping them joins by position.
+    const bool isStl = lowerExtension(path) == ".stl";
+    bool keepNormals = !isStl, keepUvs = true;
+    for (const Placement& p : placements) {
+        if (p.mesh->mNumVertices > 0 && p.mesh->mVertices == nullptr)
+            fail(path, "a mesh has vertices without positions");
+        keepNormals = keepNormals && p.mesh->mNormals != nullptr;
+        keepUvs = keepUvs && p.mesh->mTextureCoords[0] != nullptr;
+    }
+
+    TriangleMesh out;
+    out.source = path;
+    std::unordered_map<VertexKey, uint32_t, VertexKeyHash> joined;
+    std::vector<uint32_t> local;  // this mesh's vertex -> joined index
+    for (const Placement& p : placements) {
+        const aiMesh& m = *p.mesh;
+        local.assign(m.mNumVertices, std::numeric_limits<uint32_t>::max());
+        for (unsigned f = 0; f < m.mNumFaces; ++f) {
+            if (m.mFaces == nullptr) fail(path, "a mesh has faces without indices");
+            const aiFace& face = m.mFaces[f];
+            if (face.mNumIndices != 3) continue;  // points and lines
+            if (face.mIndices == nullptr) fail(path, "a face has no indices");
+            std::array<uint32_t, 3> tri{};
+            for (int c = 0; c < 3; ++c) {
+                const unsigned i = face.mIndices[c];
+                if (i >= m.mNumVertices)
+                    fail(path, "vertex index " + std::to_string(i) + " out of range (the mesh has " +
+                                   std::to_string(m.mNumVertices) + " vertices)");
+                if (local[i] == std::numeric_limits<uint32_t>::max()) {
+                    const aiVector3D& a = m.mVertices[i];
+                    const Vec3 raw(a.x, a.y, a.z);
+                    if (!finite(raw)) fail(path, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+                    const Vec3 pos = Vec3(p.transform.worldFromMesh * glm::dvec4(raw, 1.0));
+                    if (!finite(pos)) fail(path, "vertex " + std::to_string(i) + " is not finite once placed by its node");
+                    VertexKey key{{pos.x, pos.y, pos.z, 0, 0, 0, 0, 0}};
+                    Vec3 normal(0.0);
+                    std::array<double, 2> uv{0.0, 0.0};
+                    if (keepNormals) {
+                        const aiVector3D& n = m.mNormals[i];
+                        normal = p.transform.normalWorldFromMesh * Vec3(n.x, n.y, n.z);
+                        const double len = glm::length(normal);
+                        // A zero or broken normal is kept as zero: shading falls back to the face.
+                        normal = (std::isfinite(len) && len > 0.0) ? normal / len : Vec3(0.0);
+                        key.v[3] = normal.x, key.v[4] = normal.y, key.v[5] = normal.z;
+                    }
+                    if (keepUvs) {
+                        const aiVector3D& t = m.mTextureCoords[0][i];
+                        uv = {std::isfinite(t.x) ? t.x : 0.0, std::isfinite(t.y) ? t.y : 0.0};
+                        key.v[6] = uv[0], key.v[7] = uv[1];
+                    }
+                    auto [it, inserted] = joined.try_emplace(key, static_cast<uint32_t>(out.positions.size()));
+                    if (inserted) {
+                        if (out.positions.size() == std::numeric_limits<uint32_t>::max())
+                            fail(path, "more than 2^32 - 1 vertices");
+                        out.positions.push_back(pos);
+                        if (keepNormals) out.normals.push_back(normal);
+                        if (keepUvs) out.uvs.push_back(uv);
+                    }
+                    local[i] = it->second;
+                }
+                tri[c] = local[i];
+            }
+            out.triangles.push_back(tri);
+        }
+    }
+    if (out.triangles.empty()) fail(path, "no triangles");
+    return out;
+}
+
+}  // namespace kerf
