@@ -2,6 +2,7 @@
 // incomplete scene, missing arrays, indices, finite coordinates) before anything is copied,
 // flattens the node hierarchy into one mesh, and joins equal vertices across meshes.
 #include "mesh/mesh_loader.h"
+#include "mesh/mesh_loader_truncation.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -109,6 +110,7 @@ TriangleMesh loadMesh(const std::string& path) {
     if (!std::filesystem::is_regular_file(path, ec)) fail(path, "not a regular file");
     if (!std::ifstream(path, std::ios::binary)) fail(path, "cannot be opened for reading");
     if (std::filesystem::file_size(path, ec) == 0) fail(path, "empty file");
+    if (const auto why = binaryMeshTruncation(path)) fail(path, *why);
 
     Assimp::Importer importer;
     const aiScene* scene = nullptr;

@@ -1,0 +1,147 @@
+// Sizes of binary STL and PLY files against their headers. Only what the header declares is
+// walked (for PLY lists, each count is read to skip its items), never beyond the file's end.
+#include "mesh/mesh_loader_truncation.h"
+
+#include <cctype>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <vector>
+
+namespace kerf {
+namespace {
+
+std::string readAll(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+std::optional<std::string> stlTruncation(const std::string& data) {
+    // Readers take a file starting with "solid" for ASCII; anything else is binary.
+    if (data.compare(0, 5, "solid") == 0) return std::nullopt;
+    if (data.size() < 84)
+        return "truncated binary STL: " + std::to_string(data.size()) +
+               " bytes, less than the 84 of its header";
+    uint32_t facets;
+    std::memcpy(&facets, data.data() + 80, 4);  // little-endian by the format, as is x86-64
+    const uint64_t needed = 84 + 50 * uint64_t(facets);
+    if (data.size() < needed)
+        return "truncated binary STL: the header declares " + std::to_string(facets) +
+               " facets (" + std::to_string(needed) + " bytes) but the file has " +
+               std::to_string(data.size()) + " bytes";
+    return std::nullopt;
+}
+
+/// Bytes of a PLY scalar type, or 0 for a name the format does not have.
+uint64_t plyTypeSize(const std::string& type) {
+    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" ||
+        type == "float" || type == "float32")
+        return 4;
+    if (type == "double" || type == "float64") return 8;
+    return 0;
+}
+
+struct PlyProperty {
+    uint64_t size = 0;       ///< scalar size, or the list's item size
+    uint64_t countSize = 0;  ///< 0 for a scalar, else the size of the list's count
+    bool countSigned = false;
+};
+
+struct PlyElement {
+    std::string name;
+    uint64_t count = 0;
+    std::vector<PlyProperty> properties;
+};
+
+std::optional<std::string> plyTruncation(const std::string& data) {
+    if (data.compare(0, 4, "ply\n") != 0 && data.compare(0, 5, "ply\r\n") != 0) return std::nullopt;
+    const size_t end = data.find("end_header");
+    if (end == std::string::npos) return std::nullopt;  // the importer reports the bad header
+    size_t pos = data.find('\n', end);
+    if (pos == std::string::npos) return std::nullopt;
+    ++pos;
+
+    std::istringstream header(data.substr(0, end));
+    std::string line;
+    bool binary = false, bigEndian = false;
+    std::vector<PlyElement> elements;
+    while (std::getline(header, line)) {
+        std::istringstream words(line);
+        std::string key;
+        words >> key;
+        if (key == "format") {
+            std::string format;
+            words >> format;
+            binary = format != "ascii";
+            bigEndian = format == "binary_big_endian";
+        } else if (key == "element") {
+            PlyElement e;
+            if (!(words >> e.name >> e.count)) return std::nullopt;
+            elements.push_back(e);
+        } else if (key == "property" && !elements.empty()) {
+            std::string type;
+            words >> type;
+            PlyProperty p;
+            if (type == "list") {
+                std::string countType, itemType;
+                words >> countType >> itemType;
+                p.countSize = plyTypeSize(countType);
+                p.size = plyTypeSize(itemType);
+                p.countSigned = countType.find('u') != 0;
+                if (p.countSize == 0 || p.size == 0 || p.countSize > 4) return std::nullopt;
+            } else if ((p.size = plyTypeSize(type)) == 0) {
+                return std::nullopt;
+            }
+            elements.back().properties.push_back(p);
+        }
+    }
+    if (!binary) return std::nullopt;
+
+    const uint64_t size = data.size();
+    auto truncated = [&](const PlyElement& e, uint64_t row) {
+        return "truncated binary PLY: the data ends after " + std::to_string(row) + " of the " +
+               std::to_string(e.count) + " '" + e.name + "' rows its header declares";
+    };
+    for (const PlyElement& e : elements) {
+        if (e.properties.empty()) continue;  // no bytes, however many rows
+        for (uint64_t row = 0; row < e.count; ++row) {
+            for (const PlyProperty& p : e.properties) {
+                if (p.countSize == 0) {
+                    if (size - pos < p.size) return truncated(e, row);
+                    pos += p.size;
+                    continue;
+                }
+                if (size - pos < p.countSize) return truncated(e, row);
+                unsigned char b[4] = {0, 0, 0, 0};
+                std::memcpy(b, data.data() + pos, p.countSize);
+                int64_t n = 0;
+                for (uint64_t i = 0; i < p.countSize; ++i)
+                    n |= int64_t(b[bigEndian ? p.countSize - 1 - i : i]) << (8 * i);
+                if (p.countSigned && (n >> (8 * p.countSize - 1)) & 1) n -= int64_t(1) << (8 * p.countSize);
+                if (n < 0) return "negative list length in " + e.name + " " + std::to_string(row);
+                pos += p.countSize;
+                if ((size - pos) / p.size < uint64_t(n)) return truncated(e, row);
+                pos += uint64_t(n) * p.size;
+            }
+            // Every row takes at least a byte, so a huge declared count stops here.
+            if (pos == size && row + 1 < e.count) return truncated(e, row + 1);
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> binaryMeshTruncation(const std::string& path) {
+    std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".stl" && ext != ".ply") return std::nullopt;
+    const std::string data = readAll(path);
+    return ext == ".stl" ? stlTruncation(data) : plyTruncation(data);
+}
+
+}  // namespace kerf

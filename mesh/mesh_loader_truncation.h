@@ -1,0 +1,18 @@
+/// @file mesh/mesh_loader_truncation.h
+/// @brief Whether a binary STL or PLY file holds all the data its header declares. Checked
+/// before Assimp reads it: Assimp fills a short binary PLY's missing data with garbage (which
+/// then fails only as "index out of range", or not at all) and calls a short binary STL
+/// "undetermined"; this check says what is wrong.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace kerf {
+
+/// @brief For a binary STL (not starting with "solid") or a binary PLY: what is missing
+/// ("truncated: …"), or nothing when the file is complete, ASCII, or of another format (then
+/// the importer decides). Reads only the header and, for PLY lists, their counts.
+std::optional<std::string> binaryMeshTruncation(const std::string& path);
+
+}  // namespace kerf
