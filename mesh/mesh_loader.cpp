@@ -37,6 +37,7 @@ std::string lowerExtension(const std::string& path) {
 struct NodeTransform {
     glm::dmat4 worldFromMesh{1.0};
     glm::dmat3 normalWorldFromMesh{1.0};
+    bool mirrors = false;  ///< negative determinant: corners swap to keep outward faces outward
 };
 
 glm::dmat4 toGlm(const aiMatrix4x4& m) {
@@ -63,6 +64,7 @@ void collect(const aiScene& scene, const aiNode& node, const glm::dmat4& parent,
     NodeTransform t;
     t.worldFromMesh = world;
     t.normalWorldFromMesh = glm::transpose(glm::inverse(glm::dmat3(world)));
+    t.mirrors = glm::determinant(glm::dmat3(world)) < 0.0;
     for (unsigned i = 0; i < node.mNumMeshes; ++i) {
         if (node.mMeshes == nullptr || node.mMeshes[i] >= scene.mNumMeshes ||
             scene.mMeshes == nullptr || scene.mMeshes[node.mMeshes[i]] == nullptr)
@@ -192,6 +194,7 @@ TriangleMesh loadMesh(const std::string& path) {
                 }
                 tri[c] = local[i];
             }
+            if (p.transform.mirrors) std::swap(tri[1], tri[2]);
             out.triangles.push_back(tri);
         }
     }

@@ -179,21 +179,29 @@ inline std::string base64(const std::string& bytes) {
     return out;
 }
 
-/// glTF 2.0 with the buffer embedded as base64: positions at the origin, float32; indices
-/// uint16; one node whose translation moves the octahedron to kOctaCenter.
-inline std::string gltfText() {
+/// The octahedron's glTF buffer: positions at the origin (float32), then indices (uint16).
+inline std::string gltfBuffer() {
     std::string buffer;
     for (const Vec3& p : octahedronVerticesAtOrigin())
         for (int i = 0; i < 3; ++i) appendBytes(buffer, static_cast<float>(p[i]));
-    const size_t positionBytes = buffer.size();
     for (const auto& t : octahedronTriangles())
         for (uint32_t v : t) appendBytes(buffer, static_cast<uint16_t>(v));
-    const size_t indexBytes = buffer.size() - positionBytes;
+    return buffer;
+}
+
+/// glTF 2.0 JSON for the octahedron: one node whose translation moves it to kOctaCenter
+/// (with `mirrored`, also a scale of -1 in x, which leaves the symmetric octahedron's
+/// positions in place but reverses its triangles' winding). `uri` empty: the buffer is a
+/// .glb's binary chunk.
+inline std::string gltfJson(const std::string& uri, bool mirrored) {
+    const size_t positionBytes = 6 * 3 * sizeof(float);
+    const size_t indexBytes = 8 * 3 * sizeof(uint16_t);
     const double r = kOctaRadius;
     std::ostringstream s;
     s << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],)"
-      << R"("nodes": [{"mesh": 0, "translation": [)" << kOctaCenter.x << ", " << kOctaCenter.y
-      << ", " << kOctaCenter.z << "]}],"
+      << R"("nodes": [{"mesh": 0, )" << (mirrored ? R"("scale": [-1, 1, 1], )" : "")
+      << R"("translation": [)" << kOctaCenter.x << ", " << kOctaCenter.y << ", "
+      << kOctaCenter.z << "]}],"
       << R"("meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4}]}],)"
       << R"("accessors": [{"bufferView": 0, "componentType": 5126, "count": 6, "type": "VEC3", )"
       << R"("min": [)" << -r << ", " << -r << ", " << -r << R"(], "max": [)" << r << ", " << r
@@ -202,9 +210,31 @@ inline std::string gltfText() {
       << R"("bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": )" << positionBytes
       << R"(, "target": 34962}, {"buffer": 0, "byteOffset": )" << positionBytes
       << R"(, "byteLength": )" << indexBytes << R"(, "target": 34963}],)"
-      << R"("buffers": [{"byteLength": )" << buffer.size()
-      << R"(, "uri": "data:application/octet-stream;base64,)" << base64(buffer) << R"("}]})";
+      << R"("buffers": [{"byteLength": )" << positionBytes + indexBytes;
+    if (!uri.empty()) s << R"(, "uri": ")" << uri << '"';
+    s << "}]}";
     return s.str();
+}
+
+/// .gltf with the buffer embedded as a base64 data URI.
+inline std::string gltfText(bool mirrored = false) {
+    return gltfJson("data:application/octet-stream;base64," + base64(gltfBuffer()), mirrored);
+}
+
+/// .glb: a 12-byte header, a JSON chunk padded with spaces and a binary chunk padded with
+/// zeros, each to 4 bytes.
+inline std::string glbText() {
+    std::string json = gltfJson("", false), bin = gltfBuffer();
+    json.append((4 - json.size() % 4) % 4, ' ');
+    bin.append((4 - bin.size() % 4) % 4, '\0');
+    std::string out = "glTF";
+    appendBytes(out, uint32_t(2));
+    appendBytes(out, uint32_t(12 + 8 + json.size() + 8 + bin.size()));
+    appendBytes(out, uint32_t(json.size()));
+    out += "JSON" + json;
+    appendBytes(out, uint32_t(bin.size()));
+    out += std::string("BIN\0", 4) + bin;
+    return out;
 }
 
 }  // namespace kerf::test

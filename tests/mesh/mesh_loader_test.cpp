@@ -39,6 +39,9 @@ TEST_CASE("loadMesh::every format gives the same solid octahedron") {
         {"octa.obj", objText()},          {"octa_ascii.ply", plyAsciiText()},
         {"octa_binary.ply", plyBinaryText()}, {"octa_ascii.stl", stlAsciiText()},
         {"octa_binary.stl", stlBinaryText()}, {"octa.gltf", gltfText()},
+        {"octa.glb", glbText()},
+        // A node that mirrors: its triangles are swapped back to face outward.
+        {"octa_mirrored.gltf", gltfText(true)},
     };
     for (const auto& [name, text] : files) {
         SECTION(name) {
