@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstring>
 #include <sstream>
+#include <stdexcept>
 #include <unordered_map>
 
 namespace kerf {
@@ -53,7 +54,14 @@ HalfEdges build(const TriangleMesh& mesh, DirectedMap& directed) {
     he.origin.resize(n);
     he.twin.assign(n, HalfEdges::kNone);
     for (size_t t = 0; t < mesh.triangles.size(); ++t)
-        for (int c = 0; c < 3; ++c) he.origin[3 * t + c] = he.weld[mesh.triangles[t][c]];
+        for (int c = 0; c < 3; ++c) {
+            const uint32_t v = mesh.triangles[t][c];
+            if (v >= mesh.positions.size())
+                throw std::out_of_range("triangle " + std::to_string(t) + " uses vertex " +
+                                        std::to_string(v) + " of " +
+                                        std::to_string(mesh.positions.size()));
+            he.origin[3 * t + c] = he.weld[v];
+        }
 
     directed.reserve(n);
     for (uint32_t h = 0; h < n; ++h) {

@@ -53,9 +53,11 @@ struct MeshReport {
 
 /// Builds the half-edges, linking twins through a hash of the directed edge. Triangles with a
 /// repeated (welded) vertex take no part in the links: their half-edges have no twin.
+/// Both functions throw std::out_of_range for an index past the positions (loadMesh never
+/// returns one).
 HalfEdges buildHalfEdges(const TriangleMesh& mesh);
 
-/// Counts what `MeshReport` lists. Indices must be in range (loadMesh guarantees it).
+/// Counts what `MeshReport` lists.
 MeshReport validateMesh(const TriangleMesh& mesh);
 
 /// "boundary", "non-manifold" or "inconsistently oriented", for messages.

@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <stdexcept>
+
 using namespace kerf;
 using namespace kerf::test;
 
@@ -145,4 +147,10 @@ TEST_CASE("validateMesh::degenerate triangles are counted") {
         CHECK(r.boundaryEdges == 3);
         CHECK_FALSE(r.solid);
     }
+}
+
+TEST_CASE("validateMesh::an index past the positions is an error, not a read") {
+    TriangleMesh m = octahedronMesh();
+    m.triangles.push_back({0, 2, 6});
+    CHECK_THROWS_AS(validateMesh(m), std::out_of_range);
 }
