@@ -1,7 +1,7 @@
 /// @file mesh/mesh_loader_truncation.h
 /// @brief Whether a binary STL or PLY file holds all the data its header declares. Checked
-/// before Assimp reads it: Assimp fills a short binary PLY's missing data with garbage (which
-/// then fails only as "index out of range", or not at all) and calls a short binary STL
+/// before Assimp reads it: Assimp takes garbage for a short binary PLY's missing data (which
+/// failed as "index out of range" at every cut we tried) and calls a short binary STL
 /// "undetermined"; this check says what is wrong.
 #pragma once
 
