@@ -116,6 +116,8 @@ TriangleMesh loadMesh(const std::string& path) {
 
     Assimp::Importer importer;
     const aiScene* scene = nullptr;
+    // ValidateDataStructure runs before the other steps and is load-bearing: without it,
+    // Assimp 5.2's Triangulate read out of bounds (valgrind) on garbage indices of a short PLY.
     try {
         scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                                             aiProcess_ValidateDataStructure);
