@@ -157,3 +157,23 @@ TEST_CASE("loadMesh::malformed files are errors naming the file") {
         requireMeshError(dir.write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\np 1 2 3\n"), "");
     }
 }
+
+TEST_CASE("loadMesh::UVs are kept per vertex") {
+    // A unit square whose UV at each corner equals its (x, y): an open sheet with 4 boundary edges.
+    TempDir dir;
+    const std::string path = dir.write("sheet.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                                    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                                                    "f 1/1 2/2 3/3 4/4\n");
+    const TriangleMesh mesh = loadMesh(path);
+    CHECK(mesh.triangles.size() == 2);
+    CHECK(mesh.normals.empty());
+    REQUIRE(mesh.uvs.size() == mesh.positions.size());
+    CHECK(mesh.positions.size() == 4);
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+        CHECK(mesh.uvs[v][0] == mesh.positions[v].x);
+        CHECK(mesh.uvs[v][1] == mesh.positions[v].y);
+    }
+    const MeshReport report = validateMesh(mesh);
+    CHECK(report.boundaryEdges == 4);
+    CHECK_FALSE(report.solid);
+}
