@@ -2,7 +2,8 @@
 // shadow-ray throughput on three generated meshes, with a brute-force check of a sample of the
 // rays (the same watertight test over every triangle: t must agree bit for bit).
 // Built only when asked: cmake --build build --target kerf_bvh_bench; run: build/mesh/kerf_bvh_bench
-// [--size N] (image N×N rays per mesh, default 1024).
+// [--size N] (image N×N rays per mesh, default 1024) [--only sphere|city|fan]
+// [--traversal-cost C] [--leaf N] (build options, to tune).
 #include "mesh/triangle_bvh.h"
 #include "mesh/watertight_triangle.h"
 
@@ -106,17 +107,19 @@ struct Camera {
     }
 };
 
+BvhBuildOptions gOptions;
+
 void run(const char* name, const TriangleMesh& mesh, const Camera& cam, const Vec3& light,
          int n) {
     double build1 = 0, build2 = 0;
     {
         tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
         const auto t0 = std::chrono::steady_clock::now();
-        TriangleBvh b(mesh);
+        TriangleBvh b(mesh, gOptions);
         build1 = seconds(t0);
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const TriangleBvh bvh(mesh);
+    const TriangleBvh bvh(mesh, gOptions);
     build2 = seconds(t0);
 
     std::mt19937_64 rng(2);
@@ -187,8 +190,12 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--size") && i + 1 < argc) n = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
+        else if (!std::strcmp(argv[i], "--traversal-cost") && i + 1 < argc)
+            gOptions.traversalCost = std::atof(argv[++i]);
+        else if (!std::strcmp(argv[i], "--leaf") && i + 1 < argc)
+            gOptions.maxLeafSize = std::atoi(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: kerf_bvh_bench [--size N] [--only sphere|city|fan]\n");
+            std::fprintf(stderr, "usage: kerf_bvh_bench [--size N] [--only sphere|city|fan] [--traversal-cost C] [--leaf N]\n");
             return 2;
         }
     }

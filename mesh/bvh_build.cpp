@@ -14,8 +14,6 @@ namespace kerf {
 
 namespace {
 
-// SAH costs in units of one triangle test. A walk step is about as dear as a triangle test.
-constexpr double kTraversalCost = 1.0;
 // Past this depth the build splits at the median (which halves), so no walk outgrows the
 // stack: SAH depth + log2(2^32) ≤ TriangleBvh::kMaxDepth.
 constexpr int kSahDepthLimit = 28;
@@ -96,7 +94,7 @@ bool BvhBuilder::sahSplit(uint32_t begin, uint32_t end, const Bounds3& box,
             acc.extend(binBox[b - 1]);
             accCount += binCount[b - 1];
             if (accCount == 0 || rightCount[b] == 0) continue;
-            const double cost = kTraversalCost * parentArea + halfArea(acc) * accCount +
+            const double cost = options.traversalCost * parentArea + halfArea(acc) * accCount +
                                 rightArea[b] * rightCount[b];
             if (cost < bestCost) {
                 bestCost = cost;

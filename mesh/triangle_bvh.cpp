@@ -12,35 +12,59 @@ namespace {
 
 constexpr int kStackSize = TriangleBvh::kMaxDepth + 4;
 
-// Walks the tree calling leaf(first, count) for each leaf the ray's box test passes within
-// [tmin, tmax]; leaf returns the (possibly smaller) tmax to go on with, or a value below tmin
-// to stop.
+// Walks the tree calling leaf(first, count, tmax) for each leaf whose box the ray may meet
+// within [tmin, tmax]; leaf returns the (possibly smaller) tmax to go on with, or a value below
+// tmin to stop. Both children's boxes are tested together and the nearer entered first; the
+// other waits on the stack with its entry, skipped if the range has shrunk past it. The entries
+// are conservative (never later than exact), so no box that holds a hit is skipped.
 template <class Leaf>
 void walk(const std::vector<TriangleBvh::Node>& nodes, const Ray& ray, double tmin,
           double tmax, BvhStats& stats, Leaf&& leaf) {
     if (nodes.empty() || !(tmin < tmax)) return;
     const RayReciprocal rec(ray);
-    uint32_t stack[kStackSize];
+    struct Entry {
+        uint32_t node;
+        double tEnter;
+    };
+    Entry stack[kStackSize];
     int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const TriangleBvh::Node& node = nodes[stack[--top]];
-        ++stats.nodesVisited;
+    ++stats.nodesVisited;
+    {
         double t0 = tmin, t1 = tmax;
-        if (!Bounds3::clipRayConservative(rec, node.lo, node.hi, t0, t1)) continue;
+        if (!Bounds3::clipRayConservative(rec, nodes[0].lo, nodes[0].hi, t0, t1)) return;
+    }
+    uint32_t current = 0;
+    for (;;) {
+        const TriangleBvh::Node& node = nodes[current];
+        bool descend = false;
         if (node.count > 0) {
             tmax = leaf(node.index, node.count, tmax);
             if (!(tmin < tmax)) return;
-            continue;
-        }
-        const uint32_t first = uint32_t(&node - nodes.data()) + 1, second = node.index;
-        // Push the far child first so the near one is taken next.
-        if (rec.negative[node.axis]) {
-            stack[top++] = first;
-            stack[top++] = second;
         } else {
-            stack[top++] = second;
-            stack[top++] = first;
+            const uint32_t a = current + 1, b = node.index;
+            double a0 = tmin, a1 = tmax, b0 = tmin, b1 = tmax;
+            const bool hitA = Bounds3::clipRayConservative(rec, nodes[a].lo, nodes[a].hi, a0, a1);
+            const bool hitB = Bounds3::clipRayConservative(rec, nodes[b].lo, nodes[b].hi, b0, b1);
+            stats.nodesVisited += 2;
+            if (hitA && hitB) {
+                const bool aFirst = a0 <= b0;
+                stack[top++] = aFirst ? Entry{b, b0} : Entry{a, a0};
+                current = aFirst ? a : b;
+                descend = true;
+            } else if (hitA || hitB) {
+                current = hitA ? a : b;
+                descend = true;
+            }
+        }
+        if (descend) continue;
+        // Pop the next waiting node the shrunken range still reaches.
+        for (;;) {
+            if (top == 0) return;
+            const Entry e = stack[--top];
+            if (e.tEnter <= tmax) {
+                current = e.node;
+                break;
+            }
         }
     }
 }

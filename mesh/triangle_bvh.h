@@ -44,6 +44,7 @@ struct BvhBuildOptions {
     int bins = 32;          ///< SAH bins over the centroids' extent along each axis
     int maxLeafSize = 8;    ///< a leaf never holds more triangles than this
     int parallelAbove = 16384;  ///< subtrees with more triangles are built as TBB tasks
+    double traversalCost = 1.0;  ///< SAH cost of a walk step (two box tests), in triangle tests
 };
 
 class TriangleBvh {
