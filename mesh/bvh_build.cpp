@@ -208,7 +208,8 @@ TriangleBvh::TriangleBvh(const TriangleMesh& mesh, const BvhBuildOptions& option
     mTriangleIndex = builder.order;
     for (size_t k = 0; k < count; ++k) {
         const auto& t = mesh.triangles[mTriangleIndex[k]];
-        for (int j = 0; j < 3; ++j) mTris[k].p[j] = mesh.positions[t[j]];
+        for (int j = 0; j < 3; ++j)
+            for (int a = 0; a < 3; ++a) mTris[k].p[j][a] = mesh.positions[t[j]][a];
     }
 }
 

@@ -84,7 +84,7 @@ public:
     static constexpr int kMaxDepth = 60;
 
 private:
-    struct Tri { Vec3 p[3]; };
+    struct Tri { double p[3][3]; };  ///< vertices as plain arrays (see watertight_triangle.h)
     std::vector<Node> mNodes;
     std::vector<Tri> mTris;                  ///< triangle vertices in leaf order
     std::vector<uint32_t> mTriangleIndex;    ///< the mesh's index of each slot of mTris

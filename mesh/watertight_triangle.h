@@ -24,11 +24,11 @@ namespace kerf {
 
 /// A ray in the sheared frame, computed once per ray.
 struct ShearedRay {
-    Vec3 origin;
+    double origin[3];
     int kx, ky, kz;     ///< the permutation: kz is the dominant axis of the direction
     double sx, sy, sz;  ///< the shear: x' = x − sx·z, y' = y − sy·z, z' = sz·z
 
-    explicit ShearedRay(const Ray& ray) : origin(ray.origin) {
+    explicit ShearedRay(const Ray& ray) : origin{ray.origin.x, ray.origin.y, ray.origin.z} {
         const Vec3 a = glm::abs(ray.dir);
         kz = a.x >= a.y ? (a.x >= a.z ? 0 : 2) : (a.y >= a.z ? 1 : 2);
         kx = (kz + 1) % 3;
@@ -79,11 +79,14 @@ inline double edgeFunction(double px, double py, double qx, double qy) {
 /// The ray's crossing of triangle (p0, p1, p2) with t in the open range (tmin, tmax). A ray in
 /// the triangle's plane never hits (the projected area is 0). A ray through an edge or vertex
 /// hits the triangles it would hit moved sideways by an infinitesimal (ε, ε²) in the sheared
-/// frame: over a closed mesh it is entered exactly as often as it is left.
-inline bool intersectWatertight(const ShearedRay& r, const Vec3& p0, const Vec3& p1,
-                                const Vec3& p2, double tmin, double tmax,
+/// frame: over a closed mesh it is entered exactly as often as it is left. Vertices as plain
+/// arrays: the permuted axes are then indexed without glm's switch.
+inline bool intersectWatertight(const ShearedRay& r, const double* p0, const double* p1,
+                                const double* p2, double tmin, double tmax,
                                 TriangleIntersection& out) {
-    const Vec3 a = p0 - r.origin, b = p1 - r.origin, c = p2 - r.origin;
+    const double a[3] = {p0[0] - r.origin[0], p0[1] - r.origin[1], p0[2] - r.origin[2]};
+    const double b[3] = {p1[0] - r.origin[0], p1[1] - r.origin[1], p1[2] - r.origin[2]};
+    const double c[3] = {p2[0] - r.origin[0], p2[1] - r.origin[1], p2[2] - r.origin[2]};
     const double ax = a[r.kx] - r.sx * a[r.kz], ay = a[r.ky] - r.sy * a[r.kz];
     const double bx = b[r.kx] - r.sx * b[r.kz], by = b[r.ky] - r.sy * b[r.kz];
     const double cx = c[r.kx] - r.sx * c[r.kz], cy = c[r.ky] - r.sy * c[r.kz];
@@ -103,6 +106,14 @@ inline bool intersectWatertight(const ShearedRay& r, const Vec3& p0, const Vec3&
     out.v = w / det;
     out.entering = det > 0.0;
     return true;
+}
+
+/// The same for vertices as vectors.
+inline bool intersectWatertight(const ShearedRay& r, const Vec3& p0, const Vec3& p1,
+                                const Vec3& p2, double tmin, double tmax,
+                                TriangleIntersection& out) {
+    const double a[3] = {p0.x, p0.y, p0.z}, b[3] = {p1.x, p1.y, p1.z}, c[3] = {p2.x, p2.y, p2.z};
+    return intersectWatertight(r, a, b, c, tmin, tmax, out);
 }
 
 }  // namespace kerf
