@@ -460,3 +460,27 @@ TEST_CASE("triangle_bvh/stats count the work") {
     REQUIRE(hit.t <= 5.0 - std::cos(M_PI / 32) + 1e-12);
     REQUIRE(hit.t >= 4.0);
 }
+
+TEST_CASE("triangle_bvh/scaling by a power of two changes nothing but the scale") {
+    // Every operation of the build and the walks is exact under a power-of-two scale (no
+    // overflow or underflow here), so the answers must scale bit for bit: no hidden epsilon.
+    const TriangleMesh base = icosphere(3);
+    const TriangleBvh bvh(base);
+    std::mt19937_64 rng(13);
+    for (double s : {0x1p-40, 0x1p40}) {
+        TriangleMesh scaled = base;
+        for (Vec3& p : scaled.positions) p *= s;
+        const TriangleBvh sb(scaled);
+        REQUIRE(sb.nodeCount() == bvh.nodeCount());
+        for (int i = 0; i < 300; ++i) {
+            const Ray ray{glm::normalize(randomDirection(rng)) * 2.0 * (i % 3 ? 1.0 : 0.2),
+                          randomDirection(rng)};
+            const Ray rs{ray.origin * s, ray.dir * s};
+            BvhStats stats;
+            std::vector<TriangleCrossing> a, b;
+            bvh.allCrossings(ray, 0.0, kInf, a, stats);
+            sb.allCrossings(rs, 0.0, kInf, b, stats);
+            REQUIRE(a == b);  // t is scale-free: o + t·d scales with o and d
+        }
+    }
+}
