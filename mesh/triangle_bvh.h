@@ -51,12 +51,13 @@ class TriangleBvh {
 public:
     TriangleBvh() = default;
     /// Builds over mesh's triangles (positions copied; the mesh need not outlive the BVH).
-    /// Any input builds: no triangles, repeated or zero-area triangles, NaN-free positions
-    /// assumed (validation rejects NaN before). The tree does not depend on the thread count.
+    /// Any input builds: no triangles, repeated or zero-area triangles. Positions must be
+    /// finite (loading rejects NaN and infinities before) and fewer than 2^32 triangles. The
+    /// tree does not depend on the thread count.
     explicit TriangleBvh(const TriangleMesh& mesh, const BvhBuildOptions& options = {});
 
     /// The nearest crossing with t in (tmin, tmax), or false. Ties at equal t go to whichever
-    /// triangle the walk meets first.
+    /// triangle the walk meets first. A ray with a zero direction meets nothing.
     bool closestHit(const Ray& ray, double tmin, double tmax, TriangleHit& hit,
                     BvhStats& stats) const;
     /// Whether any triangle crosses the ray with t in (tmin, tmax) (stops at the first).

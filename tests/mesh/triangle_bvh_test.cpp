@@ -388,6 +388,20 @@ TEST_CASE("triangle_bvh/degenerate inputs build and trace") {
         bvh.allCrossings({{0, 0, -1}, {0, 0, 1}}, 0.0, kInf, xs, stats);
         REQUIRE(xs.empty());
     }
+    SECTION("a zero direction meets nothing") {
+        const TriangleMesh m = icosphere(1);
+        const TriangleBvh bvh(m);
+        for (const Vec3& o : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(3, 0, 0)}) {
+            BvhStats stats;
+            TriangleHit hit;
+            const Ray ray{o, {0.0, -0.0, 0.0}};
+            REQUIRE(!bvh.closestHit(ray, 0.0, kInf, hit, stats));
+            REQUIRE(!bvh.anyHit(ray, 0.0, kInf, stats));
+            std::vector<TriangleCrossing> xs;
+            bvh.allCrossings(ray, -kInf, kInf, xs, stats);
+            REQUIRE(xs.empty());
+        }
+    }
     SECTION("every triangle the same") {
         TriangleMesh m;
         m.positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
