@@ -498,3 +498,27 @@ TEST_CASE("triangle_bvh/scaling by a power of two changes nothing but the scale"
         }
     }
 }
+
+TEST_CASE("triangle_bvh/the tree does not depend on how the build is split into tasks") {
+    // Built all in one task and with every split above 2 triangles a TBB task: the same nodes,
+    // so the same answers, ties included.
+    TriangleMesh m = icosphere(4);
+    m.triangles.insert(m.triangles.end(), m.triangles.begin(), m.triangles.begin() + 500);
+    BvhBuildOptions serial, tasks;
+    serial.parallelAbove = 1 << 30;
+    tasks.parallelAbove = 2;
+    const TriangleBvh a(m, serial), b(m, tasks);
+    REQUIRE(a.nodeCount() == b.nodeCount());
+    REQUIRE(a.depth() == b.depth());
+    std::mt19937_64 rng(17);
+    for (int i = 0; i < 500; ++i) {
+        const Ray ray{glm::normalize(randomDirection(rng)) * 2.0, randomDirection(rng)};
+        BvhStats sa, sb;
+        TriangleHit ha, hb;
+        REQUIRE(a.closestHit(ray, 0.0, kInf, ha, sa) == b.closestHit(ray, 0.0, kInf, hb, sb));
+        REQUIRE(ha.t == hb.t);
+        REQUIRE(ha.triangle == hb.triangle);
+        REQUIRE(sa.nodesVisited == sb.nodesVisited);
+        REQUIRE(sa.trianglesTested == sb.trianglesTested);
+    }
+}
