@@ -7,6 +7,7 @@
 #include "app/progress_bar.h"
 #include "app/stats_report.h"
 #include "io/image.h"
+#include "csg/normalize.h"
 #include "render/render.h"
 #include "scene/limits.h"
 
@@ -14,7 +15,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <thread>
@@ -57,6 +60,67 @@ void checkNumbers(const RenderCommandLine& line) {
         throw UsageError("--tolerance must be between 0 and 1, exclusive (got " +
                          line.toleranceOption->results().front() + ")");
     }
+}
+
+/// "A,B,C" as three finite numbers, or nothing.
+std::optional<Vec3> parseTriple(const std::string& text) {
+    Vec3 v;
+    const char* p = text.c_str();
+    for (int k = 0; k < 3; ++k) {
+        if (k > 0 && *p++ != ',') return std::nullopt;
+        char* end = nullptr;
+        v[k] = std::strtod(p, &end);
+        if (end == p || !std::isfinite(v[k])) return std::nullopt;
+        p = end;
+    }
+    if (*p != '\0') return std::nullopt;
+    return v;
+}
+
+/// --section: `x=V`, `y=V` or `z=V` (the plane at that coordinate, the side above it
+/// removed), or `PX,PY,PZ:NX,NY,NZ` (a point and the normal towards the removed side).
+SectionPlane parseSection(const std::string& spec, const Vec3& color) {
+    const std::string usage = "--section expects x=V, y=V, z=V or PX,PY,PZ:NX,NY,NZ (got '" + spec + "')";
+    SectionPlane plane;
+    plane.color = color;
+    if (spec.size() > 2 && spec[1] == '=' && spec[0] >= 'x' && spec[0] <= 'z') {
+        const int axis = spec[0] - 'x';
+        char* end = nullptr;
+        const double v = std::strtod(spec.c_str() + 2, &end);
+        if (*end != '\0' || !std::isfinite(v)) throw UsageError(usage);
+        plane.point = Vec3(0.0);
+        plane.point[axis] = v;
+        plane.normal = Vec3(0.0);
+        plane.normal[axis] = 1.0;
+        return plane;
+    }
+    const size_t colon = spec.find(':');
+    if (colon == std::string::npos) throw UsageError(usage);
+    const std::optional<Vec3> point = parseTriple(spec.substr(0, colon));
+    const std::optional<Vec3> normal = parseTriple(spec.substr(colon + 1));
+    if (!point || !normal) throw UsageError(usage);
+    if (*normal == Vec3(0.0))
+        throw UsageError("--section: the normal must not be zero (got '" + spec + "')");
+    plane.point = *point;
+    plane.normal = normalizeSafe(*normal);
+    return plane;
+}
+
+/// The command line's section planes, checked before the model is read.
+std::vector<SectionPlane> sectionPlanes(const RenderCommandLine& line) {
+    Vec3 color = SectionPlane{}.color;
+    if (!line.sectionColor.empty()) {
+        const std::optional<Vec3> c = parseTriple(line.sectionColor);
+        if (!c || c->x < 0 || c->y < 0 || c->z < 0)
+            throw UsageError("--section-color expects R,G,B, each 0 or more (got '" + line.sectionColor + "')");
+        color = *c;
+    }
+    std::vector<SectionPlane> planes;
+    for (const std::string& spec : line.sections) planes.push_back(parseSection(spec, color));
+    if (planes.size() > size_t(kMaxSections))
+        throw UsageError("--section: at most " + std::to_string(kMaxSections) + " section planes (got " +
+                         std::to_string(planes.size()) + ")");
+    return planes;
 }
 
 OutputPlan planOutputs(const RenderCommandLine& line) {
@@ -171,6 +235,15 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
                     "Also write an output variable: depth=FILE.exr (eye-to-hit distance) or "
                     "normal=FILE.exr (world normal); may be repeated")
         ->type_name("KIND=FILE");
+    cmd->add_option("--section", line.sections,
+                    "A section view: cut the model by a plane and cap the cut in colour. x=V, y=V "
+                    "or z=V removes the side where that coordinate exceeds V; PX,PY,PZ:NX,NY,NZ "
+                    "removes the side the normal N points to from the point P. May be repeated; "
+                    "adds to the model's section { } planes")
+        ->type_name("PLANE");
+    cmd->add_option("--section-color", line.sectionColor,
+                    "The colour of the caps of --section planes (default 0.85,0.2,0.15)")
+        ->type_name("R,G,B");
     cmd->add_flag("--stats", line.stats, "Print statistics to stderr");
     cmd->add_flag("-q,--quiet", line.quiet, "No progress bar and no echo lines from the model");
     return cmd;
@@ -178,11 +251,17 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
 
 int runRender(const RenderCommandLine& line) {
     checkNumbers(line);
+    const std::vector<SectionPlane> sections = sectionPlanes(line);
     const OutputPlan plan = planOutputs(line);
 
     const auto compileStart = Clock::now();
-    const std::optional<Scene> scene = loadModel(line.model, std::cerr, line.quiet);
+    std::optional<Scene> scene = loadModel(line.model, std::cerr, line.quiet);
     if (!scene) return kExitUsage;
+    if (scene->sections.size() + sections.size() > size_t(kMaxSections))
+        throw UsageError("--section: the model's " + std::to_string(scene->sections.size()) +
+                         " section planes and " + std::to_string(sections.size()) +
+                         " more are over the limit of " + std::to_string(kMaxSections));
+    scene->sections.insert(scene->sections.end(), sections.begin(), sections.end());
     const double secondsCompile = secondsSince(compileStart);
 
     RenderOptions options = renderOptions(line, plan);

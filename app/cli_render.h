@@ -1,6 +1,6 @@
 /// @file app/cli_render.h
 /// @brief `kerf render FILE [-o OUT] [--width W] [--height H] [--spp N] [--threads T]
-/// [--tolerance E] [--method M] [--aov KIND=FILE]… [--stats] [--quiet]`.
+/// [--tolerance E] [--method M] [--aov KIND=FILE]… [--section PLANE]… [--stats] [--quiet]`.
 #pragma once
 
 #include <string>
@@ -31,6 +31,8 @@ struct RenderCommandLine {
     std::string filter;   ///< empty: the model's render settings
     double noise = -1.0;  ///< < 0: the model's render settings
     std::vector<std::string> aovs;
+    std::vector<std::string> sections;  ///< section planes added to the model's (x=V, …)
+    std::string sectionColor;           ///< their caps' colour R,G,B; empty: the default
     bool stats = false;
     bool quiet = false;
 

@@ -3,7 +3,9 @@
 /// outcome into an exit code. The only place in kerf that exits; every exception stops here.
 #include "app/cli_bench.h"
 #include "app/cli_check.h"
+#include "app/cli_mesh.h"
 #include "app/cli_render.h"
+#include "app/cli_slice.h"
 #include "app/exit_codes.h"
 #include "io/image.h"
 
@@ -33,6 +35,10 @@ int run(int argc, char** argv) {
     CLI::App* renderCmd = addRenderCommand(cli, renderLine);
     CLI::App* checkCmd = addCheckCommand(cli, checkLine);
     CLI::App* benchCmd = addBenchCommand(cli, benchLine);
+    MeshCommandLine meshLine;
+    CLI::App* meshCmd = addMeshCommand(cli, meshLine);
+    SliceCommandLine sliceLine;
+    CLI::App* sliceCmd = addSliceCommand(cli, sliceLine);
 
     try {
         cli.parse(argc, argv);
@@ -48,6 +54,8 @@ int run(int argc, char** argv) {
         if (renderCmd->parsed()) return runRender(renderLine);
         if (checkCmd->parsed()) return runCheck(checkLine);
         if (benchCmd->parsed()) return runBench(benchLine);
+        if (meshCmd->parsed()) return runMesh(meshLine);
+        if (sliceCmd->parsed()) return runSlice(sliceLine);
     } catch (const UsageError& e) {
         std::cerr << "kerf: error: " << e.what() << "\n";
         return kExitUsage;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "csg/interval_trig.h"
+#include "csg/noise.h"
 #include "csg/scalar_ops.h"
 
 namespace kerf {
@@ -26,12 +27,13 @@ uint64_t hashOf(const ExprNode& n) {
     uint64_t h = static_cast<uint64_t>(n.op);
     h = mix(h, static_cast<uint32_t>(n.a));
     h = mix(h, static_cast<uint32_t>(n.b));
+    h = mix(h, static_cast<uint32_t>(n.c));
     return mix(h, bitsOf(n.value));
 }
 
 /// Constants compare by bits, so 0 and −0 stay distinct (1/x tells them apart).
 bool sameNode(const ExprNode& p, const ExprNode& q) {
-    return p.op == q.op && p.a == q.a && p.b == q.b && bitsOf(p.value) == bitsOf(q.value);
+    return p.op == q.op && p.a == q.a && p.b == q.b && p.c == q.c && bitsOf(p.value) == bitsOf(q.value);
 }
 
 }  // namespace
@@ -46,10 +48,10 @@ ExprId ExprGraph::intern(const ExprNode& n) {
     return id;
 }
 
-ExprId ExprGraph::constant(double v) { return intern({Op::Const, -1, -1, v}); }
-ExprId ExprGraph::x() { return intern({Op::VarX, -1, -1, 0.0}); }
-ExprId ExprGraph::y() { return intern({Op::VarY, -1, -1, 0.0}); }
-ExprId ExprGraph::z() { return intern({Op::VarZ, -1, -1, 0.0}); }
+ExprId ExprGraph::constant(double v) { return intern({Op::Const, -1, -1, -1, v}); }
+ExprId ExprGraph::x() { return intern({Op::VarX, -1, -1, -1, 0.0}); }
+ExprId ExprGraph::y() { return intern({Op::VarY, -1, -1, -1, 0.0}); }
+ExprId ExprGraph::z() { return intern({Op::VarZ, -1, -1, -1, 0.0}); }
 
 ExprId ExprGraph::unary(Op op, ExprId a) {
     // Folding uses the point evaluator's own arithmetic, so the folded tape evaluates to
@@ -62,14 +64,14 @@ ExprId ExprGraph::unary(Op op, ExprId a) {
         }
         return constant(applyScalarOp(op, mNodes[a].value, 0.0, 0.0));
     }
-    return intern({op, a, -1, 0.0});
+    return intern({op, a, -1, -1, 0.0});
 }
 
 ExprId ExprGraph::binary(Op op, ExprId a, ExprId b) {
     if (mNodes[a].op == Op::Const && mNodes[b].op == Op::Const)
         return constant(applyScalarOp(op, mNodes[a].value, mNodes[b].value, 0.0));
     if (isCommutative(op) && a > b) std::swap(a, b);
-    return intern({op, a, b, 0.0});
+    return intern({op, a, b, -1, 0.0});
 }
 
 ExprId ExprGraph::powInt(ExprId a, int n) {
@@ -80,7 +82,15 @@ ExprId ExprGraph::powInt(ExprId a, int n) {
     // exponent of 2) and takes every evaluator's fast path.
     if (n == 1) return a;
     if (n == 2) return unary(Op::Square, a);
-    return intern({Op::PowInt, a, -1, exponent});
+    return intern({Op::PowInt, a, -1, -1, exponent});
+}
+
+ExprId ExprGraph::noise(ExprId x, ExprId y, ExprId z, uint64_t seed) {
+    const double s = static_cast<double>(seed);
+    const ExprNode &nx = mNodes[x], &ny = mNodes[y], &nz = mNodes[z];
+    if (nx.op == Op::Const && ny.op == Op::Const && nz.op == Op::Const)
+        return constant(gradientNoise(Vec3(nx.value, ny.value, nz.value), seed));
+    return intern({Op::Noise, x, y, z, s});
 }
 
 }  // namespace kerf

@@ -17,6 +17,8 @@ enum class Op : uint8_t {
     Add, Sub, Mul, Div, Pow, Atan2, Min, Max,
     // binary with an integer exponent held in `value`: a^n
     PowInt,
+    // ternary: gradient noise at the point (a, b, c) (csg/noise.h), its seed held in `value`
+    Noise,
 };
 
 /// One node of the graph. Operands are indices of earlier nodes (-1 when unused).
@@ -24,7 +26,8 @@ struct ExprNode {
     Op op = Op::Const;
     int32_t a = -1;
     int32_t b = -1;
-    double value = 0.0;  ///< the constant for Const, the exponent for PowInt
+    int32_t c = -1;      ///< Noise's third operand
+    double value = 0.0;  ///< the constant for Const, the exponent for PowInt, Noise's seed
 };
 
 using ExprId = int32_t;
@@ -38,6 +41,9 @@ public:
     ExprId unary(Op op, ExprId a);
     ExprId binary(Op op, ExprId a, ExprId b);
     ExprId powInt(ExprId a, int n);
+    /// Gradient noise at (x, y, z) with the given seed (an integer below 2⁵³, so that the
+    /// double `value` holds it exactly).
+    ExprId noise(ExprId x, ExprId y, ExprId z, uint64_t seed);
 
     const std::vector<ExprNode>& nodes() const { return mNodes; }
 

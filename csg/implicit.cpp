@@ -114,6 +114,7 @@ public:
                 case Op::VarY: slot[i] = y; break;
                 case Op::VarZ: slot[i] = z; break;
                 case Op::PowInt: slot[i] = g.powInt(slot[in.a], static_cast<int>(in.value)); break;
+                case Op::Noise: slot[i] = g.noise(slot[in.a], slot[in.b], slot[in.c], noiseSeed(in)); break;
                 default:
                     slot[i] = in.b >= 0 ? g.binary(in.op, slot[in.a], slot[in.b])
                                         : g.unary(in.op, slot[in.a]);

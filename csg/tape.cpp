@@ -14,6 +14,7 @@ std::shared_ptr<const Tape> Tape::compile(const ExprGraph& graph, ExprId root) {
         if (!needed[i]) continue;
         if (nodes[i].a >= 0) needed[nodes[i].a] = 1;
         if (nodes[i].b >= 0) needed[nodes[i].b] = 1;
+        if (nodes[i].c >= 0) needed[nodes[i].c] = 1;
     }
     std::vector<int32_t> slotOf(nodes.size(), -1);
     auto tape = std::make_shared<Tape>();
@@ -22,7 +23,8 @@ std::shared_ptr<const Tape> Tape::compile(const ExprGraph& graph, ExprId root) {
         const ExprNode& n = nodes[i];
         slotOf[i] = static_cast<int32_t>(tape->mInstrs.size());
         tape->mInstrs.push_back(
-            {n.op, n.a >= 0 ? slotOf[n.a] : -1, n.b >= 0 ? slotOf[n.b] : -1, n.value});
+            {n.op, n.a >= 0 ? slotOf[n.a] : -1, n.b >= 0 ? slotOf[n.b] : -1,
+             n.c >= 0 ? slotOf[n.c] : -1, n.value});
     }
     tape->finish();
     return tape;

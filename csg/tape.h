@@ -22,8 +22,12 @@ struct TapeInstr {
     Op op;
     int32_t a;
     int32_t b;
+    int32_t c;  ///< Noise's third operand, else −1
     double value;
 };
+
+/// A Noise instruction's seed (held exactly in `value`).
+inline uint64_t noiseSeed(const TapeInstr& in) { return static_cast<uint64_t>(in.value); }
 
 class Tape {
 public:

@@ -2,6 +2,7 @@
 // ∂/∂(x, y, z) per slot, in per-thread scratch.
 #include "csg/interval_trig.h"
 #include "csg/scalar_ops.h"
+#include "csg/noise.h"
 #include "csg/tape.h"
 
 namespace kerf {
@@ -110,6 +111,13 @@ Dual<G> evalDual(const std::vector<TapeInstr>& instrs, const Vec3& p, const G& d
                 double sv, cv;
                 interval_trig::pointSinCos(a.v, sv, cv);
                 s[i] = in.op == Op::Sin ? Dual<G>{sv, cv * a.g} : Dual<G>{cv, -sv * a.g};
+                break;
+            }
+            case Op::Noise: {  // the chain rule through the noise's own gradient
+                const Dual<G> &a = s[in.a], &b = s[in.b], &c = s[in.c];
+                Vec3 n;
+                const double v = gradientNoise(Vec3(a.v, b.v, c.v), noiseSeed(in), n);
+                s[i] = {v, n.x * a.g + n.y * b.g + n.z * c.g};
                 break;
             }
             default: {

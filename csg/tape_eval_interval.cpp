@@ -1,5 +1,6 @@
 // Interval evaluation of a tape over a box, with per-thread scratch slots.
 #include "csg/interval_ops.h"
+#include "csg/noise.h"
 #include "csg/tape.h"
 
 namespace kerf {
@@ -22,6 +23,9 @@ Interval Tape::evalInterval(const Interval& x, const Interval& y, const Interval
                 break;
             case Op::VarZ:
                 s[i] = z;
+                break;
+            case Op::Noise:
+                s[i] = gradientNoiseRange(s[in.a], s[in.b], s[in.c], noiseSeed(in));
                 break;
             default:
                 s[i] = applyIntervalOp(in.op, s[in.a], in.b >= 0 ? s[in.b] : Interval(), in.value);

@@ -4,6 +4,7 @@
 // lane is evalInterval's result by construction. The AVX2 path is in
 // csg/tape_eval_interval4_avx2.cpp.
 #include "csg/interval_ops.h"
+#include "csg/noise.h"
 #include "csg/tape.h"
 #include "csg/tape_eval_interval4.h"
 
@@ -43,6 +44,10 @@ void evalScalar(const std::vector<TapeInstr>& instrs, const Interval x[4], const
                 break;
             case Op::VarZ:
                 for (int k = 0; k < 4; ++k) r.set(k, z[k]);
+                break;
+            case Op::Noise:
+                for (int k = 0; k < 4; ++k)
+                    r.set(k, gradientNoiseRange(s[in.a].lane(k), s[in.b].lane(k), s[in.c].lane(k), noiseSeed(in)));
                 break;
             default:
                 for (int k = 0; k < 4; ++k)

@@ -1,6 +1,7 @@
 // Point evaluation of a tape on doubles, with per-thread scratch slots.
 #include "csg/interval_trig.h"
 #include "csg/scalar_ops.h"
+#include "csg/noise.h"
 #include "csg/tape.h"
 
 namespace kerf {
@@ -49,6 +50,9 @@ double Tape::eval(const Vec3& p) const {
                 s[i] = in.op == Op::Sin ? sv : cv;
                 break;
             }
+            case Op::Noise:
+                s[i] = gradientNoise(Vec3(s[in.a], s[in.b], s[in.c]), noiseSeed(in));
+                break;
             default:
                 s[i] = applyScalarOp(in.op, s[in.a], in.b >= 0 ? s[in.b] : 0.0, in.value);
         }
@@ -69,6 +73,9 @@ long double Tape::evalExtended(const glm::tvec3<long double>& p) const {
             case Op::VarX: s[i] = p.x; break;
             case Op::VarY: s[i] = p.y; break;
             case Op::VarZ: s[i] = p.z; break;
+            case Op::Noise:
+                s[i] = gradientNoise(glm::tvec3<long double>(s[in.a], s[in.b], s[in.c]), noiseSeed(in));
+                break;
             default:
                 s[i] = applyScalarOp<long double>(in.op, s[in.a], in.b >= 0 ? s[in.b] : 0.0L,
                                                   in.value);

@@ -11,6 +11,7 @@
 //
 // Tapes made only of ops that never raise a NaN flag (Tape::finish) take a lean path that keeps
 // no flags and runs the same kernels, so it gives the same bits as the general one.
+#include "csg/noise.h"
 #include "csg/tape.h"
 #include "csg/interval_trig.h"
 #include "csg/tape_ray_step.h"
@@ -142,6 +143,13 @@ void Tape::evalIntervalAlongRayReference(const Ray& ray, const Interval& t, Inte
             case Op::VarZ:
                 alongAxis(ray.origin.z, ray.dir.z, t, r);
                 break;
+            case Op::Noise: {
+                const RaySlot &a = s[in.a], &b = s[in.b], &c = s[in.c];
+                Interval g[3];
+                r.v = gradientNoiseRange(a.v, b.v, c.v, noiseSeed(in), g);
+                r.d = scaledSlope(g[0], a) + scaledSlope(g[1], b) + scaledSlope(g[2], c);
+                break;
+            }
             default:
                 evalStep(in.op, in.a, in.b, in.value, s, r);
         }

@@ -3,6 +3,7 @@
 #include "csg/tape_ray_program.h"
 
 #include "csg/tape_ray_step.h"
+#include <stdexcept>
 
 namespace kerf {
 
@@ -250,6 +251,8 @@ TapeRayPlan::TapeRayPlan(const Tape& tape) {
     std::vector<Interval> constant(n);
     for (size_t i = 0; i < n; ++i) {
         const TapeInstr& in = instrs[i];
+        // Plans are made for the implicit forms of closed-form primitives, which hold no noise.
+        if (in.op == Op::Noise) throw std::invalid_argument("TapeRayPlan: a tape with noise");
         const int da = in.a >= 0 ? degree[in.a] : 0, db = in.b >= 0 ? degree[in.b] : 0;
         const Interval divisor = in.b >= 0 && db == 0 ? constant[in.b] : Interval(0.0);
         degree[i] = foldedDegree(in, da, db, divisor);

@@ -4,6 +4,7 @@
 // doubles: a decided min(a, b) has a < b at every point of the region (point values lie in
 // their intervals), so it is a; abs(a) with a > 0 throughout is a, with a < 0 it is −a.
 #include "csg/interval_ops.h"
+#include "csg/noise.h"
 #include "csg/tape.h"
 
 namespace kerf {
@@ -69,6 +70,9 @@ Interval Tape::evalInterval(const Interval& x, const Interval& y, const Interval
                 // A sum of non-negative terms (squares) stays so: see nonNegative().
                 if (s[in.a].lo >= 0.0 && s[in.b].lo >= 0.0) s[i] = nonNegative(s[i]);
                 break;
+            case Op::Noise:
+                s[i] = gradientNoiseRange(s[in.a], s[in.b], s[in.c], noiseSeed(in));
+                break;
             default:
                 s[i] = applyIntervalOp(in.op, s[in.a], in.b >= 0 ? s[in.b] : Interval(), in.value);
         }
@@ -97,6 +101,7 @@ std::shared_ptr<const Tape> Tape::simplified(const std::vector<Choice>& choices)
         if (!needed[i]) continue;
         if (mInstrs[i].a >= 0) needed[alias[mInstrs[i].a]] = 1;
         if (mInstrs[i].b >= 0) needed[alias[mInstrs[i].b]] = 1;
+        if (mInstrs[i].c >= 0) needed[alias[mInstrs[i].c]] = 1;
     }
     std::vector<int32_t> slotOf(n, -1);
     auto tape = std::make_shared<Tape>();
@@ -106,6 +111,7 @@ std::shared_ptr<const Tape> Tape::simplified(const std::vector<Choice>& choices)
         if (in.op == Op::Abs && choices[i] == Choice::Right) in.op = Op::Neg;  // −a = |a| exactly
         if (in.a >= 0) in.a = slotOf[alias[in.a]];
         if (in.b >= 0) in.b = slotOf[alias[in.b]];
+        if (in.c >= 0) in.c = slotOf[alias[in.c]];
         slotOf[i] = static_cast<int32_t>(tape->mInstrs.size());
         tape->mInstrs.push_back(in);
     }

@@ -11,7 +11,15 @@ extern "C" {
 
 /// Bumped whenever KerfImagePlugin changes; the loader refuses a plug-in of another version.
 /// 2: images are encoded in memory (`encode`), no longer written to disk by the plug-in.
-#define KERF_IMAGE_PLUGIN_ABI 2
+/// 3: image textures (`textureOpen`, `textureLookup`) through OpenImageIO's TextureSystem.
+#define KERF_IMAGE_PLUGIN_ABI 3
+
+/// A texture opened by `textureOpen`; owned by the plug-in and valid until the process ends.
+typedef struct KerfTexture KerfTexture;
+
+/// How a texture coordinate outside [0, 1) is taken (KerfImagePlugin::textureLookup).
+#define KERF_TEXTURE_WRAP_PERIODIC 0
+#define KERF_TEXTURE_WRAP_CLAMP 1
 
 /// Called by `read` once the file's size is known; returns room for width·height·channels
 /// floats (or null to abort). `integerCoded` is 1 when the file stores 8- or 16-bit codes.
@@ -36,6 +44,21 @@ struct KerfImagePlugin {
     /// message in `error`.
     int (*read)(const char* path, KerfImageAllocate allocate, void* user, char* error,
                 size_t errorSize);
+    /// Opens `path` as a texture: decodes it once (8- and 16-bit codes taken as sRGB and
+    /// made linear, so filtering averages light, not codes) and hands it to the process's
+    /// one TextureSystem, which builds its MIP levels. Opening the same path again returns the
+    /// same texture. Returns 0 with `*texture`, `*width` and `*height` set, or nonzero with a
+    /// message in `error` (missing file, unreadable, not an image).
+    int (*textureOpen)(const char* path, KerfTexture** texture, int* width, int* height,
+                       char* error, size_t errorSize);
+    /// The texture's linear RGB filtered over the footprint whose axes in texture space are
+    /// (dsdx, dtdx) and (dsdy, dtdy), centred at (s, t): s across, t down the image (0 at
+    /// the top row, texel centres at (i + ½)/width). MIP-mapped with anisotropic filtering;
+    /// a zero footprint still gets the bilinear filter of the texels. A grey image gives its
+    /// value in all three channels. Thread-safe (per-thread state stays with each thread).
+    /// `wrapS` and `wrapT` are KERF_TEXTURE_WRAP_*.
+    void (*textureLookup)(const KerfTexture* texture, float s, float t, float dsdx, float dtdx,
+                          float dsdy, float dtdy, int wrapS, int wrapT, float rgb[3]);
 };
 
 /// The plug-in's one exported symbol.

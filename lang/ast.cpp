@@ -40,7 +40,10 @@ private:
         p.expr = one(p.expr);
         p.solid = one(p.solid);
     }
-    void fix(Modifier& m) { m.args = list(m.args); }
+    void fix(Modifier& m) {
+        m.args = list(m.args);
+        m.pattern = one(m.pattern);
+    }
     void fix(Solid& s) {
         s.properties = list(s.properties);
         s.children = list(s.children);

@@ -109,15 +109,17 @@ struct Property {
 };
 
 /// A modifier after a solid: `translate v`, `rotate v`, `scale s|v`, `matrix [12 numbers]`,
-/// `material NAME`.
+/// `material NAME`, `displace PATTERN by DEPTH`.
 struct Modifier {
     /// Move and Spin: motion over scene time (csg/motion.h), `move <v>`, `spin <degrees>`.
-    enum class Kind : uint8_t { Translate, Rotate, Scale, Matrix, Material, Move, Spin };
+    /// Displace: the solid's surface moved by a pattern (args[0] is the depth).
+    enum class Kind : uint8_t { Translate, Rotate, Scale, Matrix, Material, Move, Spin, Displace };
     Kind kind = Kind::Translate;
     SourcePos loc;  ///< of the keyword
     ExprList args;  ///< one, or twelve for matrix
     Name material;
     SourcePos materialLoc;
+    SolidPtr pattern = nullptr;  ///< Displace's pattern, read as a pattern is in a material
 };
 
 /// A solid as written. Trivially copyable like Expr: its lists are in the arena.
@@ -159,6 +161,7 @@ struct Statement {
         Assert,           ///< expr: the condition, properties[0].expr: the message (optional)
         Echo,             ///< properties: the values printed, each expr
         DefaultMaterial,  ///< name: the material
+        Section,          ///< properties: point, normal, color (a section plane)
     };
     Kind kind = Kind::Let;
     /// A definition whose body had a syntax error (already reported): its name exists, so
@@ -169,7 +172,7 @@ struct Statement {
     SourcePos nameLoc;
     ExprPtr expr = nullptr;  ///< let, background
     SolidPtr solid = nullptr;  ///< solid, object
-    ArenaList<Property> properties;  ///< material, camera, light, mist, render
+    ArenaList<Property> properties;  ///< material, camera, light, mist, render, section
     std::unique_ptr<Block> block;    ///< for, if
     /// The statement's own nodes (expr, solid, properties and all below), in one exact-size
     /// block, so that lowering can free them statement by statement (releaseTree).

@@ -44,8 +44,10 @@ public:
                     if (p.expr) mExprs.push_back(p.expr);
                     if (p.solid) mSolidStack.push_back(p.solid);
                 }
-                for (const Modifier& m : solid->modifiers)
+                for (const Modifier& m : solid->modifiers) {
                     for (const Expr& a : m.args) mExprs.push_back(&a);
+                    if (m.pattern) mSolidStack.push_back(m.pattern);
+                }
                 for (const Solid& c : solid->children) mSolidStack.push_back(&c);
                 continue;
             }

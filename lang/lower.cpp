@@ -215,6 +215,7 @@ void Lowering::lowerStatement(Statement& s, Scene& scene) {
         case Statement::Kind::Render:
             if (onlyOnce(s, mRender, "render")) lowerRender(s, scene.settings);
             break;
+        case Statement::Kind::Section: lowerSection(s, scene); break;
         case Statement::Kind::Include: break;  // resolved by compile.cpp before lowering
     }
 }

@@ -168,6 +168,8 @@ private:
     std::optional<Bounds3> boxBounds(const Solid& s, const char* what);
     NodePtr applyModifiers(NodePtr node, const Solid& s);
     std::optional<Affine> modifierTransform(const Modifier& m);
+    /// lower_displace.cpp: `node` displaced by m's pattern (null with an error when it cannot be).
+    NodePtr displaced(const NodePtr& node, const Modifier& m);
     /// A move's or spin's vector, checked.
     std::optional<Vec3> motionVector(const Modifier& m);
     /// False, with an error at `m`, when the transforms folded up to `m` are unusable.
@@ -185,12 +187,16 @@ private:
     void lowerMaterial(const Statement& s, Material& m);
     // lower_patterns.cpp: a `pattern KIND { … }` (kept as a Primitive solid by the parser).
     std::shared_ptr<const Pattern> lowerPattern(const Solid& s);
+    /// An image pattern's `file` (opened now: a bad file is an error here) and `mapping`.
+    bool lowerImage(const PropertyBlock& b, Pattern& pattern);
     void checkEnergy(const PropertyBlock& b, const Material& m);
     void lowerCamera(const Statement& s, CameraDesc& camera);
     std::optional<Light> lowerLight(const Statement& s);
     void lowerMist(const Statement& s, Mist& mist);
     void lowerRender(const Statement& s, RenderSettings& settings);
     void lowerBackground(const Statement& s, Scene& scene);
+    // lower_sections.cpp
+    void lowerSection(const Statement& s, Scene& scene);
 
     DiagnosticSink& mSink;
     EvalLimits mLimits;

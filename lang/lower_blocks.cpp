@@ -38,13 +38,14 @@ void Lowering::runBlock(const std::vector<Statement>& body, Scene& scene) {
             case Statement::Kind::Light:
                 if (auto light = lowerLight(s)) scene.lights.push_back(*light);
                 break;
+            case Statement::Kind::Section: lowerSection(s, scene); break;
             case Statement::Kind::For: runFor(s, scene); break;
             case Statement::Kind::If: runIf(s, scene); break;
             case Statement::Kind::Assert: runAssert(s); break;
             case Statement::Kind::Echo: runEcho(s); break;
             default:
                 error(s.loc, "this statement is allowed only at the top level, not inside for or if",
-                      "inside a block write let, solid, object, light, for, if, assert or echo");
+                      "inside a block write let, solid, object, light, section, for, if, assert or echo");
                 break;
         }
     }

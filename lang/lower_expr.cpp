@@ -2,8 +2,9 @@
 // at compile time; inside `implicit { f … }` (field != null) x, y, z are free and the result
 // is a node of an ExprGraph, with constant subexpressions still folded.
 #include "lang/lower.h"
-#include "lang/diagnostic_hints.h"
 
+#include "csg/noise.h"
+#include "lang/diagnostic_hints.h"
 #include "lang/names.h"
 
 #include <algorithm>
@@ -22,12 +23,13 @@ struct Function {
     Op op;  // for the functions that map to one graph operation
 };
 
-const std::array<Function, 19> kFunctions = {{
+const std::array<Function, 20> kFunctions = {{
     {"sin", 1, Op::Sin}, {"cos", 1, Op::Cos}, {"tan", 1, Op::Tan}, {"asin", 1, Op::Asin},
     {"acos", 1, Op::Acos}, {"atan", 1, Op::Atan}, {"sqrt", 1, Op::Sqrt}, {"abs", 1, Op::Abs},
     {"exp", 1, Op::Exp}, {"log", 1, Op::Log}, {"floor", 1, Op::Floor}, {"ceil", 1, Op::Ceil},
     {"atan2", 2, Op::Atan2}, {"pow", 2, Op::Pow}, {"min", 2, Op::Min}, {"max", 2, Op::Max},
-    {"clamp", 3, Op::Min}, {"mix", 3, Op::Add}, {"pi", 0, Op::Const},  // pi is not callable
+    {"clamp", 3, Op::Min}, {"mix", 3, Op::Add}, {"noise", 3, Op::Noise},
+    {"pi", 0, Op::Const},  // pi is not callable
 }};
 
 double applyConstant(Op op, double a, double b) {
@@ -358,6 +360,13 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
         if (fn->arity == 1) return Value::ofField(field->unary(op, a.field));
         return Value::ofField(field->binary(op, asField(a, *field), asField(b, *field)));
     };
+    if (name == "noise") {  // gradient noise at (a, b, c), seed 0 (csg/noise.h)
+        if (args[0].type == Value::Type::Number && args[1].type == Value::Type::Number &&
+            args[2].type == Value::Type::Number)
+            return Value::ofNumber(gradientNoise(Vec3(args[0].number, args[1].number, args[2].number), 0));
+        return Value::ofField(
+            field->noise(asField(args[0], *field), asField(args[1], *field), asField(args[2], *field), 0));
+    }
     if (name == "clamp") {  // min(max(a, lo), hi)
         const auto lower = apply(Op::Max, args[0], args[1]);
         return lower ? apply(Op::Min, *lower, args[2]) : std::nullopt;

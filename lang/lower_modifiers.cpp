@@ -20,6 +20,7 @@ const char* modifierWord(const Modifier& m) {
         case Modifier::Kind::Matrix: return "matrix";
         case Modifier::Kind::Move: return "move";
         case Modifier::Kind::Spin: return "spin";
+        case Modifier::Kind::Displace: return "displace";
         default: return "modifier";
     }
 }
@@ -32,7 +33,15 @@ NodePtr Lowering::applyModifiers(NodePtr node, const Solid& s) {
     const Modifier* hasPending = nullptr;  // the last transform modifier folded into pending
     for (const Modifier& m : s.modifiers) {
         const bool motion = m.kind == Modifier::Kind::Move || m.kind == Modifier::Kind::Spin;
-        if (motion || m.kind == Modifier::Kind::Material) {
+        if (m.kind == Modifier::Kind::Displace) {
+            // Like a material or a motion, it takes what came before it.
+            if (!ok) continue;
+            if (hasPending) node = transformed(node, pending, *hasPending);
+            pending = Affine{};
+            hasPending = nullptr;
+            node = node ? displaced(node, m) : nullptr;
+            ok = node != nullptr;
+        } else if (motion || m.kind == Modifier::Kind::Material) {
             // A material or a motion wraps what came before it: pending transforms first.
             std::optional<Vec3> v;
             std::optional<int> index;

@@ -12,7 +12,7 @@ void Parser::parseStatement(Program& program) {
     if (t.kind != TokenKind::Identifier ||
         (!contains(kStatementWords, t.text) && !contains(kBlockWords, t.text))) {
         std::string hint = "a statement starts with let, solid, object, material, camera, light, "
-                           "mist, background, render, include, fn, for, if, assert, echo or default";
+                           "mist, background, render, section, include, fn, for, if, assert, echo or default";
         if (t.kind == TokenKind::Identifier && peek(1).kind == TokenKind::LBrace)
             hint = "to put a solid into the scene write 'object " + t.text + " { … };'";
         if (const std::string foreign = foreignHint(t); !foreign.empty()) hint = foreign;
@@ -101,9 +101,11 @@ void Parser::parseStatementBody(Statement& s) {
         const Token& kind = expectName("a light kind (point, directional, area or sphere)");
         s.name = kind.text;
         parseBlock(s.properties);
-    } else if (word == "camera" || word == "mist" || word == "render") {
-        s.kind = word == "camera" ? Statement::Kind::Camera
-                 : word == "mist" ? Statement::Kind::Mist : Statement::Kind::Render;
+    } else if (word == "camera" || word == "mist" || word == "render" || word == "section") {
+        s.kind = word == "camera"   ? Statement::Kind::Camera
+                 : word == "mist"   ? Statement::Kind::Mist
+                 : word == "render" ? Statement::Kind::Render
+                                    : Statement::Kind::Section;
         parseBlock(s.properties);
     } else if (word == "background") {
         s.kind = Statement::Kind::Background;
@@ -406,6 +408,19 @@ ArenaList<Modifier> Parser::parseModifiers() {
             m.kind = Modifier::Kind::Matrix;
             next();
             parseMatrix(m);
+        } else if (word == "displace") {
+            // `displace KIND { … } transforms by DEPTH`
+            m.kind = Modifier::Kind::Displace;
+            next();
+            if (peek().kind != TokenKind::Identifier || peek(1).kind != TokenKind::LBrace)
+                fail(peek().loc, "expected a pattern after 'displace' (displace noise { … } by 0.1), found " +
+                                     describe(peek()));
+            m.pattern = store(parsePattern());
+            if (!checkWord("by"))
+                fail(peek().loc, "expected 'by DEPTH' after the displacement's pattern, found " + describe(peek()));
+            next();
+            const Expr arg = parseExpr();
+            m.args = list(&arg, 1);
         } else if (word == "material" && peek(1).kind != TokenKind::Identifier) {
             fail(peek(1).loc, "expected a material name after 'material', found " + describe(peek(1)));
         } else if (word == "material" && peek(2).kind != TokenKind::LBrace) {

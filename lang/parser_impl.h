@@ -16,9 +16,9 @@
 
 namespace kerf::parser_detail {
 
-inline const std::array<const char*, 14> kStatementWords = {
+inline const std::array<const char*, 15> kStatementWords = {
     "let", "solid", "object", "material", "camera", "light", "mist", "background", "render", "include",
-    "fn", "assert", "echo", "default"};
+    "fn", "assert", "echo", "default", "section"};
 /// Words that open a statement but may also stand for a child inside a Boolean body.
 inline const std::array<const char*, 2> kBlockWords = {"for", "if"};
 inline const std::array<const char*, 4> kBooleanWords = {"union", "intersection", "difference", "xor"};

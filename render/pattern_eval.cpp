@@ -2,29 +2,15 @@
 /// @brief Solid textures and gradient noise.
 #include "render/pattern_eval.h"
 
-#include "render/sampler.h"
+#include "io/texture.h"
+
+#include <glm/gtc/constants.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 namespace kerf {
 namespace {
-
-/// 6t⁵ − 15t⁴ + 10t³: zero first and second derivatives at 0 and 1.
-double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
-
-/// The 12 directions to the edges' midpoints of a cube (Perlin 2002).
-constexpr double kGradients[12][3] = {{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0},
-                                      {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
-                                      {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}};
-
-double cornerValue(int64_t i, int64_t j, int64_t k, uint64_t seed, double x, double y, double z) {
-    const uint64_t h = mixBits(mixBits(mixBits(seed ^ uint64_t(i)) ^ uint64_t(j)) ^ uint64_t(k));
-    const double* g = kGradients[h % 12];
-    return g[0] * x + g[1] * y + g[2] * z;
-}
-
-double lerp(double a, double b, double t) { return a + t * (b - a); }
 
 /// The largest absolute row sum of the map's linear part: how much it can stretch a length.
 double stretch(const Affine& a) {
@@ -48,24 +34,7 @@ double squareWaveIntegral(double x) {
     return 1.0 - std::fabs(m - 1.0);
 }
 
-
-
 }  // namespace
-
-double gradientNoise(const Vec3& p, uint64_t seed) {
-    const double fx = std::floor(p.x), fy = std::floor(p.y), fz = std::floor(p.z);
-    const int64_t i = int64_t(fx), j = int64_t(fy), k = int64_t(fz);
-    const double x = p.x - fx, y = p.y - fy, z = p.z - fz;
-    const double u = fade(x), v = fade(y), w = fade(z);
-    double c[2][2][2];
-    for (int a = 0; a < 2; ++a)
-        for (int b = 0; b < 2; ++b)
-            for (int d = 0; d < 2; ++d)
-                c[a][b][d] = cornerValue(i + a, j + b, k + d, seed, x - a, y - b, z - d);
-    const double v0 = lerp(lerp(c[0][0][0], c[1][0][0], u), lerp(c[0][1][0], c[1][1][0], u), v);
-    const double v1 = lerp(lerp(c[0][0][1], c[1][0][1], u), lerp(c[0][1][1], c[1][1][1], u), v);
-    return std::clamp(lerp(v0, v1, w), -1.0, 1.0);
-}
 
 double filteredSquareWave(double x, double w, double slack) {
     if (!(w > kFilterFloor)) return (cell(x, slack) & 1) == 0 ? 1.0 : -1.0;
@@ -100,6 +69,10 @@ double weightOfB(const Pattern& pattern, const Vec3& p, double errorBound, const
             return fromSigned(
                 filteredSquareWave(std::sqrt(q.x * q.x + q.z * q.z), std::max(w.x, w.z), slack));
         case Pattern::Kind::Gradient: return q.x - std::floor(q.x);
+        case Pattern::Kind::Image: {
+            const Vec3 c = imageColor(pattern, p, footprint);
+            return std::clamp(0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z, 0.0, 1.0);
+        }
         case Pattern::Kind::Noise: return std::clamp(0.5 + 0.5 * gradientNoise(q, pattern.seed), 0.0, 1.0);
         case Pattern::Kind::Turbulence: {
             double sum = 0.0, norm = 0.0, scale = 1.0;
@@ -127,6 +100,7 @@ double patternValue(const Pattern& pattern, const Vec3& p, double errorBound, co
 
 Vec3 patternColor(const Pattern& pattern, const Vec3& p, double errorBound,
                   const Footprint& footprint) {
+    if (pattern.kind == Pattern::Kind::Image) return imageColor(pattern, p, footprint);
     const double t = weightOfB(pattern, p, errorBound, footprint);
     // Only the entries with weight are looked at (a nested pattern costs nothing unseen).
     if (t == 0.0) return entryColor(pattern.a, p, errorBound, footprint);
@@ -144,12 +118,86 @@ Vec3 bumpedNormal(const Pattern& bump, double depth, const Vec3& p, const Vec3& 
     for (int k = 0; k < 3; ++k) {
         Vec3 e(0.0);
         e[k] = step;
-        gradient[k] = (patternValue(bump, p + e, 0.0) - patternValue(bump, p - e, 0.0)) / (2.0 * step);
+        // An image is filtered over the footprint (its texels alias otherwise); solid
+        // textures are taken at points, as they always were.
+        const Footprint at = bump.kind == Pattern::Kind::Image ? Footprint{footprint.du, footprint.dv, n}
+                                                                : Footprint{};
+        gradient[k] = (patternValue(bump, p + e, 0.0, at) - patternValue(bump, p - e, 0.0, at)) / (2.0 * step);
     }
     const Vec3 along = gradient - glm::dot(gradient, n) * n;  // its part along the surface
     const Vec3 tilted = n - depth * along;
     const double length = glm::length(tilted);
     return length > 0.0 && std::isfinite(length) ? tilted / length : n;
+}
+
+ImageCoordinates mapToImage(ImageMap::Mapping mapping, const Vec3& q, const Vec3& a,
+                            const Vec3& b, const Vec3& nq) {
+    ImageCoordinates c;
+    // Linear maps (planar, box faces): u = eu·q, v = ev·q.
+    const auto linear = [&](const Vec3& eu, const Vec3& ev) {
+        c.u = glm::dot(eu, q), c.v = glm::dot(ev, q);
+        c.dua = glm::dot(eu, a), c.dva = glm::dot(ev, a);
+        c.dub = glm::dot(eu, b), c.dvb = glm::dot(ev, b);
+    };
+    constexpr double kTwoPi = 2.0 * glm::pi<double>();
+    const double rho2 = q.x * q.x + q.z * q.z;
+    // The angle about y, from +z toward +x, in turns: u = atan2(x, z) / 2π, and its gradient
+    // (z, 0, −x) / (2π ρ²) (infinite on the axis: the whole image's width, clamped later).
+    // g·w, 0 for a zero w even where g is infinite (a point footprint at a pole).
+    const auto along = [](const Vec3& g, const Vec3& w) { return w == Vec3(0.0) ? 0.0 : glm::dot(g, w); };
+    const auto around = [&] {
+        c.u = std::atan2(q.x, q.z) / kTwoPi;
+        const Vec3 gu = Vec3(q.z, 0.0, -q.x) / (kTwoPi * rho2);
+        c.dua = along(gu, a), c.dub = along(gu, b);
+    };
+    switch (mapping) {
+        case ImageMap::Mapping::Planar: linear(Vec3(1, 0, 0), Vec3(0, 1, 0)); break;
+        case ImageMap::Mapping::Cylindrical:
+            around();
+            c.v = q.y, c.dva = a.y, c.dvb = b.y;
+            break;
+        case ImageMap::Mapping::Spherical: {
+            around();
+            // Latitude in half turns: v = ½ + atan2(y, ρ) / π, so 0 at the south pole, 1 at
+            // the north; its gradient is (−xy/ρ, ρ, −zy/ρ) / (π r²).
+            const double rho = std::sqrt(rho2), r2 = rho2 + q.y * q.y;
+            c.v = 0.5 + std::atan2(q.y, rho) / glm::pi<double>();
+            const Vec3 gv = Vec3(-q.x * q.y / rho, rho, -q.z * q.y / rho) / (glm::pi<double>() * r2);
+            c.dva = along(gv, a), c.dvb = along(gv, b);
+            break;
+        }
+        case ImageMap::Mapping::Box: {
+            // The face the normal points through most; ties go to x, then y. Each face shows
+            // the image upright and unmirrored from outside (y up on the sides, −z up on top).
+            const Vec3 m = glm::abs(nq);
+            if (m.x > 0.0 && m.x >= m.y && m.x >= m.z)
+                linear(Vec3(0, 0, nq.x > 0 ? -1 : 1), Vec3(0, 1, 0));
+            else if (m.y > 0.0 && m.y >= m.z)
+                linear(Vec3(1, 0, 0), Vec3(0, 0, nq.y > 0 ? -1 : 1));
+            else
+                linear(Vec3(nq.z < 0 ? -1 : 1, 0, 0), Vec3(0, 1, 0));
+            break;
+        }
+    }
+    return c;
+}
+
+Vec3 imageColor(const Pattern& pattern, const Vec3& p, const Footprint& footprint) {
+    if (!pattern.image || !pattern.image->texture) return Vec3(0.0);
+    const ImageMap& image = *pattern.image;
+    const Affine& map = pattern.toPattern;
+    // Normals go into the pattern's space by the inverse transpose of its linear part.
+    const Vec3 nq = image.mapping == ImageMap::Mapping::Box
+                        ? glm::transpose(glm::inverse(map.linear)) * footprint.normal
+                        : Vec3(0.0);
+    const ImageCoordinates c = mapToImage(image.mapping, map.point(p), map.vector(footprint.du),
+                                          map.vector(footprint.dv), nq);
+    // Texture coordinates run down the image (t = 0 at its top row); v runs up.
+    const Texture::Wrap wrapT = image.mapping == ImageMap::Mapping::Spherical ? Texture::Wrap::Clamp
+                                                                              : Texture::Wrap::Periodic;
+    const auto rgb = image.texture->lookup(c.u, 1.0 - c.v, c.dua, -c.dva, c.dub, -c.dvb,
+                                           Texture::Wrap::Periodic, wrapT);
+    return Vec3(rgb[0], rgb[1], rgb[2]);
 }
 
 }  // namespace kerf

@@ -3,20 +3,20 @@
 /// gradient noise they use.
 #pragma once
 
+#include "csg/noise.h"
 #include "scene/pattern.h"
 #include "scene/scene.h"
 
 namespace kerf {
 
-/// Gradient noise (Perlin's improved noise, with its gradients chosen by a hash of the
-/// lattice point and the seed): C² smooth, 0 at every integer point, within [−1, 1].
-double gradientNoise(const Vec3& p, uint64_t seed);
-
 /// The patch of surface a sample stands for: the parallelogram p + a·du + b·dv, a and b in
-/// [−½, ½] (world vectors in the tangent plane; zero vectors for a point).
+/// [−½, ½] (world vectors in the tangent plane; zero vectors for a point), and the surface's
+/// unit normal there, turned toward the viewer (which face of a box-mapped image shows; zero
+/// when not known, which takes the +z face).
 struct Footprint {
     Vec3 du{0.0};
     Vec3 dv{0.0};
+    Vec3 normal{0.0};
 };
 
 /// The pattern's colour at world point p, averaged over the box that holds the footprint in
@@ -36,8 +36,27 @@ inline Vec3 surfaceColor(const Material& m, const Vec3& p, double errorBound,
     return m.pattern ? patternColor(*m.pattern, p, errorBound, footprint) : m.color;
 }
 
+/// An image texture's colour at world point p (`pattern image`): p mapped into the pattern's
+/// space, then to image coordinates by the pattern's mapping (docs/language.md, "Image
+/// textures"); the footprint goes through the mapping's Jacobian to the two axes of the
+/// texture filter, so the image is MIP-mapped and filtered anisotropically over it (a zero
+/// footprint still gets the bilinear filter of the texels).
+Vec3 imageColor(const Pattern& pattern, const Vec3& p, const Footprint& footprint);
+
+/// The image coordinates (u, v) of a point q of an image pattern's space and their
+/// derivatives along two vectors a and b of that space (how a footprint's axes map), for the
+/// surface normal nq in that space (used by the box mapping alone).
+struct ImageCoordinates {
+    double u = 0, v = 0;
+    double dua = 0, dva = 0;  ///< along a
+    double dub = 0, dvb = 0;  ///< along b
+};
+ImageCoordinates mapToImage(ImageMap::Mapping mapping, const Vec3& q, const Vec3& a,
+                            const Vec3& b, const Vec3& nq);
+
 /// The pattern's own scalar in [0, 1] at p, the weight of b against a (0: a, 1: b) before its
 /// entries are looked at: a bump map's height (filtered over the footprint like the colour).
+/// An image's is the luminance of its colour (Rec. 709 weights), clamped to [0, 1].
 double patternValue(const Pattern& pattern, const Vec3& p, double errorBound,
                     const Footprint& footprint = {});
 

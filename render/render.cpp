@@ -7,6 +7,7 @@
 #include "render/camera.h"
 #include "render/film.h"
 #include "render/sampler.h"
+#include "render/section_cut.h"
 #include "render/shading.h"
 
 #include <tbb/blocked_range.h>
@@ -195,8 +196,11 @@ double defaultTolerance(int height, double fovDegrees) {
     return 0.125 * (2.0 * std::tan(halfFov) / std::max(height, 1));
 }
 
-RenderResult render(const Scene& scene, const RenderOptions& options) {
+RenderResult render(const Scene& input, const RenderOptions& options) {
     const auto setupStart = Clock::now();
+    // Section views: every consumer below (acceleration, shadows, beams) sees the cut model.
+    std::optional<Scene> cutScene;
+    const Scene& scene = input.sections.empty() ? input : cutScene.emplace(cutBySections(input));
     const int width = options.width > 0 ? options.width : scene.settings.width;
     const int height = options.height > 0 ? options.height : scene.settings.height;
     const int spp = options.spp > 0 ? options.spp : scene.settings.spp;

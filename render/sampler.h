@@ -9,6 +9,7 @@
 #pragma once
 
 #include "scene/limits.h"
+#include "csg/mix_bits.h"
 #include "scene/sampling.h"
 
 #include <algorithm>
@@ -16,15 +17,6 @@
 #include <vector>
 
 namespace kerf {
-
-/// SplitMix64's output function (Steele, Lea, Flood 2014): a bijection on 64 bits whose
-/// every output bit depends on every input bit.
-inline uint64_t mixBits(uint64_t z) {
-    z += 0x9e3779b97f4a7c15ull;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
 
 /// A number in [0, 1) that depends only on its three arguments. Two rounds of mixing so
 /// neighbouring pixels and neighbouring samples are uncorrelated.

@@ -60,13 +60,13 @@ double falloffScale(const Light& light, const Vec3& p) {
 /// runs along (at most 20 times: further, the box would blur a whole horizon into one tone).
 Footprint footprintAt(const Vec3& d, const Vec3& n, double distance, const ShadingContext& ctx) {
     const double width = ctx.sampleAngle * distance;
-    if (!(width > 0.0)) return {};
+    if (!(width > 0.0)) return {Vec3(0.0), Vec3(0.0), n};
     const double cosine = std::max(-glm::dot(d, n), 0.05);
     const Vec3 along = d + cosine * n;  // d's part in the tangent plane
     const double alongLength = glm::length(along);
     const Vec3 t1 = alongLength > 1e-6 ? along / alongLength : perpendicularTo(n);
     const Vec3 t2 = glm::cross(n, t1);
-    return {t1 * (width / cosine), t2 * width};
+    return {t1 * (width / cosine), t2 * width, n};
 }
 
 /// The translucency dimension of a bounce: its gloss dimension with this bit set.
@@ -251,7 +251,7 @@ Vec3 WhittedIntegrator::transmittance(const Ray& ray, double tmax, ShadingContex
         if (!b.isSurface() || !(b.t > 0.0 && b.t < tmax)) return;
         const Material& mb = material(b.material);
         if (mb.transmit <= 0) blocked = true;
-        else pass *= mb.transmit * surfaceColor(mb, ray.at(b.t), 0.0);
+        else pass *= mb.transmit * surfaceColor(mb, ray.at(b.t), 0.0, Footprint{Vec3(0.0), Vec3(0.0), b.normal});
     };
     // Only the spans' extents and materials matter here, within the tolerance.
     const OcclusionScope scope(ctx.trace);

@@ -55,4 +55,9 @@ constexpr int kMaxImageSide = 32768;
 /// Samples per pixel, in a model and on the command line.
 constexpr int kMaxSamplesPerPixel = 65536;
 
+// ---- section views ----
+/// Section planes, in a model and on the command line together: each one is a half-space every
+/// object it crosses is intersected with, so every ray through such an object meets them all.
+constexpr int kMaxSections = 64;
+
 }  // namespace kerf

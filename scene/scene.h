@@ -112,10 +112,11 @@ struct Mist {
 };
 
 /// A section plane through `point`: the solids are cut by it, the side `normal` points to
-/// removed. Nothing reads them yet; slice/ and render/ will.
+/// removed. render/section_cut.h renders the cut; slice/ may read them too.
 struct SectionPlane {
     Vec3 point{0.0};
     Vec3 normal{0.0, 0.0, 1.0};  ///< unit length
+    Vec3 color{0.85, 0.2, 0.15};  ///< the caps' colour (the cut faces), lit as a diffuse material
 };
 
 struct RenderSettings {

@@ -13,6 +13,7 @@
 
 #include "io/image_plugin.h"
 #include "io/plugin/jpeg_errors.h"
+#include "io/plugin/oiio_texture.h"
 
 namespace {
 
@@ -98,7 +99,8 @@ int readImage(const char* path, KerfImageAllocate allocate, void* user, char* er
     }
 }
 
-const KerfImagePlugin kPlugin = {KERF_IMAGE_PLUGIN_ABI, encodeImage, readImage};
+const KerfImagePlugin kPlugin = {KERF_IMAGE_PLUGIN_ABI, encodeImage, readImage,
+                                 kerf_plugin::textureOpen, kerf_plugin::textureLookup};
 
 }  // namespace
 

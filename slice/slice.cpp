@@ -1,0 +1,180 @@
+// The scene's section: objects contoured, loops grouped into regions and material layers.
+#include "slice/slice.h"
+
+#include "slice/material_at.h"
+#include "slice/section_tape.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+
+namespace kerf {
+
+struct SceneSlicer::Object {
+    NodePtr node;
+    std::shared_ptr<const Tape> tape;
+    Bounds3 bounds;
+};
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+bool pointInLoop(const SectionLoop& loop, double x, double y) {
+    bool in = false;
+    const auto& p = loop.points;
+    for (size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) {
+        if ((p[i][1] > y) != (p[j][1] > y) &&
+            x < (p[j][0] - p[i][0]) * (y - p[i][1]) / (p[j][1] - p[i][1]) + p[i][0])
+            in = !in;
+    }
+    return in;
+}
+
+/// The rectangle padded by a sixteenth of its size (at least the tolerance), so the boundary
+/// lies strictly inside it even where the bounds are tight.
+PlaneRect padded(PlaneRect r, double tolerance) {
+    const double pad = std::max(0.0625 * std::max(r.maxU - r.minU, r.maxV - r.minV), 4.0 * tolerance);
+    return {r.minU - pad, r.minV - pad, r.maxU + pad, r.maxV + pad};
+}
+
+}  // namespace
+
+SceneSlicer::SceneSlicer(const Scene& scene, const SlicePlane& family, const SliceOptions& options)
+    : mScene(scene), mFamily(family) {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const NodePtr& node = scene.objects[i];
+        const Bounds3 b = node->bounds();
+        if (b.empty()) continue;
+        if (!b.finite()) {
+            mNotes.push_back("object " + std::to_string(i + 1) +
+                             " is unbounded (a half-space or infinite solid); left out of the section");
+            continue;
+        }
+        mBounds.extend(b);
+        mObjects.push_back(Object{node, sectionTape(*node, family), b});
+    }
+    if (!mBounds.empty()) {
+        const Vec3 e = mBounds.extent();
+        mModelSize = std::max({e.x, e.y, e.z});
+        if (!(mModelSize > 0.0)) mModelSize = std::max(1.0, glm::length(mBounds.hi));
+    }
+    mTolerance = options.tolerance * mModelSize;
+    mCompileSeconds = secondsSince(t0);
+}
+
+SceneSlicer::~SceneSlicer() = default;
+
+SliceResult SceneSlicer::slice(double w) const {
+    SliceResult result;
+    SliceStats& stats = result.stats;
+    SlicePlane plane = mFamily;
+    plane.w = w;
+    const PlaneRect sceneRect = planeSectionOfBox(plane, mBounds);
+    if (!sceneRect.empty()) {
+        result.drawing.minU = sceneRect.minU;
+        result.drawing.minV = sceneRect.minV;
+        result.drawing.maxU = std::max(sceneRect.maxU, sceneRect.minU + mTolerance);
+        result.drawing.maxV = std::max(sceneRect.maxV, sceneRect.minV + mTolerance);
+    }
+    std::map<int32_t, size_t> layerOf;  // material → layer
+    for (const Object& object : mObjects) {
+        const PlaneRect rect = planeSectionOfBox(plane, object.bounds);
+        if (rect.empty()) continue;
+        auto t0 = std::chrono::steady_clock::now();
+        ContourOptions co;
+        co.tolerance = mTolerance;
+        co.rect = padded(rect, mTolerance);
+        ContourStats cs;
+        std::vector<SectionLoop> loops = contourSection(*object.tape, w, co, cs);
+        stats.contour.add(cs);
+        stats.contourSeconds += secondsSince(t0);
+        t0 = std::chrono::steady_clock::now();
+
+        // Regions: each hole goes with the smallest outer loop holding it.
+        std::vector<double> area(loops.size());
+        std::vector<size_t> outers;
+        for (size_t i = 0; i < loops.size(); ++i) {
+            area[i] = loopArea(loops[i]);
+            if (area[i] > 0.0) outers.push_back(i);
+        }
+        std::vector<std::vector<size_t>> holesOf(loops.size());
+        for (size_t i = 0; i < loops.size(); ++i) {
+            if (area[i] > 0.0) continue;
+            const auto& p = loops[i].points[0];
+            size_t best = SIZE_MAX;
+            for (const size_t o : outers)
+                if ((best == SIZE_MAX || area[o] < area[best]) && pointInLoop(loops[o], p[0], p[1]))
+                    best = o;
+            if (best != SIZE_MAX) holesOf[best].push_back(i);
+            else outers.push_back(i);  // no outer around it (should not happen): keep it alone
+        }
+        for (const size_t o : outers) {
+            // A point just inside the outer loop: left of its longest segment.
+            const auto& pts = loops[o].points;
+            size_t longest = 0;
+            double len = -1.0;
+            for (size_t i = 0; i < pts.size(); ++i) {
+                const auto& a = pts[i];
+                const auto& b = pts[(i + 1) % pts.size()];
+                const double l = std::hypot(b[0] - a[0], b[1] - a[1]);
+                if (l > len) { len = l; longest = i; }
+            }
+            const auto& a = pts[longest];
+            const auto& b = pts[(longest + 1) % pts.size()];
+            const double nu = -(b[1] - a[1]) / len, nv = (b[0] - a[0]) / len;
+            int32_t material = 0;
+            for (double d = 4.0 * mTolerance; d < 0.5 * len + 8.0 * mTolerance; d *= 4.0) {
+                const Vec3 p = plane.at(0.5 * (a[0] + b[0]) + d * nu, 0.5 * (a[1] + b[1]) + d * nv);
+                if (object.node->value(p) <= 0.0) {
+                    material = materialAt(*object.node, p);
+                    break;
+                }
+            }
+            auto [it, added] = layerOf.emplace(material, result.drawing.layers.size());
+            if (added) {
+                SectionLayer layer;
+                const bool known = material >= 0 && size_t(material) < mScene.materials.size();
+                layer.name = known ? mScene.materials[material].name : "material" + std::to_string(material);
+                if (known) {
+                    const Vec3 c = mScene.materials[material].color;
+                    layer.color = {c.x, c.y, c.z};
+                }
+                result.drawing.layers.push_back(std::move(layer));
+            }
+            SectionLayer& layer = result.drawing.layers[it->second];
+            RegionStats region;
+            region.material = layer.name;
+            region.area = area[o];
+            region.perimeter = loopLength(loops[o]);
+            layer.loops.push_back(std::move(loops[o]));
+            for (const size_t h : holesOf[o]) {
+                region.area += area[h];
+                region.perimeter += loopLength(loops[h]);
+                ++region.holes;
+                layer.loops.push_back(std::move(loops[h]));
+            }
+            stats.area += region.area;
+            stats.perimeter += region.perimeter;
+            stats.contours += 1 + region.holes;
+            stats.holes += region.holes;
+            stats.regions.push_back(std::move(region));
+        }
+        stats.regionSeconds += secondsSince(t0);
+    }
+    return result;
+}
+
+std::vector<SliceResult> SceneSlicer::sliceMany(const std::vector<double>& offsets) const {
+    std::vector<SliceResult> results(offsets.size());
+    tbb::parallel_for(size_t(0), offsets.size(), [&](size_t i) { results[i] = slice(offsets[i]); });
+    return results;
+}
+
+}  // namespace kerf

@@ -1,0 +1,73 @@
+// `pattern image` from the command line: texture files are found relative to the model's
+// folder, and a texture that cannot be read stops the run before rendering with exit 2 and a
+// FILE:LINE:COL diagnostic at the `file` property naming the texture and the reason.
+#include "app/exit_codes.h"
+#include "io/image.h"
+#include "kerf_runner.h"
+
+#include <catch2/catch.hpp>
+
+#include <regex>
+
+using namespace kerf;
+using namespace kerf::test;
+using kerf::app::kExitSuccess;
+using kerf::app::kExitUsage;
+
+namespace {
+
+std::string texturedModel(const std::string& file) {
+    return "camera { eye <0, 0, -4> look_at <0, 0, 0> fov 40 }\n"
+           "material tex { pattern image { file \"" + file + "\" mapping planar } ambient 1 diffuse 0 specular 0 }\n"
+           "object box { min <-1, -1, -1> max <1, 1, 1> } material tex;\n"
+           "render { width 8 height 8 spp 1 }\n";
+}
+
+}  // namespace
+
+TEST_CASE("kerf render: a missing or unreadable texture is exit 2 at its file property") {
+    struct Bad {
+        const char* what;
+        const char* file;
+        const char* reason;  ///< a regular expression for the reason
+    };
+    const Bad cases[] = {{"missing", "nowhere.png", "no such file"},
+                         {"not an image", "notes.png", ".+"},
+                         {"a folder", "folder", "it is a folder"}};
+    for (const Bad& bad : cases) {
+        TempDir dir;
+        dir.write("notes.png", "these are notes, not pixels\n");
+        fs::create_directories(dir.path() / "models" / "folder");
+        dir.write("models/notes.png", "these are notes, not pixels\n");
+        dir.write("models/scene.kerf", texturedModel(bad.file));
+        for (const char* command : {"render", "check"}) {
+            std::vector<std::string> args{command, "models/scene.kerf"};
+            if (std::string(command) == "render") args.insert(args.end(), {"-o", "out.png"});
+            const KerfRun run = runKerf(dir, args);
+            INFO(bad.what << ", " << command << "\nstderr:\n" << run.err);
+            CHECK(run.exitCode == kExitUsage);
+            // Line 2, the column of the file name's opening quote.
+            const std::string expected = std::string(R"(models/scene\.kerf:2:\d+: error: cannot read texture ')") +
+                                         bad.file + "': " + bad.reason;
+            CHECK(std::regex_search(run.err, std::regex(expected)));
+            CHECK_FALSE(fs::exists(dir.path() / "out.png"));
+        }
+    }
+}
+
+TEST_CASE("kerf render: texture files are relative to the model's folder") {
+    TempDir dir;
+    Image red(2, 2, 3);
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) red.at(i, j, 0) = 1.0f;
+    fs::create_directories(dir.path() / "models" / "textures");
+    writeImage(red, dir.file("models/textures/red.png"));
+    dir.write("models/scene.kerf", texturedModel("textures/red.png"));
+    const KerfRun run = runKerf(dir, {"render", "models/scene.kerf", "-o", "out.exr"});
+    INFO("stderr:\n" << run.err);
+    REQUIRE(run.exitCode == kExitSuccess);
+    const Image out = readImage(dir.file("out.exr"));
+    // The centre pixel sees the box's face: the texture's red, through ambient 1.
+    CHECK(out.at(4, 4, 0) == Approx(1.0).margin(1e-3));
+    CHECK(out.at(4, 4, 1) == Approx(0.0).margin(1e-3));
+}
