@@ -213,10 +213,17 @@ Vec3 WhittedIntegrator::directLight(const Material& m, const Vec3& albedo, const
         const bool sampled = light.kind == Light::Kind::Area || light.kind == Light::Kind::Sphere;
         // Each light of each bounce draws from its own dimension; its `samples` points are a
         // rank-1 lattice shifted by that one point (Cranley–Patterson), so they cover the
-        // light evenly and their mean stays unbiased.
-        const SubPixel u0 =
-            sampled ? ctx.sample2D(sample_dim::light(depth) + (uint32_t(k) << 16)) : SubPixel{};
+        // light evenly and their mean stays unbiased. With several points the shift also
+        // takes a hashed offset per pixel sample: the pixel's own points may form the same
+        // lattice (the lattice sampler with spp = samples), and lattice plus lattice point is
+        // the same lattice again, which would visit only `samples` places on the light.
+        const uint32_t dim = sample_dim::light(depth) + (uint32_t(k) << 16);
+        SubPixel u0 = sampled ? ctx.sample2D(dim) : SubPixel{};
         const uint32_t count = sampled ? uint32_t(std::max(1, light.samples)) : 1;
+        if (count > 1) {
+            u0.x += hashUniform(ctx.pixel, uint32_t(ctx.sample), dim ^ 0x9e3779b9u);
+            u0.y += hashUniform(ctx.pixel, uint32_t(ctx.sample), dim ^ 0x7f4a7c15u);
+        }
         Vec3 lightSum(0.0);
         for (uint32_t s = 0; s < count; ++s) {
             SubPixel u = u0;

@@ -1,0 +1,97 @@
+/// @file mesh/triangle_bvh.h
+/// @brief A bounding volume hierarchy over a TriangleMesh's triangles: binned SAH build
+/// (parallel with TBB near the root), flat 32-byte nodes with float boxes rounded outward,
+/// triangles copied in leaf order for locality, and three walks with the watertight test:
+/// closest hit, any hit (shadow rays) and every crossing (for CSG spans).
+///
+/// Split: the build is in bvh_build.cpp, the walks in triangle_bvh.cpp, the ray–triangle test
+/// in watertight_triangle.h.
+#pragma once
+
+#include "mesh/triangle_mesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace kerf {
+
+/// Work counters of the walks; the caller owns one (per thread) and reads it when it likes.
+struct BvhStats {
+    uint64_t nodesVisited = 0;     ///< nodes whose box was tested
+    uint64_t trianglesTested = 0;  ///< ray–triangle tests
+};
+
+/// The nearest crossing: t, the mesh's triangle index, and the weights of its vertices 1 and
+/// 2 (vertex 0 has 1 − u − v).
+struct TriangleHit {
+    double t = kInf;
+    uint32_t triangle = 0;
+    double u = 0.0, v = 0.0;
+};
+
+/// One crossing of the all-crossings walk.
+struct TriangleCrossing {
+    double t;
+    uint32_t triangle;
+    bool entering;  ///< dot(dir, geometric normal) < 0, the normal (p1 − p0) × (p2 − p0)
+    bool operator==(const TriangleCrossing& o) const {
+        return t == o.t && triangle == o.triangle && entering == o.entering;
+    }
+};
+
+/// Build settings; the defaults are what kerf uses.
+struct BvhBuildOptions {
+    int bins = 32;          ///< SAH bins over the centroids' extent along each axis
+    int maxLeafSize = 8;    ///< a leaf never holds more triangles than this
+    int parallelAbove = 16384;  ///< subtrees with more triangles are built as TBB tasks
+    double traversalCost = 1.0;  ///< SAH cost of a walk step (two box tests), in triangle tests
+};
+
+class TriangleBvh {
+public:
+    TriangleBvh() = default;
+    /// Builds over mesh's triangles (positions copied; the mesh need not outlive the BVH).
+    /// Any input builds: no triangles, repeated or zero-area triangles. Positions must be
+    /// finite (loading rejects NaN and infinities before) and fewer than 2^32 triangles. The
+    /// tree does not depend on the thread count.
+    explicit TriangleBvh(const TriangleMesh& mesh, const BvhBuildOptions& options = {});
+
+    /// The nearest crossing with t in (tmin, tmax), or false. Ties at equal t go to whichever
+    /// triangle the walk meets first. A ray with a zero direction meets nothing.
+    bool closestHit(const Ray& ray, double tmin, double tmax, TriangleHit& hit,
+                    BvhStats& stats) const;
+    /// Whether any triangle crosses the ray with t in (tmin, tmax) (stops at the first).
+    bool anyHit(const Ray& ray, double tmin, double tmax, BvhStats& stats) const;
+    /// Every crossing with t in (tmin, tmax), sorted by t then triangle index (appended to
+    /// out, which is cleared first). A ray through an edge or vertex crosses every triangle
+    /// that shares it, so it may report one surface crossing more than once at the same t.
+    void allCrossings(const Ray& ray, double tmin, double tmax,
+                      std::vector<TriangleCrossing>& out, BvhStats& stats) const;
+
+    size_t triangleCount() const { return mTriangleIndex.size(); }
+    size_t nodeCount() const { return mNodes.size(); }
+    Bounds3 bounds() const { return mBounds; }
+    /// Tree depth (a single leaf has depth 1; 0 without triangles), for tests.
+    int depth() const;
+
+    struct Node {
+        float lo[3], hi[3];  ///< rounded outward from the double boxes: never smaller
+        uint32_t index;      ///< leaf: first triangle slot; inner: the second child
+        uint16_t count;      ///< leaf: triangles (> 0); inner: 0 (the first child follows)
+        uint16_t axis;       ///< inner: the split axis, for the near-first order
+    };
+    static_assert(sizeof(Node) == 32, "two nodes per cache line");
+    /// Deepest walk the fixed stack allows; the build splits at the median below this depth.
+    static constexpr int kMaxDepth = 60;
+
+private:
+    struct Tri { double p[3][3]; };  ///< vertices as plain arrays (see watertight_triangle.h)
+    std::vector<Node> mNodes;
+    std::vector<Tri> mTris;                  ///< triangle vertices in leaf order
+    std::vector<uint32_t> mTriangleIndex;    ///< the mesh's index of each slot of mTris
+    Bounds3 mBounds;
+
+    friend struct BvhBuilder;
+};
+
+}  // namespace kerf
