@@ -87,19 +87,29 @@ Scene floorUnder(const Light& light) {
     return scene;
 }
 
+/// A point light above the floor, and a sphere light of radius 0.8 and the same power there.
+Light pointLight() {
+    Light point;
+    point.kind = Light::Kind::Point;
+    point.position = Vec3(0.5, 3.0, 0.2);
+    point.power = 400.0;
+    return point;
+}
+Light sphereLightAround(const Light& point) {
+    Light sphere = point;
+    sphere.kind = Light::Kind::Sphere;
+    sphere.radius = 0.8;
+    return sphere;
+}
+
 }  // namespace
 
 TEST_CASE("a sphere light lights a facing point exactly as a point light of its power") {
     // A Lambertian sphere of radiance L gives E = π L (r/d)² cos θ at a point whose horizon
     // it is above: with L = P/(4π²r²) that is P cos θ/(4π d²), a point light's. The estimate
     // from 256 jittered samples per pixel must match it within 1 %.
-    Light point;
-    point.kind = Light::Kind::Point;
-    point.position = Vec3(0.5, 3.0, 0.2);
-    point.power = 400.0;
-    Light sphere = point;
-    sphere.kind = Light::Kind::Sphere;
-    sphere.radius = 0.8;
+    const Light point = pointLight();
+    Light sphere = sphereLightAround(point);
     // Both with the same 256 film positions per pixel: only the light's estimate differs.
     RenderOptions options = smallImage(16, 12, 2);
     options.spp = 256;
@@ -116,13 +126,8 @@ TEST_CASE("a light's samples per shading point: the same mean, far less noise") 
     // The sphere light of the test above at one sample per pixel: with 64 lattice points on
     // the light per shading point each pixel is within 1 % of the exact point-light value,
     // and the RMS error is under a quarter of one point's.
-    Light point;
-    point.kind = Light::Kind::Point;
-    point.position = Vec3(0.5, 3.0, 0.2);
-    point.power = 400.0;
-    Light sphere = point;
-    sphere.kind = Light::Kind::Sphere;
-    sphere.radius = 0.8;
+    const Light point = pointLight();
+    Light sphere = sphereLightAround(point);
     const RenderOptions options = smallImage(16, 12, 2);
     const RenderResult exact = render(floorUnder(point), options);
     const auto rmsError = [&](int samples) {
