@@ -32,6 +32,13 @@ struct ExprBuilder {
         }
         return sum < 0 ? c(0.0) : sum;
     }
+
+    /// The point m·(x, y, z) + offset, row by row (as TransformNode::value maps a point).
+    void mapPoint(const Affine& m, ExprId x, ExprId y, ExprId z, ExprId out[3]) {
+        for (int row = 0; row < 3; ++row)
+            out[row] = add(dot(Vec3(m.linear[0][row], m.linear[1][row], m.linear[2][row]), x, y, z),
+                           c(m.offset[row]));
+    }
 };
 
 }  // namespace kerf

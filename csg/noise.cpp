@@ -216,11 +216,10 @@ long double gradientNoise(const glm::tvec3<long double>& p, uint64_t seed) {
 
 double gradientNoise(const Vec3& p, uint64_t seed, Vec3& gradient) {
     const double q[3] = {p.x, p.y, p.z};
-    const double value = noiseValue(q, seed);
     gradient = Vec3(0.0);
     int64_t cell[3];
     double o[3];
-    if (!locate(q, cell, o) || std::fabs(value) == 1.0) return value;  // 0 there, or clamped
+    if (!locate(q, cell, o)) return noiseValue(q, seed);  // NaN, or 0 far out
     Dual c[2][2][2];
     for (int a = 0; a < 2; ++a)
         for (int b = 0; b < 2; ++b)
@@ -232,7 +231,10 @@ double gradientNoise(const Vec3& p, uint64_t seed, Vec3& gradient) {
         w{fade(o[2]), Vec3(0, 0, fadeSlope(o[2]))};
     const Dual v0 = lerp(lerp(c[0][0][0], c[1][0][0], u), lerp(c[0][1][0], c[1][1][0], u), v);
     const Dual v1 = lerp(lerp(c[0][0][1], c[1][0][1], u), lerp(c[0][1][1], c[1][1][1], u), v);
-    gradient = lerp(v0, v1, w).g;
+    // The same operations as noiseValue's on the values, so the same bits.
+    const Dual n = lerp(v0, v1, w);
+    const double value = std::clamp(n.v, -1.0, 1.0);
+    if (std::fabs(value) != 1.0) gradient = n.g;  // 0 where the clamp holds
     return value;
 }
 

@@ -27,12 +27,8 @@ ExprId treeExpr(const Node& node, ExprGraph& g, ExprId x, ExprId y, ExprId z) {
     if (kind == NodeKind::Material || kind == NodeKind::Motion) return treeExpr(*kids[0], g, x, y, z);
     if (kind == NodeKind::Transform) {
         // As TransformNode::value: the point mapped by the inverse, row by row.
-        const Affine m = std::get<TransformParams>(node.params()).localFromWorld;
         ExprId local[3];
-        for (int row = 0; row < 3; ++row) {
-            const Vec3 k(m.linear[0][row], m.linear[1][row], m.linear[2][row]);
-            local[row] = e.add(e.dot(k, x, y, z), e.c(m.offset[row]));
-        }
+        e.mapPoint(std::get<TransformParams>(node.params()).localFromWorld, x, y, z, local);
         return treeExpr(*kids[0], g, local[0], local[1], local[2]);
     }
     // Booleans, left to right as BooleanNode::value combines them.

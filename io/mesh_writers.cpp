@@ -1,9 +1,10 @@
 // OBJ, binary PLY and binary STL encoders, and the atomic write of their bytes.
 #include "io/mesh_writers.h"
 
+#include "io/number_text.h"
+
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstring>
 
@@ -21,12 +22,6 @@ void put(std::string& out, T value) {
     out.append(bytes, sizeof(T));
 }
 
-void putNumber(std::string& out, double v) {
-    char buf[32];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);  // shortest round trip
-    out.append(buf, r.ptr);
-}
-
 std::string encodeObj(const MeshArrays& m) {
     std::string out = "# kerf mesh: " + std::to_string(m.vertexCount) + " vertices, " +
                       std::to_string(m.triangleCount) + " triangles\n";
@@ -35,7 +30,7 @@ std::string encodeObj(const MeshArrays& m) {
         out += "v";
         for (int a = 0; a < 3; ++a) {
             out += ' ';
-            putNumber(out, m.xyz[3 * i + size_t(a)]);
+            appendExactNumber(out, m.xyz[3 * i + size_t(a)]);
         }
         out += '\n';
     }

@@ -84,11 +84,8 @@ NodePtr Lowering::displaced(const NodePtr& node, const Modifier& m) {
     ExprGraph graph;
     ExprBuilder e{graph};
     const ExprId x = graph.x(), y = graph.y(), z = graph.z();
-    const Affine& map = pattern->toPattern;
     ExprId q[3];
-    for (int row = 0; row < 3; ++row)
-        q[row] = e.add(e.dot(Vec3(map.linear[0][row], map.linear[1][row], map.linear[2][row]), x, y, z),
-                       e.c(map.offset[row]));
+    e.mapPoint(pattern->toPattern, x, y, z, q);
     const ExprId f = e.sub(treeExpr(*node, graph, x, y, z), e.mul(e.c(depth), heightExpr(*pattern, e, q)));
     const std::shared_ptr<const Tape> tape = Tape::compile(graph, f);
     // The surface can leave the solid's bounds by |D| where f grows like a distance, more where
