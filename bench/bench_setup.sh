@@ -1,5 +1,16 @@
-# Sourced by bench/run_bench.sh and bench/run_implicit_bench.sh from the repository root:
-# bench_setup NAME checks the peer's tools and sets KERF (builds kerf when KERF is unset).
+# Sourced by the bench/run_*.sh scripts.
+# absolute PATH: PATH made absolute against the caller's directory.
+absolute() { [[ "$1" = /* ]] && echo "$1" || echo "$PWD/$1"; }
+
+# bench_absolute_env: KERF and BENCH_BUILD, when set, made absolute; call it before the script
+# changes to the repository root, since paths in the environment are the caller's.
+bench_absolute_env() {
+    if [[ -n "${KERF:-}" ]]; then KERF="$(absolute "$KERF")"; fi
+    if [[ -n "${BENCH_BUILD:-}" ]]; then BENCH_BUILD="$(absolute "$BENCH_BUILD")"; fi
+}
+
+# bench_setup NAME (from the repository root) checks the peer's tools and sets KERF (builds
+# kerf when KERF is unset).
 bench_setup() {
     local name="$1" tool candidate
     for tool in povray python3 cmake; do

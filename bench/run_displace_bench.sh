@@ -14,12 +14,10 @@
 # Any arguments go to bench/displace_bench.py (see its --help).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-absolute() { [[ "$1" = /* ]] && echo "$1" || echo "$PWD/$1"; }
-if [[ -n "${KERF:-}" ]]; then KERF="$(absolute "$KERF")"; fi
-if [[ -n "${BENCH_BUILD:-}" ]]; then BENCH_BUILD="$(absolute "$BENCH_BUILD")"; fi
+source "$root/bench/bench_setup.sh"
+bench_absolute_env
 cd "$root"
 
-source bench/bench_setup.sh
 bench_setup run_displace_bench.sh
 
 bench_build="${BENCH_BUILD:-$root/build/bench-reference}"

@@ -14,7 +14,7 @@
 # Environment: KERF=path/to/kerf (default build/kerf), OPENSCAD=path, OUT=folder.
 # Any arguments go to bench/slice/slice_bench.py (see its --help).
 set -euo pipefail
-absolute() { [[ "$1" = /* ]] && echo "$1" || echo "$PWD/$1"; }
+source "$(dirname "${BASH_SOURCE[0]}")/bench_setup.sh"
 KERF="$(absolute "${KERF:-build/kerf}")"
 OUT="$(absolute "${OUT:-$(mktemp -d /tmp/kerf-slice-bench.XXXXXX)}")"
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
