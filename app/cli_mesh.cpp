@@ -3,6 +3,7 @@
 
 #include "app/exit_codes.h"
 #include "app/model_loader.h"
+#include "app/option_text.h"
 #include "app/output_paths.h"
 #include "io/mesh_writers.h"
 #include "volume/mesh_export.h"
@@ -21,14 +22,12 @@ namespace {
 
 static_assert(sizeof(Vec3) == 3 * sizeof(double), "vertices are handed to io/ as doubles");
 
-/// The whole of `text` as a number (strtod: "nan" and "inf" parse, and are refused later by
-/// the range checks with a message that names the option).
+/// The whole of `text` as a number ("nan" and "inf" parse, and are refused later by the range
+/// checks with a message that names the option).
 double parseNumber(const std::string& option, const std::string& text) {
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size())
-        throw UsageError(option + " must be a number (got '" + text + "')");
-    return v;
+    const std::optional<double> v = parseWholeNumber(text);
+    if (!v) throw UsageError(option + " must be a number (got '" + text + "')");
+    return *v;
 }
 
 void printMeshStats(const MeshExportStats& s, const TriangleMesh& mesh, double secondsCompile,

@@ -3,6 +3,7 @@
 
 #include "app/exit_codes.h"
 #include "app/model_loader.h"
+#include "app/option_text.h"
 #include "app/output_paths.h"
 #include "app/progress_bar.h"
 #include "app/stats_report.h"
@@ -62,34 +63,18 @@ void checkNumbers(const RenderCommandLine& line) {
     }
 }
 
-/// "A,B,C" as three finite numbers, or nothing.
-std::optional<Vec3> parseTriple(const std::string& text) {
-    Vec3 v;
-    const char* p = text.c_str();
-    for (int k = 0; k < 3; ++k) {
-        if (k > 0 && *p++ != ',') return std::nullopt;
-        char* end = nullptr;
-        v[k] = std::strtod(p, &end);
-        if (end == p || !std::isfinite(v[k])) return std::nullopt;
-        p = end;
-    }
-    if (*p != '\0') return std::nullopt;
-    return v;
-}
-
 /// --section: `x=V`, `y=V` or `z=V` (the plane at that coordinate, the side above it
 /// removed), or `PX,PY,PZ:NX,NY,NZ` (a point and the normal towards the removed side).
 SectionPlane parseSection(const std::string& spec, const Vec3& color) {
     const std::string usage = "--section expects x=V, y=V, z=V or PX,PY,PZ:NX,NY,NZ (got '" + spec + "')";
     SectionPlane plane;
     plane.color = color;
-    if (spec.size() > 2 && spec[1] == '=' && spec[0] >= 'x' && spec[0] <= 'z') {
-        const int axis = spec[0] - 'x';
-        char* end = nullptr;
-        const double v = std::strtod(spec.c_str() + 2, &end);
-        if (*end != '\0' || !std::isfinite(v)) throw UsageError(usage);
+    if (const auto axisSpec = parseAxisSpec(spec)) {
+        const int axis = axisSpec->first;
+        const std::optional<double> v = parseWholeNumber(axisSpec->second);
+        if (!v || !std::isfinite(*v)) throw UsageError(usage);
         plane.point = Vec3(0.0);
-        plane.point[axis] = v;
+        plane.point[axis] = *v;
         plane.normal = Vec3(0.0);
         plane.normal[axis] = 1.0;
         return plane;

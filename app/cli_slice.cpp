@@ -3,6 +3,7 @@
 
 #include "app/exit_codes.h"
 #include "app/model_loader.h"
+#include "app/option_text.h"
 #include "io/atomic_file.h"
 #include "io/image.h"
 #include "io/section_writers.h"
@@ -27,37 +28,23 @@ namespace {
 enum class Format { Svg, Dxf, Png };
 
 double parseNumber(const std::string& text, const std::string& option) {
-    size_t used = 0;
-    double v = 0.0;
-    try {
-        v = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || used != text.size() || !std::isfinite(v))
-        throw UsageError(option + ": '" + text + "' is not a finite number");
-    return v;
+    const std::optional<double> v = parseWholeNumber(text);
+    if (!v || !std::isfinite(*v)) throw UsageError(option + ": '" + text + "' is not a finite number");
+    return *v;
 }
 
 /// "x=V" → axis and the rest after '='.
 int parseAxis(const std::string& spec, const std::string& option, std::string& rest) {
-    if (spec.size() < 3 || spec[1] != '=' || (spec[0] != 'x' && spec[0] != 'y' && spec[0] != 'z'))
-        throw UsageError(option + " must look like z=0.5 (x=, y= or z=), got '" + spec + "'");
-    rest = spec.substr(2);
-    return spec[0] - 'x';
+    const auto axisSpec = parseAxisSpec(spec);
+    if (!axisSpec) throw UsageError(option + " must look like z=0.5 (x=, y= or z=), got '" + spec + "'");
+    rest = axisSpec->second;
+    return axisSpec->first;
 }
 
 Vec3 parseVector(const std::string& text, const std::string& option) {
-    Vec3 v;
-    size_t start = 0;
-    for (int i = 0; i < 3; ++i) {
-        const size_t comma = text.find(',', start);
-        if ((i < 2) != (comma != std::string::npos))
-            throw UsageError(option + " must be three numbers x,y,z, got '" + text + "'");
-        v[i] = parseNumber(text.substr(start, comma - start), option);
-        start = comma + 1;
-    }
-    return v;
+    const std::optional<Vec3> v = parseTriple(text);
+    if (!v) throw UsageError(option + " must be three finite numbers x,y,z, got '" + text + "'");
+    return *v;
 }
 
 Format formatOf(const std::string& path) {
