@@ -4,10 +4,13 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
 namespace kerf {
+
+class ScalarField;
 
 enum class Op : uint8_t {
     Const, VarX, VarY, VarZ,
@@ -19,6 +22,9 @@ enum class Op : uint8_t {
     PowInt,
     // ternary: gradient noise at the point (a, b, c) (csg/noise.h), its seed held in `value`
     Noise,
+    // ternary: an external field at the point (a, b, c) (csg/scalar_field.h); `value` holds
+    // its index in the graph's (and the tape's) field table
+    Field,
 };
 
 /// One node of the graph. Operands are indices of earlier nodes (-1 when unused).
@@ -44,12 +50,17 @@ public:
     /// Gradient noise at (x, y, z) with the given seed (an integer below 2⁵³, so that the
     /// double `value` holds it exactly).
     ExprId noise(ExprId x, ExprId y, ExprId z, uint64_t seed);
+    /// The field at (x, y, z). One field object gets one table index however often it is used.
+    ExprId field(ExprId x, ExprId y, ExprId z, std::shared_ptr<const ScalarField> field);
 
     const std::vector<ExprNode>& nodes() const { return mNodes; }
+    /// The fields Op::Field nodes name by index.
+    const std::vector<std::shared_ptr<const ScalarField>>& fields() const { return mFields; }
 
 private:
     ExprId intern(const ExprNode& n);
     std::vector<ExprNode> mNodes;
+    std::vector<std::shared_ptr<const ScalarField>> mFields;
     std::unordered_map<uint64_t, std::vector<ExprId>> mIndex;  // hash -> candidates
 };
 

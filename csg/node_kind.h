@@ -15,12 +15,13 @@ namespace kerf {
 
 class Node;
 class Tape;
+class MeshShape;  // mesh/mesh_shape.h
 using NodePtr = std::shared_ptr<const Node>;
 
 /// Every kind of node. Boolean nodes have one kind per operator.
 // clang-format off: grouped by arity
 enum class NodeKind : uint8_t {
-    Sphere, Box, Cylinder, Cone, Torus, HalfSpace, Implicit,  // leaves
+    Sphere, Box, Cylinder, Cone, Torus, HalfSpace, Implicit, Mesh,  // leaves
     Transform, Material, Motion,                              // one child
     Union, Intersection, Difference, Xor,                     // one or more children
 };
@@ -29,7 +30,7 @@ enum class NodeKind : uint8_t {
 /// "sphere", "box", …, "xor": the language's keywords for the kinds.
 const char* nodeKindName(NodeKind kind);
 /// True for the primitives (nodes without children).
-inline bool isLeaf(NodeKind kind) { return kind <= NodeKind::Implicit; }
+inline bool isLeaf(NodeKind kind) { return kind <= NodeKind::Mesh; }
 /// The Boolean kind of an operator, and back.
 NodeKind booleanKind(BoolOp op);
 BoolOp booleanOp(NodeKind kind);  ///< kind must be Union, Intersection, Difference or Xor
@@ -41,6 +42,9 @@ struct ConeParams { Vec3 a, b; double r1, r2; };
 struct TorusParams { double majorRadius, minorRadius; };
 struct HalfSpaceParams { Vec3 normal; double offset; };
 struct ImplicitParams { std::shared_ptr<const Tape> tape; Bounds3 bound; };
+/// A triangle mesh, loaded once and shared by every instance; `smooth` shades with the
+/// vertex normals where the file has them.
+struct MeshParams { std::shared_ptr<const MeshShape> shape; bool smooth; };
 /// The map and the inverse the node keeps (computed once, with care for rounding).
 struct TransformParams { Affine worldFromLocal; Affine localFromWorld; };
 struct MaterialParams { int32_t material; };
@@ -53,8 +57,8 @@ struct MotionParams { Vec3 velocity; Vec3 spin; };
 /// BooleanParams). Passing it back to the factory of its kind rebuilds an equal node.
 using NodeParams =
     std::variant<SphereParams, BoxParams, CylinderParams, ConeParams, TorusParams,
-                 HalfSpaceParams, ImplicitParams, TransformParams, MaterialParams, BooleanParams,
-                 MotionParams>;
+                 HalfSpaceParams, ImplicitParams, MeshParams, TransformParams, MaterialParams,
+                 BooleanParams, MotionParams>;
 
 /// A node's children: a view of the NodePtrs it holds, valid while the node lives.
 class NodeSpan {

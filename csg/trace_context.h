@@ -20,6 +20,8 @@ struct TraceStats {
     uint64_t rootSteps = 0;        ///< interval subdivisions and polish iterations
     uint64_t intervalEvals = 0;    ///< interval evaluations of implicit functions
     uint64_t cellsVisited = 0;     ///< octree cells and skipped blocks a ray walked through
+    uint64_t meshNodes = 0;        ///< triangle-BVH nodes visited (mesh/triangle_bvh.h)
+    uint64_t triangleTests = 0;    ///< ray–triangle tests
 
     TraceStats& operator+=(const TraceStats& o) {
         primitiveTests += o.primitiveTests;
@@ -27,6 +29,8 @@ struct TraceStats {
         rootSteps += o.rootSteps;
         intervalEvals += o.intervalEvals;
         cellsVisited += o.cellsVisited;
+        meshNodes += o.meshNodes;
+        triangleTests += o.triangleTests;
         return *this;
     }
 };

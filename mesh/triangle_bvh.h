@@ -68,6 +68,12 @@ public:
     void allCrossings(const Ray& ray, double tmin, double tmax,
                       std::vector<TriangleCrossing>& out, BvhStats& stats) const;
 
+    /// The point of the triangles nearest to p, if one lies within maxDistance: its distance
+    /// and its triangle (ties go to the first the walk meets). The walk visits nodes nearest
+    /// first and skips those farther than the best so far (mesh/triangle_bvh_nearest.cpp).
+    bool nearestTriangle(const Vec3& p, double maxDistance, double& distance,
+                         uint32_t& triangle, BvhStats& stats) const;
+
     size_t triangleCount() const { return mTriangleIndex.size(); }
     size_t nodeCount() const { return mNodes.size(); }
     Bounds3 bounds() const { return mBounds; }

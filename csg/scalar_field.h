@@ -1,0 +1,29 @@
+/// @file csg/scalar_field.h
+/// @brief A scalar field defined outside the expression language that a tape can call
+/// (Op::Field): a closed mesh's signed distance (mesh/mesh_shape.h). Every tape evaluator
+/// calls one of these methods, so a field takes part in implicit forms, slices, displacement
+/// and the octree like any other operation.
+#pragma once
+
+#include "csg/interval.h"
+#include "csg/types.h"
+
+namespace kerf {
+
+class ScalarField {
+public:
+    virtual ~ScalarField() = default;
+    /// f at p.
+    virtual double value(const Vec3& p) const = 0;
+    /// f at p for reference computations (at least as accurate as value()).
+    virtual long double valueExtended(const glm::tvec3<long double>& p) const = 0;
+    /// f at p and a gradient there (a one-sided one where f has a kink).
+    virtual double valueGradient(const Vec3& p, Vec3& gradient) const = 0;
+    /// An interval holding f(p) for every p in the box.
+    virtual Interval range(const Interval& x, const Interval& y, const Interval& z) const = 0;
+    /// A bound on every partial derivative's magnitude, |∂f/∂x|, |∂f/∂y|, |∂f/∂z| ≤ lipschitz()
+    /// everywhere (1 for a distance).
+    virtual double lipschitz() const { return 1.0; }
+};
+
+}  // namespace kerf
