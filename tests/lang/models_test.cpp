@@ -80,6 +80,7 @@ void dump(const NodePtr& n, std::string& out, std::map<const Node*, int>& ids) {
                 bits(out, p.worldFromLocal.offset);
             } else if constexpr (std::is_same_v<P, MaterialParams>) { out += std::to_string(p.material); }
             else if constexpr (std::is_same_v<P, MotionParams>) { bits(out, p.velocity); bits(out, p.spin); }
+            else if constexpr (std::is_same_v<P, MeshParams>) { out += std::to_string(p.smooth); }
             else { out += std::to_string(static_cast<int>(p.op)); }
         },
         n->params());
