@@ -206,6 +206,7 @@ TEST_CASE("field/interval evaluators enclose samples and give the field's exact 
             long double lo, hi;
             a->exactRange(box, lo, hi);
             const Interval r = alone->evalInterval(x, y, z);
+            CHECK_FALSE(r.maybeNan);
             CHECK(r.lo <= lo);
             CHECK(r.hi >= hi);
             CHECK(lo - r.lo <= 1e-14L * (1.0L + std::fabs(lo)));

@@ -29,7 +29,7 @@ public:
     }
     Interval range(const Interval& x, const Interval& y, const Interval& z) const override {
         const Interval s = sqr(x - mCentre.x) + sqr(y - mCentre.y) + sqr(z - mCentre.z);
-        return sqrt(s) - Interval(mRadius);
+        return sqrt(nonNegative(s)) - Interval(mRadius);  // a sum of squares: no NaN flag
     }
 
     /// The exact range over a box in long double: nearest and farthest points of the box.
@@ -96,7 +96,7 @@ public:
             q[a] = abs(*axes[a] - mCentre[a]) - Interval(mHalf[a]);
             outside = outside + sqr(max(q[a], Interval(0.0)));
         }
-        return sqrt(outside) + min(max(max(q[0], q[1]), q[2]), Interval(0.0));
+        return sqrt(nonNegative(outside)) + min(max(max(q[0], q[1]), q[2]), Interval(0.0));
     }
 
 private:
