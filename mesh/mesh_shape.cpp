@@ -41,7 +41,7 @@ Vec3 MeshShape::shadingNormal(uint32_t triangle, const Vec3& p, bool smooth) con
     const auto& t = mMesh.triangles[triangle];
     const Vec3 &a = mMesh.positions[t[0]], &b = mMesh.positions[t[1]], &c = mMesh.positions[t[2]];
     const double f2 = faceLength * faceLength;
-    const double w1 = glm::dot(glm::cross(p - a, c - a), -face) / f2;  // weight of b
+    const double w1 = glm::dot(glm::cross(p - a, c - a), face) / f2;   // weight of b
     const double w2 = glm::dot(glm::cross(b - a, p - a), face) / f2;   // weight of c
     const double w0 = 1.0 - w1 - w2;
     Vec3 n = w0 * mMesh.normals[t[0]] + w1 * mMesh.normals[t[1]] + w2 * mMesh.normals[t[2]];
