@@ -2,6 +2,7 @@
 #include "slice/slice.h"
 
 #include "slice/material_at.h"
+#include "slice/mesh_section.h"
 #include "slice/section_tape.h"
 
 #include <tbb/parallel_for.h>
@@ -17,6 +18,7 @@ struct SceneSlicer::Object {
     NodePtr node;
     std::shared_ptr<const Tape> tape;
     Bounds3 bounds;
+    std::shared_ptr<const PlacedMesh> mesh;  ///< set when the object is one mesh: cut exactly
 };
 
 namespace {
@@ -57,8 +59,18 @@ SceneSlicer::SceneSlicer(const Scene& scene, const SlicePlane& family, const Sli
                              " is unbounded (a half-space or infinite solid); left out of the section");
             continue;
         }
+        if (auto mesh = placedMeshOf(*node)) {
+            if (!mesh->solid) {
+                mNotes.push_back("object " + std::to_string(i + 1) +
+                                 " is an open mesh (a surface, not a solid); left out of the section");
+                continue;
+            }
+            mBounds.extend(b);
+            mObjects.push_back(Object{node, nullptr, b, std::move(mesh)});
+            continue;
+        }
         mBounds.extend(b);
-        mObjects.push_back(Object{node, sectionTape(*node, family), b});
+        mObjects.push_back(Object{node, sectionTape(*node, family), b, nullptr});
     }
     if (!mBounds.empty()) {
         const Vec3 e = mBounds.extent();
@@ -92,7 +104,8 @@ SliceResult SceneSlicer::slice(double w) const {
         co.tolerance = mTolerance;
         co.rect = padded(rect, mTolerance);
         ContourStats cs;
-        std::vector<SectionLoop> loops = contourSection(*object.tape, w, co, cs);
+        std::vector<SectionLoop> loops = object.mesh ? meshSectionLoops(*object.mesh, plane)
+                                                     : contourSection(*object.tape, w, co, cs);
         stats.contour.add(cs);
         stats.contourSeconds += secondsSince(t0);
         t0 = std::chrono::steady_clock::now();
