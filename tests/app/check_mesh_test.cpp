@@ -144,3 +144,24 @@ TEST_CASE("kerf check: bad mesh files are errors at the mesh with exit code 2") 
               std::string::npos);
     }
 }
+
+TEST_CASE("kerf check: the mesh models report their knot, a closed tube of 192 × 24 quads") {
+    TempDir dir;
+    for (const char* model : {"mesh_knot.kerf", "mesh_csg.kerf"}) {
+        const KerfRun run = runKerf(dir, {"check", (modelsDir() / model).string()});
+        INFO(model << "\nstdout:\n" << run.out << "\nstderr:\n" << run.err);
+        REQUIRE(run.exitCode == 0);
+        // Both use the one file twice or more: one report.
+        CHECK(run.out.find("  mesh '") == run.out.rfind("  mesh '"));
+        CHECK(run.out.find("mesh_knot.ply':\n") != std::string::npos);
+        // scripts/gen-mesh-models: 192 rings of 24 vertices, two triangles per grid quad; a
+        // closed grid on a torus has every edge between two triangles.
+        CHECK(has(run.out, "    vertices:             4608"));
+        CHECK(has(run.out, "    triangles:            9216"));
+        CHECK(has(run.out, "    boundary edges:       0"));
+        CHECK(has(run.out, "    non-manifold edges:   0"));
+        CHECK(has(run.out, "    inconsistent edges:   0 (two faces running an edge the same way)"));
+        CHECK(has(run.out, "    degenerate triangles: 0"));
+        CHECK(has(run.out, "    solid:                yes"));
+    }
+}
