@@ -7,7 +7,6 @@
 
 #include "csg/node.h"
 #include "lang/source.h"
-#include "mesh/mesh_shape.h"
 
 #include <cstring>
 #include <map>
@@ -81,7 +80,7 @@ void dump(const NodePtr& n, std::string& out, std::map<const Node*, int>& ids) {
                 bits(out, p.worldFromLocal.offset);
             } else if constexpr (std::is_same_v<P, MaterialParams>) { out += std::to_string(p.material); }
             else if constexpr (std::is_same_v<P, MotionParams>) { bits(out, p.velocity); bits(out, p.spin); }
-            else if constexpr (std::is_same_v<P, MeshParams>) { out += p.shape->source() + (p.smooth ? "+" : "-"); }
+            else if constexpr (std::is_same_v<P, MeshParams>) { out += std::to_string(p.smooth); }
             else { out += std::to_string(static_cast<int>(p.op)); }
         },
         n->params());
