@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 using namespace kerf;
@@ -233,6 +234,24 @@ TEST_CASE("mesh: bad files and bad values are one error each at the file name") 
                      "cannot load mesh 'parts/cut.stl': ");
         const Compiled c = compileText("object mesh \"parts/cut.stl\";\n", folder.model());
         CHECK_THAT(c.sink.diagnostics().front().message, Catch::Matchers::Contains("truncated"));
+    }
+    SECTION("a non-finite coordinate") {
+        std::string ply = plyHeader("binary_little_endian", 3, 1);
+        for (float x : {0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, std::numeric_limits<float>::quiet_NaN(), 0.0f})
+            appendBytes(ply, x);
+        appendBytes(ply, uint8_t(3));
+        for (int32_t i : {0, 1, 2}) appendBytes(ply, i);
+        folder.write("parts/nan.ply", ply);
+        requireError("object mesh \"parts/nan.ply\";\n", 1, 13, "cannot load mesh 'parts/nan.ply': vertex 2 has a non-finite coordinate");
+    }
+    SECTION("no triangles") {
+        folder.write("parts/points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+        // Assimp's own validation refuses it before the loader counts triangles.
+        requireError("object mesh \"parts/points.obj\";\n", 1, 13, "cannot load mesh 'parts/points.obj': not a readable mesh");
+    }
+    SECTION("not a mesh") {
+        folder.write("parts/notes.txt", "these are not the triangles you are looking for\n");
+        requireError("object mesh \"parts/notes.txt\";\n", 1, 13, "cannot load mesh 'parts/notes.txt': not a readable mesh");
     }
     SECTION("a bad file used twice is reported once") {
         const Compiled c = compileText("object mesh \"parts/none.stl\";\nobject mesh \"parts/none.stl\";\n",
