@@ -3,10 +3,12 @@
 #include "csg/expr.h"
 
 #include <cstring>
+#include <stdexcept>
 #include <utility>
 
 #include "csg/interval_trig.h"
 #include "csg/noise.h"
+#include "csg/scalar_field.h"
 #include "csg/scalar_ops.h"
 
 namespace kerf {
@@ -91,6 +93,17 @@ ExprId ExprGraph::noise(ExprId x, ExprId y, ExprId z, uint64_t seed) {
     if (nx.op == Op::Const && ny.op == Op::Const && nz.op == Op::Const)
         return constant(gradientNoise(Vec3(nx.value, ny.value, nz.value), seed));
     return intern({Op::Noise, x, y, z, s});
+}
+
+ExprId ExprGraph::field(ExprId x, ExprId y, ExprId z, std::shared_ptr<const ScalarField> field) {
+    if (!field) throw std::invalid_argument("ExprGraph::field: no field");
+    // The table index tells fields apart in the hash-consing; graphs hold few fields, so a
+    // linear search is enough. Never folded, even at a constant point: the extended
+    // evaluator must still reach the field's own valueExtended.
+    size_t index = 0;
+    while (index < mFields.size() && mFields[index] != field) ++index;
+    if (index == mFields.size()) mFields.push_back(std::move(field));
+    return intern({Op::Field, x, y, z, static_cast<double>(index)});
 }
 
 }  // namespace kerf

@@ -40,7 +40,9 @@ public:
              bool standIn = false)
         : Primitive(id), mTape(std::move(f)) {
         mBounds = box;
-        if (standIn) mPlan = std::make_unique<TapeRayPlan>(*mTape);
+        // A stand-in for a primitive whose form calls a field (a mesh) or noise has no plan:
+        // it keeps the tape's own evaluation along the ray, as implicits do.
+        if (standIn && TapeRayPlan::accepts(*mTape)) mPlan = std::make_unique<TapeRayPlan>(*mTape);
     }
 
     void spans(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
@@ -115,6 +117,9 @@ public:
                 case Op::VarZ: slot[i] = z; break;
                 case Op::PowInt: slot[i] = g.powInt(slot[in.a], static_cast<int>(in.value)); break;
                 case Op::Noise: slot[i] = g.noise(slot[in.a], slot[in.b], slot[in.c], noiseSeed(in)); break;
+                case Op::Field:  // the graph gives the field its own index
+                    slot[i] = g.field(slot[in.a], slot[in.b], slot[in.c], mTape->fields()[fieldIndex(in)]);
+                    break;
                 default:
                     slot[i] = in.b >= 0 ? g.binary(in.op, slot[in.a], slot[in.b])
                                         : g.unary(in.op, slot[in.a]);

@@ -29,6 +29,13 @@ struct TapeInstr {
 /// A Noise instruction's seed (held exactly in `value`).
 inline uint64_t noiseSeed(const TapeInstr& in) { return static_cast<uint64_t>(in.value); }
 
+/// A Field instruction's index in its tape's field table (Tape::fields).
+inline size_t fieldIndex(const TapeInstr& in) { return static_cast<size_t>(in.value); }
+
+/// An interval holding each partial derivative of the field: [−L, L] for L = lipschitz(), or
+/// the whole line when L is not a finite bound. The interval slopes of Op::Field take it.
+Interval lipschitzPartial(const ScalarField& field);
+
 class Tape {
 public:
     /// Compiles the part of the graph that `root` depends on.
@@ -36,6 +43,11 @@ public:
 
     const std::vector<TapeInstr>& instrs() const { return mInstrs; }
     int size() const { return static_cast<int>(mInstrs.size()); }
+    /// The external fields Op::Field instructions call, by fieldIndex: those the compiled part
+    /// of the graph uses, renumbered in order of first use; simplified() keeps the table.
+    const std::vector<std::shared_ptr<const ScalarField>>& fields() const { return mFields; }
+    /// The field a Field instruction calls.
+    const ScalarField& field(const TapeInstr& in) const { return *mFields[fieldIndex(in)]; }
 
     /// f at a point.
     double eval(const Vec3& p) const;
@@ -87,6 +99,7 @@ private:
     void finish();
 
     std::vector<TapeInstr> mInstrs;
+    std::vector<std::shared_ptr<const ScalarField>> mFields;
     /// Every instruction is one that can never raise a NaN flag (constants, axes, +, −, ×,
     /// negation, square, sin, cos), so along-ray evaluation may skip the flags
     /// (csg/tape_eval_ray.cpp).

@@ -3,6 +3,7 @@
 #include "csg/interval_trig.h"
 #include "csg/scalar_ops.h"
 #include "csg/noise.h"
+#include "csg/scalar_field.h"
 #include "csg/tape.h"
 
 namespace kerf {
@@ -84,8 +85,8 @@ G derivative(Op op, const Dual<G>& a, const Dual<G>& b, double value, double res
 /// they are the unit vectors, the slope along a ray when they are its direction's components.
 /// The values are those of Tape::eval(p), bit for bit (the same operations in the same order).
 template <typename G>
-Dual<G> evalDual(const std::vector<TapeInstr>& instrs, const Vec3& p, const G& dx, const G& dy,
-                 const G& dz) {
+Dual<G> evalDual(const Tape& tape, const Vec3& p, const G& dx, const G& dy, const G& dz) {
+    const std::vector<TapeInstr>& instrs = tape.instrs();
     thread_local std::vector<Dual<G>> slots;
     slots.resize(instrs.size());
     Dual<G>* s = slots.data();
@@ -120,6 +121,13 @@ Dual<G> evalDual(const std::vector<TapeInstr>& instrs, const Vec3& p, const G& d
                 s[i] = {v, n.x * a.g + n.y * b.g + n.z * c.g};
                 break;
             }
+            case Op::Field: {  // the same chain rule through the field's gradient
+                const Dual<G> &a = s[in.a], &b = s[in.b], &c = s[in.c];
+                Vec3 n;
+                const double v = tape.field(in).valueGradient(Vec3(a.v, b.v, c.v), n);
+                s[i] = {v, n.x * a.g + n.y * b.g + n.z * c.g};
+                break;
+            }
             default: {
                 const Dual<G>& a = s[in.a];
                 const Dual<G>& b = in.b >= 0 ? s[in.b] : none;
@@ -135,13 +143,13 @@ Dual<G> evalDual(const std::vector<TapeInstr>& instrs, const Vec3& p, const G& d
 
 double Tape::evalGradient(const Vec3& p, Vec3& gradient) const {
     const Dual<Vec3> r =
-        evalDual(mInstrs, p, Vec3(1.0, 0.0, 0.0), Vec3(0.0, 1.0, 0.0), Vec3(0.0, 0.0, 1.0));
+        evalDual(*this, p, Vec3(1.0, 0.0, 0.0), Vec3(0.0, 1.0, 0.0), Vec3(0.0, 0.0, 1.0));
     gradient = r.g;
     return r.v;
 }
 
 double Tape::evalAlongRay(const Ray& ray, double t, double& dfdt) const {
-    const Dual<double> r = evalDual(mInstrs, ray.at(t), ray.dir.x, ray.dir.y, ray.dir.z);
+    const Dual<double> r = evalDual(*this, ray.at(t), ray.dir.x, ray.dir.y, ray.dir.z);
     dfdt = r.g;
     return r.v;
 }

@@ -1,6 +1,7 @@
 // Interval evaluation of a tape over a box, with per-thread scratch slots.
 #include "csg/interval_ops.h"
 #include "csg/noise.h"
+#include "csg/scalar_field.h"
 #include "csg/tape.h"
 
 namespace kerf {
@@ -26,6 +27,9 @@ Interval Tape::evalInterval(const Interval& x, const Interval& y, const Interval
                 break;
             case Op::Noise:
                 s[i] = gradientNoiseRange(s[in.a], s[in.b], s[in.c], noiseSeed(in));
+                break;
+            case Op::Field:
+                s[i] = field(in).range(s[in.a], s[in.b], s[in.c]);
                 break;
             default:
                 s[i] = applyIntervalOp(in.op, s[in.a], in.b >= 0 ? s[in.b] : Interval(), in.value);

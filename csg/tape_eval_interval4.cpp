@@ -5,6 +5,7 @@
 // csg/tape_eval_interval4_avx2.cpp.
 #include "csg/interval_ops.h"
 #include "csg/noise.h"
+#include "csg/scalar_field.h"
 #include "csg/tape.h"
 #include "csg/tape_eval_interval4.h"
 
@@ -23,8 +24,9 @@ struct Slot4 {
     void set(int k, const Interval& v) { lo[k] = v.lo, hi[k] = v.hi, nan[k] = v.maybeNan; }
 };
 
-void evalScalar(const std::vector<TapeInstr>& instrs, const Interval x[4], const Interval y[4],
-                const Interval z[4], Interval out[4]) {
+void evalScalar(const Tape& tape, const Interval x[4], const Interval y[4], const Interval z[4],
+                Interval out[4]) {
+    const std::vector<TapeInstr>& instrs = tape.instrs();
     thread_local std::vector<Slot4> slots;
     const size_t n = instrs.size();
     if (slots.size() < n) slots.resize(n);
@@ -48,6 +50,10 @@ void evalScalar(const std::vector<TapeInstr>& instrs, const Interval x[4], const
             case Op::Noise:
                 for (int k = 0; k < 4; ++k)
                     r.set(k, gradientNoiseRange(s[in.a].lane(k), s[in.b].lane(k), s[in.c].lane(k), noiseSeed(in)));
+                break;
+            case Op::Field:
+                for (int k = 0; k < 4; ++k)
+                    r.set(k, tape.field(in).range(s[in.a].lane(k), s[in.b].lane(k), s[in.c].lane(k)));
                 break;
             default:
                 for (int k = 0; k < 4; ++k)
@@ -78,7 +84,7 @@ void Tape::evalInterval4(const Interval x[4], const Interval y[4], const Interva
                          Interval out[4], Lanes4 lanes) const {
     const bool avx2 = lanes == Lanes4::Avx2 ? hasAvx2() : lanes == Lanes4::Auto && autoUsesAvx2();
     if (avx2 && interval4::evalAvx2(mInstrs, x, y, z, out)) return;
-    evalScalar(mInstrs, x, y, z, out);
+    evalScalar(*this, x, y, z, out);
 }
 
 }  // namespace kerf

@@ -2,6 +2,7 @@
 #include "csg/interval_trig.h"
 #include "csg/scalar_ops.h"
 #include "csg/noise.h"
+#include "csg/scalar_field.h"
 #include "csg/tape.h"
 
 namespace kerf {
@@ -53,6 +54,9 @@ double Tape::eval(const Vec3& p) const {
             case Op::Noise:
                 s[i] = gradientNoise(Vec3(s[in.a], s[in.b], s[in.c]), noiseSeed(in));
                 break;
+            case Op::Field:
+                s[i] = field(in).value(Vec3(s[in.a], s[in.b], s[in.c]));
+                break;
             default:
                 s[i] = applyScalarOp(in.op, s[in.a], in.b >= 0 ? s[in.b] : 0.0, in.value);
         }
@@ -75,6 +79,9 @@ long double Tape::evalExtended(const glm::tvec3<long double>& p) const {
             case Op::VarZ: s[i] = p.z; break;
             case Op::Noise:
                 s[i] = gradientNoise(glm::tvec3<long double>(s[in.a], s[in.b], s[in.c]), noiseSeed(in));
+                break;
+            case Op::Field:
+                s[i] = field(in).valueExtended(glm::tvec3<long double>(s[in.a], s[in.b], s[in.c]));
                 break;
             default:
                 s[i] = applyScalarOp<long double>(in.op, s[in.a], in.b >= 0 ? s[in.b] : 0.0L,

@@ -12,6 +12,7 @@
 // Tapes made only of ops that never raise a NaN flag (Tape::finish) take a lean path that keeps
 // no flags and runs the same kernels, so it gives the same bits as the general one.
 #include "csg/noise.h"
+#include "csg/scalar_field.h"
 #include "csg/tape.h"
 #include "csg/interval_trig.h"
 #include "csg/tape_ray_step.h"
@@ -148,6 +149,17 @@ void Tape::evalIntervalAlongRayReference(const Ray& ray, const Interval& t, Inte
                 Interval g[3];
                 r.v = gradientNoiseRange(a.v, b.v, c.v, noiseSeed(in), g);
                 r.d = scaledSlope(g[0], a) + scaledSlope(g[1], b) + scaledSlope(g[2], c);
+                break;
+            }
+            case Op::Field: {
+                // The field gives no gradient enclosure, only a bound L on each partial, so the
+                // chain rule takes every partial in [−L, L] (a slope of a Lipschitz field,
+                // kinks included, lies there).
+                const RaySlot &a = s[in.a], &b = s[in.b], &c = s[in.c];
+                const ScalarField& field = this->field(in);
+                const Interval partial = lipschitzPartial(field);
+                r.v = field.range(a.v, b.v, c.v);
+                r.d = scaledSlope(partial, a) + scaledSlope(partial, b) + scaledSlope(partial, c);
                 break;
             }
             default:

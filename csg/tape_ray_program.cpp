@@ -243,6 +243,12 @@ void polynomialRange(Coefficients& s, const Interval& t, Interval& v, Interval& 
 
 }  // namespace
 
+bool TapeRayPlan::accepts(const Tape& tape) {
+    for (const TapeInstr& in : tape.instrs())
+        if (in.op == Op::Noise || in.op == Op::Field) return false;
+    return true;
+}
+
 TapeRayPlan::TapeRayPlan(const Tape& tape) {
     const std::vector<TapeInstr>& instrs = tape.instrs();
     const size_t n = instrs.size();
@@ -253,6 +259,7 @@ TapeRayPlan::TapeRayPlan(const Tape& tape) {
         const TapeInstr& in = instrs[i];
         // Plans are made for the implicit forms of closed-form primitives, which hold no noise.
         if (in.op == Op::Noise) throw std::invalid_argument("TapeRayPlan: a tape with noise");
+        if (in.op == Op::Field) throw std::invalid_argument("TapeRayPlan: a tape with a field");
         const int da = in.a >= 0 ? degree[in.a] : 0, db = in.b >= 0 ? degree[in.b] : 0;
         const Interval divisor = in.b >= 0 && db == 0 ? constant[in.b] : Interval(0.0);
         degree[i] = foldedDegree(in, da, db, divisor);

@@ -39,7 +39,12 @@ namespace kerf {
 /// is shared by every thread.
 class TapeRayPlan {
 public:
+    /// Throws std::invalid_argument for a tape with noise or an external field (accepts()).
     explicit TapeRayPlan(const Tape& tape);
+    /// Whether a plan can be made for the tape: no Noise and no Field instruction (the
+    /// implicit forms of closed-form primitives hold neither; callers keep
+    /// Tape::evalIntervalAlongRay for the others).
+    static bool accepts(const Tape& tape);
 
     /// A polynomial part: its operation on earlier polynomial parts (a, b index `polys`).
     struct Poly {

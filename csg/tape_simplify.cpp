@@ -5,6 +5,7 @@
 // their intervals), so it is a; abs(a) with a > 0 throughout is a, with a < 0 it is −a.
 #include "csg/interval_ops.h"
 #include "csg/noise.h"
+#include "csg/scalar_field.h"
 #include "csg/tape.h"
 
 namespace kerf {
@@ -73,6 +74,9 @@ Interval Tape::evalInterval(const Interval& x, const Interval& y, const Interval
             case Op::Noise:
                 s[i] = gradientNoiseRange(s[in.a], s[in.b], s[in.c], noiseSeed(in));
                 break;
+            case Op::Field:
+                s[i] = field(in).range(s[in.a], s[in.b], s[in.c]);
+                break;
             default:
                 s[i] = applyIntervalOp(in.op, s[in.a], in.b >= 0 ? s[in.b] : Interval(), in.value);
         }
@@ -105,6 +109,7 @@ std::shared_ptr<const Tape> Tape::simplified(const std::vector<Choice>& choices)
     }
     std::vector<int32_t> slotOf(n, -1);
     auto tape = std::make_shared<Tape>();
+    tape->mFields = mFields;  // Field instructions keep their indices
     for (int i = 0; i <= root; ++i) {
         if (!needed[i]) continue;
         TapeInstr in = mInstrs[i];

@@ -3,6 +3,7 @@
 
 #include "csg/interval_ops.h"
 #include "csg/noise.h"
+#include "csg/scalar_field.h"
 #include "csg/tree_tape.h"
 
 namespace kerf {
@@ -118,6 +119,14 @@ IntervalSlopes evalIntervalSlopes(const Tape& tape, const Interval& u, const Int
                 Interval g[3];
                 r[0] = gradientNoiseRange(a[0], b[0], c[0], noiseSeed(in), g);
                 for (int k = 1; k < 3; ++k) r[k] = g[0] * a[k] + g[1] * b[k] + g[2] * c[k];
+                break;
+            }
+            case Op::Field: {  // the chain rule with each partial in [−L, L] (L = lipschitz())
+                const Interval* c = &s[3 * in.c];
+                const ScalarField& field = tape.field(in);
+                const Interval partial = lipschitzPartial(field);
+                r[0] = field.range(a[0], b[0], c[0]);
+                for (int k = 1; k < 3; ++k) r[k] = partial * a[k] + partial * b[k] + partial * c[k];
                 break;
             }
             default:

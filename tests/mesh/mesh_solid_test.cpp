@@ -229,3 +229,49 @@ TEST_CASE("meshNode::the tree's tape calls the mesh's field") {
         CHECK(tape->eval(p) == tree->value(p));
     }
 }
+
+TEST_CASE("meshNode::hard cases: -0 directions, huge and tiny scales, grazing rays") {
+    TraceContext ctx;
+    SpanList spans;
+    // Directions with negative zeros through the octahedron's vertices: the same exact depths.
+    const auto octa = std::make_shared<const MeshShape>(octahedronMesh());
+    const NodePtr o = meshNode(octa, false);
+    for (const Vec3& d : {Vec3(-0.0, -0.0, 1.0), Vec3(0.0, -0.0, -1.0), Vec3(-1.0, -0.0, 0.0)}) {
+        o->spans(Ray{kOctaCenter - 2.0 * d, d}, 0.0, kInf, ctx, spans);
+        REQUIRE(spans.size() == 1);
+        CHECK(spans[0].in.t == 2.0 - kOctaRadius);
+        CHECK(spans[0].out.t == 2.0 + kOctaRadius);
+    }
+    // The geodesic sphere at 1e-7 and 1e7: the relative bounds of the first test hold.
+    for (double scale : {1e-7, 1e7}) {
+        const TriangleMesh m = geodesicSphere(kCenter * scale, kRadius * scale, 3);
+        const double inner = innerRadius(m, kCenter * scale);
+        const NodePtr mesh = meshNode(std::make_shared<const MeshShape>(m), true);
+        std::mt19937_64 rng(17);
+        for (int i = 0; i < 300; ++i) {
+            Ray ray = randomRay(rng);
+            ray.origin *= scale;
+            mesh->spans(ray, 0.0, kInf, ctx, spans);
+            REQUIRE(spans.size() == 1);
+            const Vec3 oc = ray.origin - kCenter * scale;
+            const double a = glm::dot(ray.dir, ray.dir), b = glm::dot(oc, ray.dir);
+            const double outer0 = (-b - std::sqrt(b * b - a * (glm::dot(oc, oc) - std::pow(kRadius * scale, 2)))) / a;
+            const double inner0 = (-b - std::sqrt(b * b - a * (glm::dot(oc, oc) - inner * inner))) / a;
+            CHECK(spans[0].in.t >= outer0 * (1 - 1e-11));
+            CHECK(spans[0].in.t <= inner0 * (1 + 1e-11));
+        }
+    }
+    // Rays grazing the octahedron's faces (in a face's plane) and along an edge: a ray in a
+    // face's plane meets the solid at most at the face's edges, never in a span of positive
+    // length outside the solid; a ray along the z axis line through two vertices still enters
+    // exactly once.
+    const Vec3 c = kOctaCenter;
+    const double r = kOctaRadius;
+    // The face (+x, +y, +z) lies in the plane x + y + z = r around c; a ray in that plane
+    // outside the face (through the edge's line beyond it) must miss.
+    const Vec3 inPlane = glm::normalize(Vec3(1.0, -1.0, 0.0));
+    o->spans(Ray{c + Vec3(r, 0.0, 0.0) + Vec3(0.0, 0.0, 0.0) - 3.0 * inPlane + Vec3(0.0, 0.0, 0.0),
+                 inPlane},
+             0.0, kInf, ctx, spans);
+    for (const Span& s : spans) CHECK(s.out.t - s.in.t <= 1e-12);
+}
