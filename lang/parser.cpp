@@ -339,7 +339,12 @@ Solid Parser::parseSolid(bool withModifiers) {
 }
 
 bool Parser::startsMesh() {
-    return checkWord("mesh") && (peek(1).kind == TokenKind::String || peek(1).kind == TokenKind::LParen);
+    if (!checkWord("mesh")) return false;
+    const Token& file = peek(1);
+    return file.kind == TokenKind::String || file.kind == TokenKind::LParen ||
+           (file.kind == TokenKind::Identifier && !contains(kModifierWords, file.text) &&
+            !contains(kStatementWords, file.text) && file.text != "smooth" && file.text != "displace" &&
+            file.text != "no_shadow");
 }
 
 Solid Parser::parseMesh(bool withModifiers) {
@@ -363,6 +368,9 @@ Solid Parser::parseMesh(bool withModifiers) {
     }
     mesh.properties = list(properties);
     if (withModifiers) mesh.modifiers = parseModifiers();
+    if (withModifiers && checkWord("smooth"))
+        fail(peek().loc, "'smooth' after the modifiers of a mesh",
+             "write it right after the file name: mesh \"part.stl\" smooth false translate …");
     return mesh;
 }
 

@@ -85,11 +85,13 @@ object mesh "parts/cube.obj" translate <1, 2, 3>;
 object mesh "parts/cube.obj" smooth false scale <2, 1, 1> rotate <0, 0, 90> material red;
 let m = mesh ("parts/" + "cube.obj");
 object m translate <-5, 0, 0>;
+let name = "parts/cube.obj";
+object mesh name smooth false;
 )",
                                    folder.model());
     INFO(c.sink.format());
     REQUIRE(c.scene);
-    REQUIRE(c.scene->objects.size() == 3);
+    REQUIRE(c.scene->objects.size() == 4);
     const NodePtr& moved = c.scene->objects[0];
     CHECK(moved->kind() == NodeKind::Transform);
     requireBounds(moved->bounds(), Vec3(1, 2, 3), Vec3(2, 3, 4));
@@ -106,6 +108,8 @@ object m translate <-5, 0, 0>;
     };
     CHECK(leaf(moved).smooth);
     CHECK_FALSE(leaf(turned).smooth);
+    CHECK_FALSE(leaf(c.scene->objects[3]).smooth);
+    CHECK(leaf(c.scene->objects[3]).shape == leaf(moved).shape);
     const MeshShape& shape = *leaf(moved).shape;
     CHECK(shape.isSolid());
     CHECK(shape.mesh().triangles.size() == 12);
@@ -263,6 +267,14 @@ TEST_CASE("mesh: bad files and bad values are one error each at the file name") 
     }
     SECTION("smooth must be a boolean") {
         requireError("object mesh \"parts/cube.obj\" smooth <1, 0, 0>;\n", 1, 37, "smooth");
+    }
+    SECTION("smooth after the modifiers") {
+        const Compiled c = compileText("object mesh \"parts/cube.obj\" translate <1, 0, 0> smooth false;\n",
+                                       folder.model());
+        REQUIRE(c.sink.errorCount() == 1);
+        const Diagnostic& d = c.sink.diagnostics().front();
+        CHECK(d.message == "'smooth' after the modifiers of a mesh");
+        CHECK(d.loc.col == 50);
     }
     SECTION("POV-Ray's mesh block") {
         const Compiled c = compileText("object mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> } };\n",
