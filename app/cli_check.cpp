@@ -5,6 +5,7 @@
 #include "app/model_loader.h"
 #include "csg/format.h"
 #include "csg/tree_stats.h"
+#include "mesh/mesh_shape.h"
 
 #include <CLI/CLI.hpp>
 
@@ -12,6 +13,9 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <unordered_set>
+#include <variant>
+#include <vector>
 
 namespace kerf::app {
 
@@ -41,7 +45,46 @@ std::string describeBounds(const Bounds3& b) {
            axisRange(b.lo.z, b.hi.z, scale);
 }
 
+/// The distinct mesh shapes of the scene, in the order the objects first use them. Every
+/// node is visited once, however often a shared subtree is used.
+std::vector<const MeshShape*> meshShapes(const Scene& scene) {
+    std::vector<const MeshShape*> shapes;
+    std::unordered_set<const Node*> seen;
+    std::unordered_set<const MeshShape*> seenShapes;
+    std::vector<const Node*> stack;
+    for (auto it = scene.objects.rbegin(); it != scene.objects.rend(); ++it) stack.push_back(it->get());
+    while (!stack.empty()) {
+        const Node* node = stack.back();
+        stack.pop_back();
+        if (!seen.insert(node).second) continue;
+        if (node->kind() == NodeKind::Mesh) {
+            const MeshShape* shape = std::get<MeshParams>(node->params()).shape.get();
+            if (seenShapes.insert(shape).second) shapes.push_back(shape);
+        }
+        const NodeSpan children = node->children();
+        for (size_t i = children.size(); i-- > 0;) stack.push_back(children[i].get());
+    }
+    return shapes;
+}
+
 }  // namespace
+
+void printMeshReports(const Scene& scene, std::ostream& out) {
+    for (const MeshShape* shape : meshShapes(scene)) {
+        const MeshReport& r = shape->report();
+        out << "  mesh '" << shape->source() << "':\n";
+        out << "    vertices:             " << r.vertices << "\n";
+        out << "    triangles:            " << r.triangles << "\n";
+        out << "    boundary edges:       " << r.boundaryEdges << "\n";
+        out << "    non-manifold edges:   " << r.nonManifoldEdges << "\n";
+        out << "    inconsistent edges:   " << r.inconsistentEdges << " (two faces running an edge the same way)\n";
+        out << "    degenerate triangles: " << r.degenerateTriangles << "\n";
+        out << "    solid:                " << (r.solid ? "yes" : "no (renders as a surface; not a CSG operand)")
+            << "\n";
+        if (r.firstBadEdge) out << "    first bad edge:       " << describeBadEdge(*r.firstBadEdge) << "\n";
+        out << "    BVH nodes:            " << shape->bvh().nodeCount() << "\n";
+    }
+}
 
 CLI::App* addCheckCommand(CLI::App& parent, CheckCommandLine& line) {
     CLI::App* cmd = parent.add_subcommand("check", "Parse and compile a model; print a summary");
@@ -72,6 +115,7 @@ void printSceneSummary(const std::string& model, const Scene& scene, std::ostrea
     out << "  mist:        " << (scene.mist.enabled ? "yes" : "no") << "\n";
     out << "  render:      " << r.width << " x " << r.height << ", spp " << r.spp
         << ", max depth " << r.maxDepth << "\n";
+    printMeshReports(scene, out);
 }
 
 int runCheck(const CheckCommandLine& line) {

@@ -22,8 +22,13 @@ struct CheckCommandLine {
 CLI::App* addCheckCommand(CLI::App& parent, CheckCommandLine& line);
 
 /// Prints the summary of a compiled scene: objects, materials, lights, primitives, the
-/// deepest CSG tree, the bounds of everything and the render settings.
+/// deepest CSG tree, the bounds of everything, the render settings and the meshes' reports.
 void printSceneSummary(const std::string& model, const Scene& scene, std::ostream& out);
+
+/// Per mesh file the scene uses (once each, in the order of first use): the validation
+/// counts (mesh/half_edges.h), whether it is a solid, its first bad edge, its BVH's nodes.
+/// Prints nothing for a scene without meshes.
+void printMeshReports(const Scene& scene, std::ostream& out);
 
 /// Runs the command; returns the exit code (0 valid, 2 with diagnostics otherwise).
 int runCheck(const CheckCommandLine& line);

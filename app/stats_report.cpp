@@ -81,6 +81,15 @@ void printStats(const RunReport& report, std::ostream& out) {
                                                                            double(s.beams.pixels)) +
                                         formatDouble(", mean start %.3g", s.beams.startSum /
                                                                               double(s.beams.pixels)));
+    // Only scenes with meshes walk a triangle BVH (its root is visited by any ray that reaches
+    // a mesh's box): others print nothing more.
+    if (s.trace.meshNodes > 0 || s.trace.triangleTests > 0) {
+        const double perRay = 1.0 / double(std::max<uint64_t>(rays, 1));
+        out << line("mesh BVH nodes", count(s.trace.meshNodes) +
+                                          formatDouble(" (%.3g per ray)", double(s.trace.meshNodes) * perRay));
+        out << line("triangle tests", count(s.trace.triangleTests) +
+                                          formatDouble(" (%.3g per ray)", double(s.trace.triangleTests) * perRay));
+    }
     if (rays > 0)
         out << line("interval evals / ray",
                     formatDouble("%.3g", double(s.trace.intervalEvals) / double(rays)));

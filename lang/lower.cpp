@@ -60,6 +60,7 @@ std::optional<Scene> Lowering::lower(Program& program) {
     collectDefinitions(program, scene);
     lowerDefinitions();
     for (Statement& s : program.statements) lowerStatement(s, scene);
+    checkSectionedSurfaces(scene);
     if (mDefaultMaterial) {
         // Materials nest innermost-first, so parts that name their own keep it.
         for (NodePtr& object : scene.objects)

@@ -164,6 +164,19 @@ private:
     NodePtr lowerTorus(const Solid& s);
     NodePtr lowerHalfSpace(const Solid& s);
     NodePtr lowerImplicit(const Solid& s);
+    // lower_mesh.cpp
+    /// `mesh FILE smooth B`: the file loaded once per compile (mMeshFiles), one leaf per use.
+    NodePtr lowerMesh(const Solid& s);
+    /// The shape of the file `written` at `at`, resolved against the model's folder; null
+    /// with an error when it cannot be loaded.
+    std::shared_ptr<const MeshShape> meshShape(const std::string& written, SourcePos at);
+    /// False, with an error at the mesh, when one of `operands` is (a transform, material or
+    /// motion of) a mesh that is not a solid; `use` says what needs a solid ("an operand of
+    /// difference"), written at `at`. Each such mesh is reported once.
+    bool checkSolidOperands(const std::vector<NodePtr>& operands, const std::string& use, SourcePos at);
+    /// The same for the objects of a scene with section planes: an object a plane crosses is cut.
+    void checkSectionedSurfaces(const Scene& scene);
+
     /// The box of a `box { min max }` block; `what` is "box" or "bound" (for the message).
     std::optional<Bounds3> boxBounds(const Solid& s, const char* what);
     NodePtr applyModifiers(NodePtr node, const Solid& s);
@@ -227,6 +240,16 @@ private:
     /// heightOf's memo; holding the NodePtr keeps the key's address from being reused.
     std::unordered_map<const Node*, std::pair<NodePtr, int>> mHeights;
     bool mTooDeepReported = false;
+    /// Mesh files by canonical path: each is loaded once and its shape shared by every use
+    /// (null after a failed load, which was reported at its first use).
+    std::map<std::string, std::shared_ptr<const MeshShape>> mMeshFiles;
+    /// The leaves of meshes that are not solids, with where they were written (holding the
+    /// node keeps its address from being reused).
+    std::unordered_map<const Node*, std::pair<NodePtr, SourcePos>> mOpenMeshes;
+    /// The `mesh` expressions already reported as not solid (file index << 32 | offset): a
+    /// loop or a function makes a leaf per pass, the error is given once.
+    std::unordered_set<uint64_t> mReportedOpenMeshes;
+    std::vector<SourcePos> mSectionLocs;  ///< where each of scene.sections was written
     const Statement* mCamera = nullptr;
     const Statement* mMist = nullptr;
     const Statement* mRender = nullptr;

@@ -39,7 +39,7 @@ NodePtr Lowering::applyModifiers(NodePtr node, const Solid& s) {
             if (hasPending) node = transformed(node, pending, *hasPending);
             pending = Affine{};
             hasPending = nullptr;
-            node = node ? displaced(node, m) : nullptr;
+            node = node && checkSolidOperands({node}, "displaced", m.loc) ? displaced(node, m) : nullptr;
             ok = node != nullptr;
         } else if (motion || m.kind == Modifier::Kind::Material) {
             // A material or a motion wraps what came before it: pending transforms first.

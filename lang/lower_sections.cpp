@@ -50,6 +50,7 @@ void Lowering::lowerSection(const Statement& s, Scene& scene) {
               "every object a plane crosses is cut by each of them; keep the cuts you need");
     plane.normal = normalizeSafe(plane.normal);
     scene.sections.push_back(plane);
+    mSectionLocs.push_back(s.loc);
 }
 
 }  // namespace kerf

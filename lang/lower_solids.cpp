@@ -69,7 +69,8 @@ NodePtr Lowering::lowerSolid(const Solid& s) {
         case Solid::Kind::Else: {  // written where one solid goes (not in a Boolean body)
             std::vector<NodePtr> children;
             const ArenaList<Solid> one(&s, 1);
-            if (expandChildren(s.kind == Solid::Kind::Else ? s.children : one, children)) {
+            if (expandChildren(s.kind == Solid::Kind::Else ? s.children : one, children) &&
+                (children.size() < 2 || checkSolidOperands(children, "an operand of a union", s.loc))) {
                 node = children.empty() ? emptySolid()
                        : children.size() == 1 ? children[0]
                                               : limitDepth(makeBoolean(BoolOp::Union, std::move(children)), s.loc);
@@ -169,6 +170,7 @@ NodePtr Lowering::lowerBoolean(const Solid& s) {
     }
     if (children.empty()) return emptySolid();
     if (children.size() == 1) return children[0];
+    if (!checkSolidOperands(children, "an operand of " + s.name, s.loc)) return nullptr;
     return limitDepth(makeBoolean(op, std::move(children)), s.loc);
 }
 
@@ -216,6 +218,7 @@ NodePtr Lowering::lowerPrimitive(const Solid& s) {
     if (s.name == "torus") return lowerTorus(s);
     if (s.name == "halfspace") return lowerHalfSpace(s);
     if (s.name == "implicit") return lowerImplicit(s);
+    if (s.name == "mesh") return lowerMesh(s);
     error(s.loc, "unknown solid '" + s.name + "'", unknownSolidHint(s.name));  // the parser reports most
     return nullptr;
 }

@@ -204,6 +204,10 @@ Expr Parser::parsePrimary() {
         e.kind = Expr::Kind::Bool;
         e.number = next().text == "true" ? 1.0 : 0.0;
         return e;
+    } else if (startsMesh()) {  // `mesh "file"` as a value
+        e.kind = Expr::Kind::SolidValue;
+        e.solid = store(parseSolid(true));
+        return e;
     } else if (t.kind == TokenKind::Identifier && isSolidWord(t.text) && peek(1).kind == TokenKind::LBrace) {
         e.kind = Expr::Kind::SolidValue;
         e.solid = store(parseSolid(true));

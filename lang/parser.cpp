@@ -289,6 +289,7 @@ Solid Parser::parseSolid(bool withModifiers) {
     if (t.kind != TokenKind::Identifier || contains(kModifierWords, t.text) ||
         (contains(kStatementWords, t.text) && peek(1).kind != TokenKind::LBrace))
         fail(t.loc, "expected a solid, found " + describe(t), foreignHint(t));
+    if (startsMesh()) return parseMesh(withModifiers);
     if (peek(1).kind == TokenKind::LParen && isSolidKind(t.text))  // OpenSCAD's sphere(1)
         fail(peek(1).loc, "expected '{' after '" + t.text + "', found '('", callSyntaxHint(t.text));
     if (peek(1).kind == TokenKind::LParen) {  // a function call that makes a solid
@@ -335,6 +336,42 @@ Solid Parser::parseSolid(bool withModifiers) {
     }
     if (withModifiers) solid.modifiers = parseModifiers();
     return solid;
+}
+
+bool Parser::startsMesh() {
+    if (!checkWord("mesh")) return false;
+    const Token& file = peek(1);
+    return file.kind == TokenKind::String || file.kind == TokenKind::LParen ||
+           (file.kind == TokenKind::Identifier && !contains(kModifierWords, file.text) &&
+            !contains(kStatementWords, file.text) && file.text != "smooth" && file.text != "displace" &&
+            file.text != "no_shadow");
+}
+
+Solid Parser::parseMesh(bool withModifiers) {
+    NestingGuard guard(*this);
+    Solid mesh;
+    mesh.kind = Solid::Kind::Primitive;  // lowered by lowerMesh (lower_mesh.cpp)
+    mesh.loc = peek().pos;
+    mesh.name = mArena->intern(next().text);
+    std::vector<Property> properties(1);
+    properties[0].name = mArena->intern("file");
+    properties[0].loc = peek().pos;
+    properties[0].expr = store(parsePrimary());
+    if (checkWord("smooth")) {
+        Property smooth;
+        smooth.name = mArena->intern("smooth");
+        smooth.loc = next().pos;
+        if (check(TokenKind::Semicolon) || check(TokenKind::RBrace) || check(TokenKind::End))
+            fail(peek().loc, "expected true or false after 'smooth', found " + describe(peek()));
+        smooth.expr = store(parsePrimary());
+        properties.push_back(smooth);
+    }
+    mesh.properties = list(properties);
+    if (withModifiers) mesh.modifiers = parseModifiers();
+    if (withModifiers && checkWord("smooth"))
+        fail(peek().loc, "'smooth' after the modifiers of a mesh",
+             "write it right after the file name: mesh \"part.stl\" smooth false translate …");
+    return mesh;
 }
 
 Solid Parser::parseChild() {
@@ -473,8 +510,8 @@ using parser_detail::kStatementWords;
 using parser_detail::kModifierWords;
 
 bool isReservedWord(const std::string& word) {
-    static const std::array<const char*, 23> kOther = {
-        "sphere", "box", "cylinder", "cone", "torus", "halfspace", "implicit", "pi",
+    static const std::array<const char*, 24> kOther = {
+        "sphere", "box", "cylinder", "cone", "torus", "halfspace", "implicit", "mesh", "pi",
         "union", "intersection", "difference", "xor", "matrix",
         "for", "in", "if", "else", "step", "and", "or", "not", "true", "false"};
     return contains(kStatementWords, word) || contains(kModifierWords, word) || contains(kOther, word);

@@ -171,6 +171,11 @@ private:
     Solid parseSolid(bool withModifiers);
     /// One child of a Boolean body: a solid, or a `for` or `if` around solids.
     Solid parseChild();
+    /// True at `mesh` followed by a file name: a string, a name, or an expression in parentheses.
+    bool startsMesh();
+    /// `mesh FILE (smooth BOOL)? modifiers`: a Primitive named "mesh" whose properties are
+    /// file and smooth.
+    Solid parseMesh(bool withModifiers);
     std::vector<Solid> parseChildren(const char* what);
     ArenaList<Modifier> parseModifiers();
     /// `[a, b, …]` with commas, or `[a b …]` separated by blanks, where each entry is a single
