@@ -28,6 +28,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <functional>
 #include <limits>
 #include <random>
@@ -174,10 +175,23 @@ struct Hits {
     explicit Hits(size_t n) : t(n, kInf), triangle(n, 0) {}
 };
 
+// This thread's CPU time: on a machine shared with other jobs it counts only the time the
+// thread ran, not the time it waited for a core.
+double threadSeconds() {
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+struct Timing {
+    double wall;  ///< s
+    double cpu;   ///< s of the tracing thread's CPU time (1 thread only)
+};
+
 // Runs body(thread, first, last) `passes` times over [0, count) on `threads` threads, chunks
-// of 64 dealt in turn, and returns the wall time. Each thread keeps its own state.
+// of 64 dealt in turn, and returns the time taken. Each thread keeps its own state.
 using Body = std::function<void(int, size_t, size_t)>;
-double timed(size_t count, int threads, int passes, const Body& body) {
+Timing timed(size_t count, int threads, int passes, const Body& body) {
     constexpr size_t kChunk = 64;
     auto worker = [&](int k) {
         for (int pass = 0; pass < passes; ++pass)
@@ -185,25 +199,28 @@ double timed(size_t count, int threads, int passes, const Body& body) {
                 body(k, first, std::min(count, first + kChunk));
     };
     const auto t0 = std::chrono::steady_clock::now();
+    double cpu = 0.0;
     if (threads == 1) {
+        const double c0 = threadSeconds();
         worker(0);
+        cpu = threadSeconds() - c0;
     } else {
         std::vector<std::thread> pool;
         for (int k = 0; k < threads; ++k) pool.emplace_back(worker, k);
         for (auto& t : pool) t.join();
     }
-    return secondsSince(t0);
+    return {secondsSince(t0), cpu};
 }
 
 // One warm-up pass on one thread, which also chooses how many passes make a run last about
 // 0.25 s (a run of a few milliseconds would mostly time the threads' start).
 int passesFor(size_t count, const Body& body) {
-    const double once = timed(count, 1, 1, body);
+    const double once = timed(count, 1, 1, body).wall;
     return int(std::clamp(std::ceil(0.25 / std::max(once, 1e-9)), 1.0, 1000.0));
 }
 
-// Median throughput in M rays/s of kerf ([0]) and Embree ([1]) on 1 and 2 threads ([1], [2]),
-// the two alternating run by run.
+// Median throughput in M rays/s of kerf ([0]) and Embree ([1]) on 1 and 2 threads ([1], [2];
+// [0] is 1 thread by its CPU time), the two alternating run by run.
 void throughput(size_t count, int runs, const Body& kerfBody, const Body& embreeBody,
                 double out[2][3]) {
     const Body* bodies[2] = {&kerfBody, &embreeBody};
@@ -212,10 +229,13 @@ void throughput(size_t count, int runs, const Body& kerfBody, const Body& embree
     std::vector<double> times[2][3];
     for (int run = 0; run < runs; ++run)
         for (int threads = 1; threads <= 2; ++threads)
-            for (int lib = 0; lib < 2; ++lib)
-                times[lib][threads].push_back(timed(count, threads, passes[lib], *bodies[lib]));
+            for (int lib = 0; lib < 2; ++lib) {
+                const Timing t = timed(count, threads, passes[lib], *bodies[lib]);
+                times[lib][threads].push_back(t.wall);
+                if (threads == 1) times[lib][0].push_back(t.cpu);
+            }
     for (int lib = 0; lib < 2; ++lib)
-        for (int threads = 1; threads <= 2; ++threads)
+        for (int threads = 0; threads <= 2; ++threads)
             out[lib][threads] = double(passes[lib]) * count / median(times[lib][threads]) * 1e-6;
 }
 
@@ -262,8 +282,8 @@ double bruteForce(const TriangleMesh& mesh, const Ray& ray) {
 
 struct Figures {
     double build[2][3];     ///< [kerf, Embree][threads] in s (index 1, 2)
-    double primary[2][3];   ///< M rays/s
-    double shadow[2][3];    ///< M rays/s
+    double primary[2][3];   ///< M rays/s; index 0: 1 thread by CPU time
+    double shadow[2][3];    ///< M rays/s; index 0: 1 thread by CPU time
 };
 
 void runMesh(const std::string& path, const Options& opt) {
@@ -390,6 +410,8 @@ void runMesh(const std::string& path, const Options& opt) {
     const size_t disagreeing = checked.size();
     for (size_t s = 0; checked.size() < budget && s < budget; ++s)
         checked.push_back(s * rays.size() / budget);
+    std::sort(checked.begin(), checked.end());  // a disagreeing ray may also be in the sample
+    checked.erase(std::unique(checked.begin(), checked.end()), checked.end());
     size_t wrongHit[2] = {0, 0};
     double worstDepth[2] = {0.0, 0.0};
     for (size_t i : checked) {
@@ -415,12 +437,13 @@ void runMesh(const std::string& path, const Options& opt) {
     for (int threads = 1; threads <= 2; ++threads)
         std::printf("| build (s) | %d | %.3f | %.3f | %.2f |\n", threads, f.build[0][threads],
                     f.build[1][threads], f.build[0][threads] / f.build[1][threads]);
-    for (int threads = 1; threads <= 2; ++threads)
-        std::printf("| primary (M rays/s) | %d | %.3g | %.3g | %.2f |\n", threads,
+    const char* threadsLabel[3] = {"1 (CPU time)", "1", "2"};
+    for (int threads : {1, 2, 0})
+        std::printf("| primary (M rays/s) | %s | %.3g | %.3g | %.2f |\n", threadsLabel[threads],
                     f.primary[0][threads], f.primary[1][threads],
                     f.primary[0][threads] / f.primary[1][threads]);
-    for (int threads = 1; threads <= 2; ++threads)
-        std::printf("| shadow (M rays/s) | %d | %.3g | %.3g | %.2f |\n", threads,
+    for (int threads : {1, 2, 0})
+        std::printf("| shadow (M rays/s) | %s | %.3g | %.3g | %.2f |\n", threadsLabel[threads],
                     f.shadow[0][threads], f.shadow[1][threads],
                     f.shadow[0][threads] / f.shadow[1][threads]);
     std::printf("agreement: %zu pixels hit by kerf only, %zu by Embree only; %zu pixels on "

@@ -24,7 +24,10 @@ for tool in python3 cmake; do
     command -v "$tool" >/dev/null || { echo "run_mesh_bench.sh: '$tool' is missing (apt-get install $tool)" >&2; exit 1; }
 done
 bench_build="${BENCH_BUILD:-$root/build/bench-reference}"
-cmake -S bench -B "$bench_build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+mkdir -p bench/out
+# The configure's chatter (kerf's dependencies) goes to a log, shown only when it fails.
+cmake -S bench -B "$bench_build" -DCMAKE_BUILD_TYPE=Release >bench/out/configure.log 2>&1 ||
+    { cat bench/out/configure.log >&2; exit 1; }
 if ! grep -q '^embree_DIR:PATH=/' "$bench_build/CMakeCache.txt"; then
     echo "run_mesh_bench.sh: Embree 3 was not found (apt-get install libembree-dev)" >&2
     exit 1
@@ -32,7 +35,6 @@ fi
 cmake --build "$bench_build" --target kerf_embree_bench -j"$(nproc)" >/dev/null
 
 python3 bench/gen_bench_meshes.py "$meshes"
-mkdir -p bench/out
 out=bench/out/embree_bench.md
 trap 'rm -f "$out.tmp"' EXIT
 # Written whole or not at all: into a temporary file, renamed when the run has finished.
