@@ -362,6 +362,7 @@ void runMesh(const std::string& path, const Options& opt) {
     constexpr double kShadowStart = 1e-4;
     std::vector<char> kerfOccluded(shadowRays.size()), embreeOccluded(shadowRays.size());
     auto kerfShadow = [&](int k, size_t a, size_t b) {
+        stats[k].rays += b - a;
         for (size_t i = a; i < b; ++i) kerfOccluded[i] = bvh.anyHit(shadowRays[i], kShadowStart, 1.0, stats[k]);
     };
     auto embreeShadow = [&](int, size_t a, size_t b) {
@@ -373,7 +374,10 @@ void runMesh(const std::string& path, const Options& opt) {
             embreeOccluded[i] = r.tfar < 0.0f;  // Embree marks an occluded ray with tfar = -inf
         }
     };
+    for (ThreadStats& s : stats) s = ThreadStats();
     throughput(shadowRays.size(), opt.runs, kerfShadow, embreeShadow, f.shadow);
+    const double kerfShadowNodes = double(stats[0].nodesVisited + stats[1].nodesVisited) /
+                                   double(std::max<uint64_t>(1, stats[0].rays + stats[1].rays));
 
     // Agreement on the primary rays. A ray grazes an edge when either library's hit lies
     // within 1e-5 of its triangle's edge relative to the coordinates (about 170 float roundings).
@@ -430,9 +434,10 @@ void runMesh(const std::string& path, const Options& opt) {
     }
 
     std::printf("## %s: %zu triangles; %d x %d primary rays (%zu hit in kerf), %zu shadow rays "
-                "(%zu occluded in kerf); kerf %.1f nodes per primary ray; load average %s\n",
+                "(%zu occluded in kerf); kerf visits %.1f nodes per primary ray, %.1f per shadow ray; "
+                "load average %s\n",
                 stem.c_str(), mesh.triangles.size(), n, n, kerfHits, shadowRays.size(), occluded,
-                kerfNodes, loadAverage().c_str());
+                kerfNodes, kerfShadowNodes, loadAverage().c_str());
     std::printf("| %-6s | threads | kerf | Embree | kerf/Embree |\n|---|---|---|---|---|\n", stem.c_str());
     for (int threads = 1; threads <= 2; ++threads)
         std::printf("| build (s) | %d | %.3f | %.3f | %.2f |\n", threads, f.build[0][threads],
