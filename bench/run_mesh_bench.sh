@@ -2,7 +2,7 @@
 # The Embree comparison of issue 12 §3 (docs/BENCHMARKS.md, "Meshes against Embree"): writes
 # the three meshes (bench/gen_bench_meshes.py), builds kerf_embree_bench (bench/CMakeLists.txt,
 # which adds kerf's mesh library), and runs it on the bumpy sphere, the city and the fan. About
-# 4 minutes on a quiet 2-core machine. Prints markdown tables (kerf against Embree in the same
+# 3 minutes on this 2-core machine. Prints markdown tables (kerf against Embree in the same
 # process, the ratios, the agreement figures) and writes them to bench/out/embree_bench.md.
 #
 #   bench/run_mesh_bench.sh
