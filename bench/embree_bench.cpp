@@ -7,10 +7,13 @@
 //     rtcIntersect1) and shadow rays (from kerf's primary hits toward a point light, anyHit
 //     against rtcOccluded1) on 1 and 2 threads: single rays, as a renderer calls them; the
 //     2-thread figures split the rays over 2 std::threads in chunks of 64, each with its own
-//     stats and context (median wall time of --runs; kerf and Embree alternate, so a busy
-//     machine slows both alike);
-//   - agreement: pixels hit by one library only (and how near an edge that hit was), the
-//     largest relative depth difference, and shadow rays on which they disagree.
+//     stats and context (median wall time of --runs, each as many passes over the rays as
+//     fill about 0.25 s; kerf and Embree alternate, so a busy machine slows both alike; the
+//     1-thread runs are also timed by the thread's CPU time);
+//   - agreement: pixels hit by one library only, the largest relative depth difference,
+//     whether the rays where they differ graze an edge, shadow rays on which they disagree,
+//     and both libraries against a long-double brute-force reference on the disagreeing rays
+//     and a sample of the others.
 // Rays and vertices are float numbers (the PLY stores floats), so both trace the same rays
 // against the same triangles; kerf computes in double, Embree in float.
 //
