@@ -3,7 +3,8 @@
 // rays (the same watertight test over every triangle: t must agree bit for bit).
 // Built only when asked: cmake --build build --target kerf_bvh_bench; run: build/mesh/kerf_bvh_bench
 // [--size N] (image N×N rays per mesh, default 1024) [--only sphere|city|fan]
-// [--traversal-cost C] [--leaf N] (build options, to tune).
+// [--traversal-cost C] [--leaf N] (build options, to tune) [--check RAYS] (brute-force rays
+// per mesh; default as many as 2e8 triangle tests allow) [--scalar] (no AVX2 box tests).
 #include "mesh/triangle_bvh.h"
 #include "mesh/watertight_triangle.h"
 
@@ -122,6 +123,7 @@ struct Camera {
 };
 
 BvhBuildOptions gOptions;
+long gCheck = -1;  // brute-force rays per mesh; -1: as many as 2e8 triangle tests allow
 
 void run(const char* name, const TriangleMesh& mesh, const Camera& cam, const Vec3& light,
          int n) {
@@ -167,7 +169,8 @@ void run(const char* name, const TriangleMesh& mesh, const Camera& cam, const Ve
     const double shadow = seconds(t1), shadowCpu = threadSeconds() - c1;
 
     // Brute force on a sample of the primary rays: the reference.
-    const size_t sample = std::max<size_t>(1, std::min<size_t>(rays.size(), 2e8 / mesh.triangles.size()));
+    const size_t sample = gCheck >= 0 ? std::min<size_t>(rays.size(), size_t(gCheck))
+                                      : std::max<size_t>(1, std::min<size_t>(rays.size(), 2e8 / mesh.triangles.size()));
     size_t mismatches = 0;
     for (size_t s = 0; s < sample; ++s) {
         const size_t i = (s * 7919) % rays.size();
@@ -213,10 +216,14 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
         else if (!std::strcmp(argv[i], "--traversal-cost") && i + 1 < argc)
             gOptions.traversalCost = std::atof(argv[++i]);
+        else if (!std::strcmp(argv[i], "--check") && i + 1 < argc)
+            gCheck = std::atol(argv[++i]);
+        else if (!std::strcmp(argv[i], "--scalar"))
+            gOptions.simd = false;
         else if (!std::strcmp(argv[i], "--leaf") && i + 1 < argc)
             gOptions.maxLeafSize = std::atoi(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: kerf_bvh_bench [--size N] [--only sphere|city|fan] [--traversal-cost C] [--leaf N]\n");
+            std::fprintf(stderr, "usage: kerf_bvh_bench [--size N] [--only sphere|city|fan] [--traversal-cost C] [--leaf N] [--check RAYS] [--scalar]\n");
             return 2;
         }
     }

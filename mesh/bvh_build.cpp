@@ -4,6 +4,8 @@
 // range's own triangles and tasks write disjoint ranges.
 #include "mesh/triangle_bvh.h"
 
+#include "mesh/bvh4.h"
+
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
@@ -211,6 +213,8 @@ TriangleBvh::TriangleBvh(const TriangleMesh& mesh, const BvhBuildOptions& option
         for (int j = 0; j < 3; ++j)
             for (int a = 0; a < 3; ++a) mTris[k].p[j][a] = mesh.positions[t[j]][a];
     }
+    mWide = bvh4::collapse(mNodes);
+    mSimd = options.simd;
 }
 
 }  // namespace kerf

@@ -4,10 +4,13 @@
 /// triangles copied in leaf order for locality, and three walks with the watertight test:
 /// closest hit, any hit (shadow rays) and every crossing (for CSG spans).
 ///
-/// Split: the build is in bvh_build.cpp, the walks in triangle_bvh.cpp, the ray–triangle test
-/// in watertight_triangle.h.
+/// Split: the build is in bvh_build.cpp; the ray walks run over the binary tree collapsed into
+/// 4-wide nodes (bvh4.h, bvh4_collapse.cpp, bvh4_queries.h, with the AVX2 box test in
+/// bvh4_avx2.cpp) and are dispatched in triangle_bvh.cpp; the ray–triangle test is in
+/// watertight_triangle.h.
 #pragma once
 
+#include "mesh/bvh4_node.h"
 #include "mesh/triangle_mesh.h"
 
 #include <cstdint>
@@ -45,6 +48,9 @@ struct BvhBuildOptions {
     int maxLeafSize = 8;    ///< a leaf never holds more triangles than this
     int parallelAbove = 16384;  ///< subtrees with more triangles are built as TBB tasks
     double traversalCost = 1.0;  ///< SAH cost of a walk step (two box tests), in triangle tests
+    /// Ray walks test a wide node's four boxes on AVX2 lanes when the CPU has AVX2 (and
+    /// KERF_SIMD is not "scalar"); false forces the scalar test. Same answers and counters.
+    bool simd = true;
 };
 
 class TriangleBvh {
@@ -89,13 +95,15 @@ public:
     static_assert(sizeof(Node) == 32, "two nodes per cache line");
     /// Deepest walk the fixed stack allows; the build splits at the median below this depth.
     static constexpr int kMaxDepth = 60;
+    struct Tri { double p[3][3]; };  ///< vertices as plain arrays (see watertight_triangle.h)
 
 private:
-    struct Tri { double p[3][3]; };  ///< vertices as plain arrays (see watertight_triangle.h)
     std::vector<Node> mNodes;
     std::vector<Tri> mTris;                  ///< triangle vertices in leaf order
     std::vector<uint32_t> mTriangleIndex;    ///< the mesh's index of each slot of mTris
     Bounds3 mBounds;
+    std::vector<bvh4::WideNode> mWide;  ///< mNodes collapsed 4-wide: the ray walks' tree
+    bool mSimd = true;
 
     friend struct BvhBuilder;
 };

@@ -1,0 +1,131 @@
+/// @file mesh/bvh4.h
+/// @brief The 4-wide nodes the triangle BVH's ray walks use: the binary tree collapsed so each
+/// node holds up to four children's boxes side by side (float, rounded outward like the binary
+/// nodes), tested together, and the walk over them, written once as a template on the box test
+/// so the scalar and the AVX2 paths (mesh/bvh4_avx2.cpp) run the same code around it.
+///
+/// Both box tests compute, lane for lane, the same IEEE operations as
+/// Bounds3::clipRayConservative (csg/types.h), so they cull the same boxes and give the same
+/// entry distances: the walks visit the same nodes and test the same triangles in the same
+/// order whichever runs (tests/mesh/bvh4_test.cpp).
+#pragma once
+
+#include "mesh/bvh4_node.h"
+#include "mesh/triangle_bvh.h"
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#define KERF_BVH_INLINE __attribute__((always_inline)) inline
+
+namespace kerf::bvh4 {
+
+/// Collapses the binary tree (TriangleBvh::Node, depth-first with the first child next) into
+/// wide nodes, root first: each wide node takes the binary node's children and opens its
+/// largest-area inner children until it has four. Leaves keep their triangle ranges.
+std::vector<WideNode> collapse(const std::vector<TriangleBvh::Node>& binary);
+
+/// What the walks need of a BVH, without its private parts.
+struct View {
+    const WideNode* nodes;
+    const TriangleBvh::Node* root;  ///< the binary root: its box is tested first
+    const TriangleBvh::Tri* tris;
+    const uint32_t* triangleIndex;
+};
+
+/// A walk-stack entry: a leaf's triangle range (count > 0) or a wide node (count 0), and the
+/// entry distance of its box.
+struct Entry {
+    uint32_t index, count;
+    double tEnter;
+};
+/// Three siblings wait per level at most (a wide node's nearest child is entered at once).
+constexpr int kStackSize = 3 * TriangleBvh::kMaxDepth + 4;
+
+/// The scalar box test: Bounds3::clipRayConservative on each lane.
+struct ScalarBoxes {
+    const RayReciprocal& rec;
+    explicit ScalarBoxes(const RayReciprocal& r) : rec(r) {}
+    /// Bit k of the result: lane k's box meets the ray within [tmin, tmax], entered at t[k].
+    KERF_BVH_INLINE unsigned test(const WideNode& n, double tmin, double tmax, double t[4]) const {
+        unsigned mask = 0;
+        for (int k = 0; k < n.lanes; ++k) {
+            const float lo[3] = {n.lo[0][k], n.lo[1][k], n.lo[2][k]};
+            const float hi[3] = {n.hi[0][k], n.hi[1][k], n.hi[2][k]};
+            double t0 = tmin, t1 = tmax;
+            if (Bounds3::clipRayConservative(rec, lo, hi, t0, t1)) {
+                mask |= 1u << k;
+                t[k] = t0;
+            }
+        }
+        return mask;
+    }
+};
+
+/// Walks the wide tree calling leaf(first, count, tmax) for each leaf whose box the ray may meet
+/// within [tmin, tmax]; leaf returns the tmax to go on with, or a value below tmin to stop.
+/// Children are entered nearest first; the others wait with their entry distances and are
+/// skipped once the range has shrunk past them. Entries are conservative, so no box holding a
+/// hit is skipped. BvhStats::nodesVisited counts the boxes tested (the root's and each tested
+/// node's children).
+template <class Boxes, class Leaf>
+KERF_BVH_INLINE void walk(const View& v, const Boxes& boxes, const RayReciprocal& rec,
+                          double tmin, double tmax, BvhStats& stats, Leaf&& leaf) {
+    if (!(tmin < tmax)) return;
+    ++stats.nodesVisited;
+    double rootEnter = tmin;
+    {
+        double t1 = tmax;
+        if (!Bounds3::clipRayConservative(rec, v.root->lo, v.root->hi, rootEnter, t1)) return;
+    }
+    Entry stack[kStackSize];
+    int top = 0;
+    Entry cur{0, 0, rootEnter};
+    for (;;) {
+        if (cur.count > 0) {
+            tmax = leaf(cur.index, cur.count, tmax);
+            if (!(tmin < tmax)) return;
+        } else {
+            const WideNode& n = v.nodes[cur.index];
+            double t[4];
+            unsigned mask = boxes.test(n, tmin, tmax, t);
+            stats.nodesVisited += n.lanes;
+            if (mask) {
+                // Sort the hit lanes by entry (insertion sort of at most four), push all but
+                // the nearest, farthest first, and go on with the nearest.
+                Entry hit[4];
+                int h = 0;
+                while (mask) {
+                    const int k = __builtin_ctz(mask);
+                    mask &= mask - 1;
+                    Entry e{n.index[k], n.count[k], t[k]};
+                    int j = h++;
+                    while (j > 0 && hit[j - 1].tEnter > e.tEnter) {
+                        hit[j] = hit[j - 1];
+                        --j;
+                    }
+                    hit[j] = e;
+                }
+                for (int j = h - 1; j > 0; --j) stack[top++] = hit[j];
+                cur = hit[0];
+                // The nearest child is read next: start loading it (a wide node is two
+                // cache lines, a leaf's triangles 72 bytes each).
+                const char* next = cur.count > 0
+                                       ? reinterpret_cast<const char*>(&v.tris[cur.index])
+                                       : reinterpret_cast<const char*>(&v.nodes[cur.index]);
+                __builtin_prefetch(next);
+                __builtin_prefetch(next + 64);
+                continue;
+            }
+        }
+        // Pop the next waiting child the shrunken range still reaches.
+        for (;;) {
+            if (top == 0) return;
+            cur = stack[--top];
+            if (cur.tEnter <= tmax) break;
+        }
+    }
+}
+
+}  // namespace kerf::bvh4
