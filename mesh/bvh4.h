@@ -12,6 +12,7 @@
 
 #include "mesh/bvh4_node.h"
 #include "mesh/triangle_bvh.h"
+#include "mesh/watertight_triangle.h"
 
 #include <cstdint>
 #include <limits>
@@ -26,16 +27,20 @@ namespace kerf::bvh4 {
 /// largest-area inner children until it has four. Leaves keep their triangle ranges.
 std::vector<WideNode> collapse(const std::vector<TriangleBvh::Node>& binary);
 
+/// Packs each wide leaf's triangles (the slots [index, index + count) of tris, whose mesh
+/// indices are triangleIndex) into TriPacks and points the leaf lanes at their first pack.
+std::vector<TriPack> packLeaves(std::vector<WideNode>& nodes, const TriangleBvh::Tri* tris,
+                                const uint32_t* triangleIndex);
+
 /// What the walks need of a BVH, without its private parts.
 struct View {
     const WideNode* nodes;
     const TriangleBvh::Node* root;  ///< the binary root: its box is tested first
-    const TriangleBvh::Tri* tris;
-    const uint32_t* triangleIndex;
+    const TriPack* packs;
 };
 
-/// A walk-stack entry: a leaf's triangle range (count > 0) or a wide node (count 0), and the
-/// entry distance of its box.
+/// A walk-stack entry: a leaf's first pack and triangle count (count > 0) or a wide node
+/// (count 0), and the entry distance of its box.
 struct Entry {
     uint32_t index, count;
     double tEnter;
@@ -43,10 +48,19 @@ struct Entry {
 /// Three siblings wait per level at most (a wide node's nearest child is entered at once).
 constexpr int kStackSize = 3 * TriangleBvh::kMaxDepth + 4;
 
-/// The scalar box test: Bounds3::clipRayConservative on each lane.
-struct ScalarBoxes {
+/// What a lane policy's pack test reports: lanes decided here (hit: inside with t below) and
+/// lanes left to the reference test (exact). For a hit lane, t and the weights' numerators
+/// and denominator are those intersectWatertight computes, bit for bit.
+struct PackResult {
+    unsigned hit = 0, exact = 0;
+    double t[4], det[4], v[4], w[4];
+};
+
+/// The scalar lanes: Bounds3::clipRayConservative on each box, and every triangle left to the
+/// reference watertight test (this is the reference the AVX2 lanes must equal).
+struct ScalarLanes {
     const RayReciprocal& rec;
-    explicit ScalarBoxes(const RayReciprocal& r) : rec(r) {}
+    ScalarLanes(const RayReciprocal& r, const ShearedRay&) : rec(r) {}
     /// Bit k of the result: lane k's box meets the ray within [tmin, tmax], entered at t[k].
     KERF_BVH_INLINE unsigned test(const WideNode& n, double tmin, double tmax, double t[4]) const {
         unsigned mask = 0;
@@ -61,16 +75,20 @@ struct ScalarBoxes {
         }
         return mask;
     }
+    KERF_BVH_INLINE void packTest(const TriPack&, unsigned lanes, PackResult& r) const {
+        r.hit = 0;
+        r.exact = lanes;
+    }
 };
 
-/// Walks the wide tree calling leaf(first, count, tmax) for each leaf whose box the ray may meet
+/// Walks the wide tree calling leaf(firstPack, count, tmax) for each leaf whose box the ray may meet
 /// within [tmin, tmax]; leaf returns the tmax to go on with, or a value below tmin to stop.
 /// Children are entered nearest first; the others wait with their entry distances and are
 /// skipped once the range has shrunk past them. Entries are conservative, so no box holding a
 /// hit is skipped. BvhStats::nodesVisited counts the boxes tested (the root's and each tested
 /// node's children).
-template <class Boxes, class Leaf>
-KERF_BVH_INLINE void walk(const View& v, const Boxes& boxes, const RayReciprocal& rec,
+template <class Lanes, class Leaf>
+KERF_BVH_INLINE void walk(const View& v, const Lanes& boxes, const RayReciprocal& rec,
                           double tmin, double tmax, BvhStats& stats, Leaf&& leaf) {
     if (!(tmin < tmax)) return;
     ++stats.nodesVisited;
@@ -110,12 +128,17 @@ KERF_BVH_INLINE void walk(const View& v, const Boxes& boxes, const RayReciprocal
                 for (int j = h - 1; j > 0; --j) stack[top++] = hit[j];
                 cur = hit[0];
                 // The nearest child is read next: start loading it (a wide node is two
-                // cache lines, a leaf's triangles 72 bytes each).
+                // cache lines, a pack five).
                 const char* next = cur.count > 0
-                                       ? reinterpret_cast<const char*>(&v.tris[cur.index])
+                                       ? reinterpret_cast<const char*>(&v.packs[cur.index])
                                        : reinterpret_cast<const char*>(&v.nodes[cur.index]);
                 __builtin_prefetch(next);
                 __builtin_prefetch(next + 64);
+                if (cur.count > 0) {
+                    __builtin_prefetch(next + 128);
+                    __builtin_prefetch(next + 192);
+                    __builtin_prefetch(next + 256);
+                }
                 continue;
             }
         }

@@ -85,4 +85,27 @@ std::vector<WideNode> collapse(const std::vector<Node>& binary) {
     return out;
 }
 
+std::vector<TriPack> packLeaves(std::vector<WideNode>& nodes, const TriangleBvh::Tri* tris,
+                                const uint32_t* triangleIndex) {
+    std::vector<TriPack> packs;
+    for (WideNode& n : nodes)  // root first, depth first: packs follow the walk order
+        for (int k = 0; k < n.lanes; ++k) {
+            if (n.count[k] == 0) continue;
+            const uint32_t slot = n.index[k];
+            n.index[k] = uint32_t(packs.size());
+            for (uint32_t i = 0; i < n.count[k]; i += 4) {
+                TriPack p{};
+                for (int lane = 0; lane < 4; ++lane) {
+                    // Unused lanes repeat the pack's first triangle: finite, never tested.
+                    const uint32_t s = slot + i + (i + lane < n.count[k] ? uint32_t(lane) : 0u);
+                    for (int vtx = 0; vtx < 3; ++vtx)
+                        for (int a = 0; a < 3; ++a) p.p[vtx][a][lane] = tris[s].p[vtx][a];
+                    p.triangle[lane] = triangleIndex[s];
+                }
+                packs.push_back(p);
+            }
+        }
+    return packs;
+}
+
 }  // namespace kerf::bvh4

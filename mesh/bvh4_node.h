@@ -1,5 +1,6 @@
 /// @file mesh/bvh4_node.h
-/// @brief The triangle BVH's 4-wide node (the walks over it are in mesh/bvh4.h).
+/// @brief The triangle BVH's 4-wide node and its leaves' triangles packed four at a time
+/// (the walks over them are in mesh/bvh4.h).
 #pragma once
 
 #include <cstdint>
@@ -16,5 +17,15 @@ struct alignas(64) WideNode {
     uint8_t pad[7];
 };
 static_assert(sizeof(WideNode) == 128, "two cache lines");
+
+/// Up to four of a leaf's triangles, coordinates side by side so four watertight tests run on
+/// AVX2 lanes. A leaf of n triangles takes ceil(n / 4) consecutive packs; unused lanes repeat
+/// lane 0 (and are never tested).
+struct alignas(32) TriPack {
+    double p[3][3][4];      ///< [vertex][axis][lane]
+    uint32_t triangle[4];   ///< the mesh's index of each lane's triangle
+    uint32_t pad[4];
+};
+static_assert(sizeof(TriPack) == 320, "five cache lines");
 
 }  // namespace kerf::bvh4

@@ -1,6 +1,6 @@
 /// @file mesh/bvh4_queries.h
 /// @brief The three ray queries over the wide tree (closest hit, any hit, every crossing) as
-/// templates on the box test, instantiated once for the scalar path (mesh/triangle_bvh.cpp)
+/// templates on the lanes (box and triangle-pack tests), instantiated once for the scalar path (mesh/triangle_bvh.cpp)
 /// and once for AVX2 (mesh/bvh4_avx2.cpp). The triangles go through the one watertight test.
 #pragma once
 
@@ -9,70 +9,108 @@
 
 namespace kerf::bvh4 {
 
-template <class Boxes>
+/// Lane k of a tested pack within (tmin, tmax): the pack test's decision where it made one,
+/// else the reference test itself. Either way intersectWatertight's answer, bit for bit.
+KERF_BVH_INLINE bool laneHit(const TriPack& p, int k, const PackResult& r, const ShearedRay& sr,
+                             double tmin, double tmax, TriangleIntersection& x) {
+    if (r.exact >> k & 1u) {
+        const double a[3] = {p.p[0][0][k], p.p[0][1][k], p.p[0][2][k]};
+        const double b[3] = {p.p[1][0][k], p.p[1][1][k], p.p[1][2][k]};
+        const double c[3] = {p.p[2][0][k], p.p[2][1][k], p.p[2][2][k]};
+        return intersectWatertight(sr, a, b, c, tmin, tmax, x);
+    }
+    if (!(r.hit >> k & 1u)) return false;
+    const double t = r.t[k];
+    if (!(t > tmin && t < tmax)) return false;
+    x.t = t;
+    x.u = r.v[k] / r.det[k];
+    x.v = r.w[k] / r.det[k];
+    x.entering = r.det[k] > 0.0;
+    return true;
+}
+
+/// Calls f(pack, lane) for each triangle of a leaf in order until f returns false; the pack's
+/// test runs first on the lanes in use. Returns false when f stopped it.
+template <class Lanes, class F>
+KERF_BVH_INLINE bool forLeaf(const View& v, const Lanes& lanes, uint32_t first, uint32_t count,
+                             PackResult& r, F&& f) {
+    for (uint32_t i = 0; i < count; i += 4) {
+        const TriPack& p = v.packs[first + i / 4];
+        const int n = count - i < 4 ? int(count - i) : 4;
+        lanes.packTest(p, (1u << n) - 1u, r);
+        for (int k = 0; k < n; ++k)
+            if (!f(p, k)) return false;
+    }
+    return true;
+}
+
+template <class Lanes>
 KERF_BVH_INLINE bool closestHit(const View& v, const Ray& ray, double tmin, double tmax,
                                 TriangleHit& hit, BvhStats& stats) {
     const RayReciprocal rec(ray);
-    const Boxes boxes(rec);
     const ShearedRay sr(ray);
+    const Lanes lanes(rec, sr);
     bool found = false;
-    walk(v, boxes, rec, tmin, tmax, stats,
+    PackResult r;
+    walk(v, lanes, rec, tmin, tmax, stats,
          [&](uint32_t first, uint32_t count, double tm) __attribute__((always_inline)) {
              stats.trianglesTested += count;
-             for (uint32_t k = first; k < first + count; ++k) {
-                 const TriangleBvh::Tri& tri = v.tris[k];
-                 TriangleIntersection x;
-                 if (intersectWatertight(sr, tri.p[0], tri.p[1], tri.p[2], tmin, tm, x)) {
-                     tm = x.t;
-                     hit = {x.t, v.triangleIndex[k], x.u, x.v};
-                     found = true;
-                 }
-             }
+             forLeaf(v, lanes, first, count, r,
+                     [&](const TriPack& p, int k) __attribute__((always_inline)) {
+                         TriangleIntersection x;
+                         if (laneHit(p, k, r, sr, tmin, tm, x)) {
+                             tm = x.t;
+                             hit = {x.t, p.triangle[k], x.u, x.v};
+                             found = true;
+                         }
+                         return true;
+                     });
              return tm;
          });
     return found;
 }
 
-template <class Boxes>
+template <class Lanes>
 KERF_BVH_INLINE bool anyHit(const View& v, const Ray& ray, double tmin, double tmax,
                             BvhStats& stats) {
     const RayReciprocal rec(ray);
-    const Boxes boxes(rec);
     const ShearedRay sr(ray);
+    const Lanes lanes(rec, sr);
     bool found = false;
-    walk(v, boxes, rec, tmin, tmax, stats,
+    PackResult r;
+    walk(v, lanes, rec, tmin, tmax, stats,
          [&](uint32_t first, uint32_t count, double tm) __attribute__((always_inline)) {
-             for (uint32_t k = first; k < first + count; ++k) {
-                 ++stats.trianglesTested;
-                 const TriangleBvh::Tri& tri = v.tris[k];
-                 TriangleIntersection x;
-                 if (intersectWatertight(sr, tri.p[0], tri.p[1], tri.p[2], tmin, tm, x)) {
-                     found = true;
-                     return -kInf;
-                 }
-             }
-             return tm;
+             forLeaf(v, lanes, first, count, r,
+                     [&](const TriPack& p, int k) __attribute__((always_inline)) {
+                         ++stats.trianglesTested;
+                         TriangleIntersection x;
+                         found = laneHit(p, k, r, sr, tmin, tm, x);
+                         return !found;
+                     });
+             return found ? -kInf : tm;
          });
     return found;
 }
 
 /// Appends every crossing in (tmin, tmax) in walk order; the caller sorts and removes the
 /// repeats of triangles referenced from several leaves.
-template <class Boxes>
+template <class Lanes>
 KERF_BVH_INLINE void allCrossings(const View& v, const Ray& ray, double tmin, double tmax,
                                   std::vector<TriangleCrossing>& out, BvhStats& stats) {
     const RayReciprocal rec(ray);
-    const Boxes boxes(rec);
     const ShearedRay sr(ray);
-    walk(v, boxes, rec, tmin, tmax, stats,
+    const Lanes lanes(rec, sr);
+    PackResult r;
+    walk(v, lanes, rec, tmin, tmax, stats,
          [&](uint32_t first, uint32_t count, double tm) __attribute__((always_inline)) {
              stats.trianglesTested += count;
-             for (uint32_t k = first; k < first + count; ++k) {
-                 const TriangleBvh::Tri& tri = v.tris[k];
-                 TriangleIntersection x;
-                 if (intersectWatertight(sr, tri.p[0], tri.p[1], tri.p[2], tmin, tm, x))
-                     out.push_back({x.t, v.triangleIndex[k], x.entering});
-             }
+             forLeaf(v, lanes, first, count, r,
+                     [&](const TriPack& p, int k) __attribute__((always_inline)) {
+                         TriangleIntersection x;
+                         if (laneHit(p, k, r, sr, tmin, tm, x))
+                             out.push_back({x.t, p.triangle[k], x.entering});
+                         return true;
+                     });
              return tm;
          });
 }

@@ -214,6 +214,7 @@ TriangleBvh::TriangleBvh(const TriangleMesh& mesh, const BvhBuildOptions& option
             for (int a = 0; a < 3; ++a) mTris[k].p[j][a] = mesh.positions[t[j]][a];
     }
     mWide = bvh4::collapse(mNodes);
+    mPacks = bvh4::packLeaves(mWide, mTris.data(), mTriangleIndex.data());
     mSimd = options.simd;
 }
 

@@ -25,25 +25,25 @@ bool useAvx2(bool simd) { return simd && bvh4::avx2::available(); }
 bool TriangleBvh::closestHit(const Ray& ray, double tmin, double tmax, TriangleHit& hit,
                              BvhStats& stats) const {
     if (mWide.empty()) return false;
-    const bvh4::View v{mWide.data(), mNodes.data(), mTris.data(), mTriangleIndex.data()};
+    const bvh4::View v{mWide.data(), mNodes.data(), mPacks.data()};
     if (useAvx2(mSimd)) return bvh4::avx2::closestHit(v, ray, tmin, tmax, hit, stats);
-    return bvh4::closestHit<bvh4::ScalarBoxes>(v, ray, tmin, tmax, hit, stats);
+    return bvh4::closestHit<bvh4::ScalarLanes>(v, ray, tmin, tmax, hit, stats);
 }
 
 bool TriangleBvh::anyHit(const Ray& ray, double tmin, double tmax, BvhStats& stats) const {
     if (mWide.empty()) return false;
-    const bvh4::View v{mWide.data(), mNodes.data(), mTris.data(), mTriangleIndex.data()};
+    const bvh4::View v{mWide.data(), mNodes.data(), mPacks.data()};
     if (useAvx2(mSimd)) return bvh4::avx2::anyHit(v, ray, tmin, tmax, stats);
-    return bvh4::anyHit<bvh4::ScalarBoxes>(v, ray, tmin, tmax, stats);
+    return bvh4::anyHit<bvh4::ScalarLanes>(v, ray, tmin, tmax, stats);
 }
 
 void TriangleBvh::allCrossings(const Ray& ray, double tmin, double tmax,
                                std::vector<TriangleCrossing>& out, BvhStats& stats) const {
     out.clear();
     if (mWide.empty()) return;
-    const bvh4::View v{mWide.data(), mNodes.data(), mTris.data(), mTriangleIndex.data()};
+    const bvh4::View v{mWide.data(), mNodes.data(), mPacks.data()};
     if (useAvx2(mSimd)) bvh4::avx2::allCrossings(v, ray, tmin, tmax, out, stats);
-    else bvh4::allCrossings<bvh4::ScalarBoxes>(v, ray, tmin, tmax, out, stats);
+    else bvh4::allCrossings<bvh4::ScalarLanes>(v, ray, tmin, tmax, out, stats);
     std::sort(out.begin(), out.end(), [](const TriangleCrossing& a, const TriangleCrossing& b) {
         return a.t < b.t || (a.t == b.t && a.triangle < b.triangle);
     });

@@ -103,6 +103,7 @@ private:
     std::vector<uint32_t> mTriangleIndex;    ///< the mesh's index of each slot of mTris
     Bounds3 mBounds;
     std::vector<bvh4::WideNode> mWide;  ///< mNodes collapsed 4-wide: the ray walks' tree
+    std::vector<bvh4::TriPack> mPacks;  ///< mTris again, four side by side per wide leaf
     bool mSimd = true;
 
     friend struct BvhBuilder;
