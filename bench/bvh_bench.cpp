@@ -4,7 +4,8 @@
 // Built only when asked: cmake --build build --target kerf_bvh_bench; run: build/mesh/kerf_bvh_bench
 // [--size N] (image N×N rays per mesh, default 1024) [--only sphere|city|fan]
 // [--traversal-cost C] [--leaf N] (build options, to tune) [--check RAYS] (brute-force rays
-// per mesh; default as many as 2e8 triangle tests allow) [--scalar] (no AVX2 box tests).
+// per mesh; default as many as 2e8 triangle tests allow) [--scalar] (no AVX2 lanes)
+// [--split-depth N] (halvings of thin triangles' references; 0: none).
 #include "mesh/triangle_bvh.h"
 #include "mesh/watertight_triangle.h"
 
@@ -185,7 +186,7 @@ void run(const char* name, const TriangleMesh& mesh, const Camera& cam, const Ve
         const bool bruteHit = best < kInf;
         if (bruteHit != bool(hitMask[i]) || (bruteHit && best != hits[i].t)) ++mismatches;
     }
-    std::printf("%s: %zu triangles, %zu nodes, depth %d\n", name, mesh.triangles.size(),
+    std::printf("%s: %zu triangles, %zu nodes, depth %d\n", name, bvh.triangleCount(),
                 bvh.nodeCount(), bvh.depth());
     std::printf("  build: %.3f s (1 thread; CPU time %.3f s), %.3f s (2 threads)\n", build1,
                 build1Cpu, build2);
@@ -218,12 +219,14 @@ int main(int argc, char** argv) {
             gOptions.traversalCost = std::atof(argv[++i]);
         else if (!std::strcmp(argv[i], "--check") && i + 1 < argc)
             gCheck = std::atol(argv[++i]);
+        else if (!std::strcmp(argv[i], "--split-depth") && i + 1 < argc)
+            gOptions.splitDepth = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--scalar"))
             gOptions.simd = false;
         else if (!std::strcmp(argv[i], "--leaf") && i + 1 < argc)
             gOptions.maxLeafSize = std::atoi(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: kerf_bvh_bench [--size N] [--only sphere|city|fan] [--traversal-cost C] [--leaf N] [--check RAYS] [--scalar]\n");
+            std::fprintf(stderr, "usage: kerf_bvh_bench [--size N] [--only sphere|city|fan] [--traversal-cost C] [--leaf N] [--check RAYS] [--scalar] [--split-depth N]\n");
             return 2;
         }
     }

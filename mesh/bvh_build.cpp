@@ -5,6 +5,7 @@
 #include "mesh/triangle_bvh.h"
 
 #include "mesh/bvh4.h"
+#include "mesh/bvh_split.h"
 
 #include <tbb/parallel_invoke.h>
 
@@ -187,35 +188,39 @@ void BvhBuilder::flatten(const BuildNode& n, std::vector<TriangleBvh::Node>& out
 
 TriangleBvh::TriangleBvh(const TriangleMesh& mesh, const BvhBuildOptions& options) {
     const size_t count = mesh.triangles.size();
+    mTriangleCount = count;
+    mSimd = options.simd;
     if (count == 0) return;
     BvhBuildOptions opts = options;
     opts.maxLeafSize = std::clamp(opts.maxLeafSize, 1, 255);
+    // The build sorts references: one per triangle, several for thin ones (bvh_split.h).
+    const std::vector<TriangleRef> refs =
+        triangleReferences(mesh, std::clamp(opts.splitDepth, 0, 16), opts.splitRatio);
+    const size_t refCount = refs.size();
     BvhBuilder builder{opts, {}, {}, {}};
-    builder.boxes.resize(count);
-    builder.centroids.resize(count);
-    builder.order.resize(count);
-    for (size_t i = 0; i < count; ++i) {
-        Bounds3 b;
-        for (uint32_t v : mesh.triangles[i]) b.extend(mesh.positions[v]);
-        builder.boxes[i] = b;
-        builder.centroids[i] = b.center();  // the box's centre bins as well as the centroid
+    builder.boxes.resize(refCount);
+    builder.centroids.resize(refCount);
+    builder.order.resize(refCount);
+    for (size_t i = 0; i < refCount; ++i) {
+        builder.boxes[i] = refs[i].box;
+        builder.centroids[i] = refs[i].box.center();  // the box's centre bins as well
         builder.order[i] = uint32_t(i);
     }
     size_t nodes = 0;
-    const auto root = builder.build(0, uint32_t(count), 0, nodes);
+    const auto root = builder.build(0, uint32_t(refCount), 0, nodes);
     mBounds = root->box;
     mNodes.reserve(nodes);
     builder.flatten(*root, mNodes);
-    mTris.resize(count);
-    mTriangleIndex = builder.order;
-    for (size_t k = 0; k < count; ++k) {
+    mTris.resize(refCount);
+    mTriangleIndex.resize(refCount);
+    for (size_t k = 0; k < refCount; ++k) {
+        mTriangleIndex[k] = refs[builder.order[k]].triangle;
         const auto& t = mesh.triangles[mTriangleIndex[k]];
         for (int j = 0; j < 3; ++j)
             for (int a = 0; a < 3; ++a) mTris[k].p[j][a] = mesh.positions[t[j]][a];
     }
     mWide = bvh4::collapse(mNodes);
     mPacks = bvh4::packLeaves(mWide, mTris.data(), mTriangleIndex.data());
-    mSimd = options.simd;
 }
 
 }  // namespace kerf

@@ -48,6 +48,11 @@ struct BvhBuildOptions {
     int maxLeafSize = 8;    ///< a leaf never holds more triangles than this
     int parallelAbove = 16384;  ///< subtrees with more triangles are built as TBB tasks
     double traversalCost = 1.0;  ///< SAH cost of a walk step (two box tests), in triangle tests
+    /// Thin triangles are referenced from several leaves with tighter boxes: a reference is
+    /// halved while its box's half area exceeds splitRatio × its part's area, at most
+    /// splitDepth times (bvh_split.h). 0 turns it off.
+    int splitDepth = 3;
+    double splitRatio = 16.0;
     /// Ray walks test a wide node's four boxes on AVX2 lanes when the CPU has AVX2 (and
     /// KERF_SIMD is not "scalar"); false forces the scalar test. Same answers and counters.
     bool simd = true;
@@ -80,7 +85,7 @@ public:
     bool nearestTriangle(const Vec3& p, double maxDistance, double& distance,
                          uint32_t& triangle, BvhStats& stats) const;
 
-    size_t triangleCount() const { return mTriangleIndex.size(); }
+    size_t triangleCount() const { return mTriangleCount; }
     size_t nodeCount() const { return mNodes.size(); }
     Bounds3 bounds() const { return mBounds; }
     /// Tree depth (a single leaf has depth 1; 0 without triangles), for tests.
@@ -99,8 +104,10 @@ public:
 
 private:
     std::vector<Node> mNodes;
-    std::vector<Tri> mTris;                  ///< triangle vertices in leaf order
+    /// Triangle vertices in leaf order; a split triangle has a slot in each of its leaves.
+    std::vector<Tri> mTris;
     std::vector<uint32_t> mTriangleIndex;    ///< the mesh's index of each slot of mTris
+    size_t mTriangleCount = 0;
     Bounds3 mBounds;
     std::vector<bvh4::WideNode> mWide;  ///< mNodes collapsed 4-wide: the ray walks' tree
     std::vector<bvh4::TriPack> mPacks;  ///< mTris again, four side by side per wide leaf
