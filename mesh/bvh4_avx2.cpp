@@ -50,6 +50,7 @@ struct Avx2Lanes {
                                    double t[4]) const {
         if (!rec.finite || !(tmin >= 0.0)) return scalar.test(n, tmin, tmax, t);
         __m256d t0 = _mm256_set1_pd(tmin), t1 = _mm256_set1_pd(tmax);
+#pragma GCC unroll 3
         for (int a = 0; a < 3; ++a) {
             const float* nearPlane = nearHi[a] ? n.hi[a] : n.lo[a];
             const float* farPlane = nearHi[a] ? n.lo[a] : n.hi[a];
@@ -85,6 +86,7 @@ struct Avx2Lanes {
     /// signs the rounded values settle are decided here, the rest left exact.
     KERF_AVX2_INLINE void packTest(const TriPack& p, unsigned lanes, PackResult& out) const {
         __m256d x[3], y[3], z[3];
+#pragma GCC unroll 3
         for (int j = 0; j < 3; ++j) {
             const __m256d dx = _mm256_sub_pd(_mm256_load_pd(p.p[j][kx]), origin[kx]);
             const __m256d dy = _mm256_sub_pd(_mm256_load_pd(p.p[j][ky]), origin[ky]);

@@ -29,19 +29,22 @@ KERF_BVH_INLINE bool laneHit(const TriPack& p, int k, const PackResult& r, const
     return true;
 }
 
-/// Calls f(pack, lane) for each triangle of a leaf in order until f returns false; the pack's
-/// test runs first on the lanes in use. Returns false when f stopped it.
+/// Calls f(pack, lane) in order for each triangle of a leaf that the pack test did not rule
+/// out, until f returns false. Returns how many of the leaf's triangles were reached: all of
+/// them, or up to and including the lane where f stopped.
 template <class Lanes, class F>
-KERF_BVH_INLINE bool forLeaf(const View& v, const Lanes& lanes, uint32_t first, uint32_t count,
-                             PackResult& r, F&& f) {
+KERF_BVH_INLINE uint32_t forLeaf(const View& v, const Lanes& lanes, uint32_t first,
+                                 uint32_t count, PackResult& r, F&& f) {
     for (uint32_t i = 0; i < count; i += 4) {
         const TriPack& p = v.packs[first + i / 4];
         const int n = count - i < 4 ? int(count - i) : 4;
         lanes.packTest(p, (1u << n) - 1u, r);
-        for (int k = 0; k < n; ++k)
-            if (!f(p, k)) return false;
+        for (unsigned open = r.hit | r.exact; open; open &= open - 1) {
+            const int k = __builtin_ctz(open);
+            if (!f(p, k)) return i + uint32_t(k) + 1;
+        }
     }
-    return true;
+    return count;
 }
 
 template <class Lanes>
@@ -80,13 +83,13 @@ KERF_BVH_INLINE bool anyHit(const View& v, const Ray& ray, double tmin, double t
     PackResult r;
     walk(v, lanes, rec, tmin, tmax, stats,
          [&](uint32_t first, uint32_t count, double tm) __attribute__((always_inline)) {
-             forLeaf(v, lanes, first, count, r,
-                     [&](const TriPack& p, int k) __attribute__((always_inline)) {
-                         ++stats.trianglesTested;
-                         TriangleIntersection x;
-                         found = laneHit(p, k, r, sr, tmin, tm, x);
-                         return !found;
-                     });
+             stats.trianglesTested +=
+                 forLeaf(v, lanes, first, count, r,
+                         [&](const TriPack& p, int k) __attribute__((always_inline)) {
+                             TriangleIntersection x;
+                             found = laneHit(p, k, r, sr, tmin, tm, x);
+                             return !found;
+                         });
              return found ? -kInf : tm;
          });
     return found;
