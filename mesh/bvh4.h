@@ -83,7 +83,8 @@ struct ScalarLanes {
 
 /// Walks the wide tree calling leaf(firstPack, count, tmax) for each leaf whose box the ray may meet
 /// within [tmin, tmax]; leaf returns the tmax to go on with, or a value below tmin to stop.
-/// Children are entered nearest first; the others wait with their entry distances and are
+/// Children are entered nearest first (shadow rays too: measured no slower than lane order,
+/// with fewer boxes and triangles tested); the others wait with their entry distances and are
 /// skipped once the range has shrunk past them. Entries are conservative, so no box holding a
 /// hit is skipped. BvhStats::nodesVisited counts the boxes tested (the root's and each tested
 /// node's children).
@@ -110,23 +111,28 @@ KERF_BVH_INLINE void walk(const View& v, const Lanes& boxes, const RayReciprocal
             unsigned mask = boxes.test(n, tmin, tmax, t);
             stats.nodesVisited += n.lanes;
             if (mask) {
-                // Sort the hit lanes by entry (insertion sort of at most four), push all but
-                // the nearest, farthest first, and go on with the nearest.
-                Entry hit[4];
-                int h = 0;
-                while (mask) {
+                if ((mask & (mask - 1)) == 0) {  // one child: no order to decide
                     const int k = __builtin_ctz(mask);
-                    mask &= mask - 1;
-                    Entry e{n.index[k], n.count[k], t[k]};
-                    int j = h++;
-                    while (j > 0 && hit[j - 1].tEnter > e.tEnter) {
-                        hit[j] = hit[j - 1];
-                        --j;
+                    cur = {n.index[k], n.count[k], t[k]};
+                } else {
+                    // Sort the hit lanes by entry (insertion sort of at most four), push all
+                    // but the nearest, farthest first, and go on with the nearest.
+                    Entry hit[4];
+                    int h = 0;
+                    while (mask) {
+                        const int k = __builtin_ctz(mask);
+                        mask &= mask - 1;
+                        Entry e{n.index[k], n.count[k], t[k]};
+                        int j = h++;
+                        while (j > 0 && hit[j - 1].tEnter > e.tEnter) {
+                            hit[j] = hit[j - 1];
+                            --j;
+                        }
+                        hit[j] = e;
                     }
-                    hit[j] = e;
+                    for (int j = h - 1; j > 0; --j) stack[top++] = hit[j];
+                    cur = hit[0];
                 }
-                for (int j = h - 1; j > 0; --j) stack[top++] = hit[j];
-                cur = hit[0];
                 // The nearest child is read next: start loading it (a wide node is two
                 // cache lines, a pack five).
                 const char* next = cur.count > 0
