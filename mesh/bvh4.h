@@ -114,6 +114,12 @@ KERF_BVH_INLINE void walk(const View& v, const Lanes& boxes, const RayReciprocal
                 if ((mask & (mask - 1)) == 0) {  // one child: no order to decide
                     const int k = __builtin_ctz(mask);
                     cur = {n.index[k], n.count[k], t[k]};
+                } else if (__builtin_popcount(mask) == 2) {  // the common pair: one compare
+                    const int k0 = __builtin_ctz(mask), k1 = __builtin_ctz(mask & (mask - 1));
+                    const bool firstNear = t[k0] <= t[k1];
+                    const int near = firstNear ? k0 : k1, far = firstNear ? k1 : k0;
+                    stack[top++] = {n.index[far], n.count[far], t[far]};
+                    cur = {n.index[near], n.count[near], t[near]};
                 } else {
                     // Sort the hit lanes by entry (insertion sort of at most four), push all
                     // but the nearest, farthest first, and go on with the nearest.
