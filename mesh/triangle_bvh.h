@@ -20,8 +20,11 @@ namespace kerf {
 
 /// Work counters of the walks; the caller owns one (per thread) and reads it when it likes.
 struct BvhStats {
-    uint64_t nodesVisited = 0;     ///< nodes whose box was tested
-    uint64_t trianglesTested = 0;  ///< ray–triangle tests
+    /// Nodes whose box was tested (the ray walks: the root and every child of each wide node
+    /// entered; nearestTriangle: binary nodes).
+    uint64_t nodesVisited = 0;
+    /// Ray–triangle tests (a triangle split over several leaves may be tested more than once).
+    uint64_t trianglesTested = 0;
 };
 
 /// The nearest crossing: t, the mesh's triangle index, and the weights of its vertices 1 and
@@ -76,8 +79,9 @@ public:
     /// Whether any triangle crosses the ray with t in (tmin, tmax) (stops at the first).
     bool anyHit(const Ray& ray, double tmin, double tmax, BvhStats& stats) const;
     /// Every crossing with t in (tmin, tmax), sorted by t then triangle index (appended to
-    /// out, which is cleared first). A ray through an edge or vertex crosses every triangle
-    /// that shares it, so it may report one surface crossing more than once at the same t.
+    /// out, which is cleared first), each triangle once even where it is split over several
+    /// leaves. A ray through an edge or vertex crosses every triangle that shares it, so it may
+    /// report one surface crossing more than once at the same t.
     void allCrossings(const Ray& ray, double tmin, double tmax,
                       std::vector<TriangleCrossing>& out, BvhStats& stats) const;
 
