@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace kerf {
 
@@ -104,8 +105,12 @@ std::vector<TriangleRef> triangleReferences(const TriangleMesh& mesh, int maxDep
         if (maxDepth > 0 && halfArea(box) > ratio * area(s.triangle))
             s.split(box, s.triangle, 0, uint32_t(i), pieces[i]);
     });
+    size_t total = 0;
+    for (size_t i = 0; i < count; ++i) total += pieces[i].empty() ? 1 : pieces[i].size();
+    // The build indexes references with 32 bits: past that, no splitting.
+    if (total > size_t(UINT32_MAX)) return refs;
     std::vector<TriangleRef> out;
-    out.reserve(count);
+    out.reserve(total);
     for (size_t i = 0; i < count; ++i) {
         if (pieces[i].empty()) out.push_back(refs[i]);
         else out.insert(out.end(), pieces[i].begin(), pieces[i].end());
