@@ -1,13 +1,15 @@
 /// @file mesh/bvh4.h
-/// @brief The 4-wide nodes the triangle BVH's ray walks use: the binary tree collapsed so each
+/// @brief The triangle BVH's ray walks over 4-wide nodes: the binary tree collapsed so each
 /// node holds up to four children's boxes side by side (float, rounded outward like the binary
-/// nodes), tested together, and the walk over them, written once as a template on the box test
-/// so the scalar and the AVX2 paths (mesh/bvh4_avx2.cpp) run the same code around it.
+/// nodes), leaves' triangles packed four at a time, and the walk, written once as a template
+/// on a lane policy (box test and pack test) so the scalar and the AVX2 paths
+/// (mesh/bvh4_avx2.cpp) run the same code around them.
 ///
 /// Both box tests compute, lane for lane, the same IEEE operations as
 /// Bounds3::clipRayConservative (csg/types.h), so they cull the same boxes and give the same
-/// entry distances: the walks visit the same nodes and test the same triangles in the same
-/// order whichever runs (tests/mesh/bvh4_test.cpp).
+/// entry distances; both pack tests give intersectWatertight's decisions. So the walks visit
+/// the same nodes, test the same triangles in the same order and give the same bits whichever
+/// runs (tests/mesh/bvh4_test.cpp).
 #pragma once
 
 #include "mesh/bvh4_node.h"
@@ -48,9 +50,10 @@ struct Entry {
 /// Three siblings wait per level at most (a wide node's nearest child is entered at once).
 constexpr int kStackSize = 3 * TriangleBvh::kMaxDepth + 4;
 
-/// What a lane policy's pack test reports: lanes decided here (hit: inside with t below) and
-/// lanes left to the reference test (exact). For a hit lane, t and the weights' numerators
-/// and denominator are those intersectWatertight computes, bit for bit.
+/// What a lane policy's pack test reports: lanes it decided are crossed somewhere on the line
+/// (hit; the caller still checks t against the range), lanes it could not decide (exact: the
+/// caller runs intersectWatertight), and the rest, which miss. For a hit lane, t and the
+/// weights' numerators and denominator are those intersectWatertight computes, bit for bit.
 struct PackResult {
     unsigned hit = 0, exact = 0;
     double t[4], det[4], v[4], w[4];

@@ -1,12 +1,16 @@
-// The wide tree's walks with the four boxes of a node tested at once on AVX2 lanes in double:
-// the float corners widened exactly to double, then per lane the operations of
-// Bounds3::clipRayConservative in the same order (no FMA: target("avx2") does not enable it
-// and the module builds with -ffp-contract=off), and vmaxpd / vminpd with the operands placed
-// so NaN and equal values resolve as the scalar "if (near > tmin) tmin = near" does. So every
-// lane gives the scalar test's bits. Rays the margins of RayReciprocal do not cover (a range
-// reaching below 0, a subnormal direction) take the scalar test. Only this file's functions
-// carry target("avx2"); the rest of kerf builds for the baseline. The shared headers are read
-// first without it, then the walk templates under it, so they inline the AVX2 box test.
+// The wide tree's walks on AVX2 lanes, in double.
+// - Boxes: a node's four boxes at once: the float corners widened exactly to double, then per
+//   lane the operations of Bounds3::clipRayConservative in the same order, and vmaxpd / vminpd
+//   with the operands placed so NaN and equal values resolve as the scalar
+//   "if (near > tmin) tmin = near" does. Rays the margins of RayReciprocal do not cover (a
+//   range reaching below 0, a subnormal direction) take the scalar test.
+// - Triangles: a pack's four at once, intersectWatertight's operations in its order up to t;
+//   a lane whose three edge values all pass its filter (clearly away from 0) is decided here
+//   with the same bits, any other lane goes to intersectWatertight itself.
+// No FMA anywhere: target("avx2") does not enable it and the module builds with
+// -ffp-contract=off. Only this file's code carries target("avx2"); the rest of kerf builds for
+// the baseline. The shared headers are read first without it, then the walk templates under
+// it (all always_inline), so the walks inline the AVX2 tests.
 #include "csg/types.h"
 #include "mesh/triangle_bvh.h"
 #include "mesh/watertight_triangle.h"
