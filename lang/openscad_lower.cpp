@@ -203,7 +203,13 @@ NodePtr ScadLowering::lowerMultmatrix(const ScadCall& c) {
         return nullptr;
     }
     NodePtr child = lowerBoolean("union", c.children);
-    return child ? makeTransform(child, map) : nullptr;
+    if (!child) return nullptr;
+    NodePtr placed = makeTransform(child, map);
+    if (child->bounds().finite() && !placed->bounds().finite()) {
+        error(a ? a->value.pos : c.pos, "multmatrix moves its children beyond the range of doubles (their extent overflows)");
+        return nullptr;
+    }
+    return placed;
 }
 
 NodePtr ScadLowering::lowerColor(const ScadCall& c) {
@@ -416,6 +422,10 @@ std::optional<Scene> compileOpenScadString(const std::string& text, const std::s
         return scene;
     }
     NodePtr turned = makeTransform(root, kerfFromOpenScad());
+    if (!turned->bounds().finite()) {  // only sizes near the largest double get here
+        sink.error(SourceLoc{source.name, 1, 1}, "the model's extent overflows the range of doubles");
+        return std::nullopt;
+    }
     frameScene(scene, turned->bounds());
     scene.objects.push_back(turned);
     return scene;

@@ -1,13 +1,15 @@
 // polyhedron(points, faces) as a closed mesh solid. OpenSCAD lists each face's vertices
 // clockwise seen from outside; kerf's triangles are counter-clockwise (mesh/mesh_shape.h), so
 // faces are reversed, and the signed volume checks the result (a file written the other way
-// round is taken as it is). Faces are split into fans, which is exact for convex faces; a
-// face that is not convex is an error naming it, since a fan of it could fold over itself.
+// round is taken as it is). Convex faces are split into fans; a face that is not convex is
+// cut into ears (a fan of it could fold over itself) in the plane it is most nearly parallel
+// to, and one that has no ear (it crosses itself) is an error naming it.
 #include "lang/openscad_lower.h"
 
 #include "mesh/mesh_shape.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace kerf {
@@ -26,9 +28,9 @@ bool readPoints(const ScadValue& v, std::vector<Vec3>& out) {
     return true;
 }
 
-/// Whether the polygon turns one way only about its (Newell) normal: then a fan from its
-/// first vertex covers it exactly.
-bool isConvex(const std::vector<Vec3>& poly) {
+/// The polygon's Newell normal: its direction is the side the polygon turns counter-clockwise
+/// about, its length twice the area (of a planar polygon).
+Vec3 newellNormal(const std::vector<Vec3>& poly) {
     Vec3 normal(0.0);
     const size_t n = poly.size();
     for (size_t i = 0; i < n; ++i) {
@@ -36,11 +38,61 @@ bool isConvex(const std::vector<Vec3>& poly) {
         const Vec3& b = poly[(i + 1) % n];
         normal += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
     }
+    return normal;
+}
+
+/// Whether the polygon turns one way only about its normal: then a fan from its first vertex
+/// covers it exactly.
+bool isConvex(const std::vector<Vec3>& poly, const Vec3& normal) {
+    if (glm::dot(normal, normal) == 0) return false;  // no area: let earClip refuse it
+    const size_t n = poly.size();
     for (size_t i = 0; i < n; ++i) {
         const Vec3 e0 = poly[(i + 1) % n] - poly[i];
         const Vec3 e1 = poly[(i + 2) % n] - poly[(i + 1) % n];
         if (glm::dot(glm::cross(e0, e1), normal) < 0) return false;
     }
+    return true;
+}
+
+/// Ear clipping of a simple polygon (positions `poly`, mesh indices `idx`), seen in the
+/// coordinate plane its normal is nearest to, oriented so it runs counter-clockwise there.
+/// Appends the triangles in the polygon's own orientation; false if some step finds no ear
+/// (the polygon crosses itself or is not planar enough to be seen as simple).
+bool earClip(const std::vector<Vec3>& poly, const std::vector<uint32_t>& idx, const Vec3& normal,
+             std::vector<std::array<uint32_t, 3>>& out) {
+    int drop = 0;
+    for (int a = 1; a < 3; ++a)
+        if (std::abs(normal[a]) > std::abs(normal[drop])) drop = a;
+    const int u = (drop + 1) % 3, v = (drop + 2) % 3;  // (u, v, drop) is right-handed
+    const double sign = normal[drop] < 0 ? -1.0 : 1.0;
+    std::vector<glm::dvec2> p;
+    for (const Vec3& q : poly) p.emplace_back(q[u], sign * q[v]);
+    auto cross = [&](size_t a, size_t b, size_t c) {
+        return (p[b].x - p[a].x) * (p[c].y - p[a].y) - (p[b].y - p[a].y) * (p[c].x - p[a].x);
+    };
+    std::vector<size_t> ring(poly.size());
+    for (size_t i = 0; i < ring.size(); ++i) ring[i] = i;
+    while (ring.size() > 3) {
+        bool clipped = false;
+        for (size_t k = 0; k < ring.size() && !clipped; ++k) {
+            const size_t a = ring[(k + ring.size() - 1) % ring.size()], b = ring[k], c = ring[(k + 1) % ring.size()];
+            if (cross(a, b, c) <= 0) continue;  // a reflex or flat corner is no ear
+            bool empty = true;
+            for (size_t j : ring) {
+                if (j == a || j == b || j == c) continue;
+                if (cross(a, b, j) >= 0 && cross(b, c, j) >= 0 && cross(c, a, j) >= 0) {
+                    empty = false;
+                    break;
+                }
+            }
+            if (!empty) continue;
+            out.push_back({idx[a], idx[b], idx[c]});
+            ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(k));
+            clipped = true;
+        }
+        if (!clipped) return false;
+    }
+    out.push_back({idx[ring[0]], idx[ring[1]], idx[ring[2]]});
     return true;
 }
 
@@ -83,12 +135,14 @@ NodePtr lowerScadPolyhedron(const ScadCall& c, ScadLowering& lowering) {
         std::reverse(idx.begin(), idx.end());  // clockwise from outside → counter-clockwise
         std::vector<Vec3> poly;
         for (uint32_t i : idx) poly.push_back(mesh.positions[i]);
-        if (!isConvex(poly)) {
-            lowering.error(face.pos, "polyhedron face " + std::to_string(f) + " is not convex",
-                           "kerf splits faces into fans; split this face into convex ones");
+        const Vec3 normal = newellNormal(poly);
+        if (isConvex(poly, normal)) {
+            for (size_t i = 1; i + 1 < idx.size(); ++i) mesh.triangles.push_back({idx[0], idx[i], idx[i + 1]});
+        } else if (!earClip(poly, idx, normal, mesh.triangles)) {
+            lowering.error(face.pos, "polyhedron face " + std::to_string(f) + " crosses itself",
+                           "a face must be a simple polygon; split it into simple ones");
             return nullptr;
         }
-        for (size_t i = 1; i + 1 < idx.size(); ++i) mesh.triangles.push_back({idx[0], idx[i], idx[i + 1]});
     }
     // Signed volume (divergence theorem, ×6): negative when the file's faces ran the other way.
     double volume = 0.0;

@@ -104,6 +104,10 @@ TEST_CASE("openscad/multmatrix places its children") {
             readCsg("multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]]) cube(size = 1);\n");
         REQUIRE_FALSE(projective.scene.has_value());
         CHECK_THAT(projective.sink.diagnostics()[0].message, Catch::Contains("projective"));
+        const Read overflow = readCsg("multmatrix([[1e300, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])\n"
+                                      "  cube(size = [1e300, 1, 1]);\n");
+        REQUIRE_FALSE(overflow.scene.has_value());
+        CHECK_THAT(overflow.sink.diagnostics()[0].message, Catch::Contains("overflows"));
     }
 }
 
@@ -177,11 +181,27 @@ TEST_CASE("openscad/polyhedron cube is a solid") {
         CHECK(r.sink.diagnostics()[0].loc.col == 3);
         CHECK_THAT(r.sink.diagnostics()[0].message, Catch::Contains("not a closed solid"));
     }
-    SECTION("a face that is not convex is an error at the face") {
-        const Read r = readCsg("polyhedron(points = [[0, 0, 0], [4, 0, 0], [1, 1, 0], [0, 4, 0], [1, 1, 3]], "
+    SECTION("faces that are not convex are cut into ears") {
+        // An L-shaped prism: the L (0, 0) (2, 0) (2, 1) (1, 1) (1, 2) (0, 2) from z = 0 to 1;
+        // its bottom and top are six-sided and not convex.
+        const Read r = readCsg(
+            "polyhedron(points = [[0, 0, 0], [2, 0, 0], [2, 1, 0], [1, 1, 0], [1, 2, 0], [0, 2, 0],\n"
+            "  [0, 0, 1], [2, 0, 1], [2, 1, 1], [1, 1, 1], [1, 2, 1], [0, 2, 1]],\n"
+            "  faces = [[0, 1, 2, 3, 4, 5], [11, 10, 9, 8, 7, 6], [0, 6, 7, 1], [1, 7, 8, 2], [2, 8, 9, 3],\n"
+            "  [3, 9, 10, 4], [4, 10, 11, 5], [5, 11, 6, 0]]);\n");
+        INFO(r.sink.format());
+        // Along x at OpenSCAD y = 0.5 (the foot, x to 2) and y = 1.5 (the upright, x to 1).
+        requireEnds(spansOf(r, {-10, 0.5, -0.5}, {1, 0, 0}), {10, 12});
+        requireEnds(spansOf(r, {-10, 0.5, -1.5}, {1, 0, 0}), {10, 11});
+        // Down through the notch (1.5, 1.5): nothing; through (0.5, 1.5): z from 0 to 1.
+        CHECK(spansOf(r, {1.5, 10, -1.5}, {0, -1, 0}).size() == 0);
+        requireEnds(spansOf(r, {0.5, 10, -1.5}, {0, -1, 0}), {9, 10});
+    }
+    SECTION("a face that crosses itself is an error at the face") {
+        const Read r = readCsg("polyhedron(points = [[0, 0, 0], [2, 0, 0], [0, 2, 0], [2, 2, 0], [1, 1, 3]], "
                                "faces = [[0, 1, 2, 3], [0, 4, 1], [1, 4, 2], [2, 4, 3], [3, 4, 0]]);\n");
         REQUIRE_FALSE(r.scene.has_value());
-        CHECK_THAT(r.sink.diagnostics()[0].message, Catch::Contains("face 0 is not convex"));
+        CHECK_THAT(r.sink.diagnostics()[0].message, Catch::Contains("face 0 crosses itself"));
         CHECK(r.sink.diagnostics()[0].loc.col == 87);
     }
 }
