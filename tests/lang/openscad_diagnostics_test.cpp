@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 
@@ -150,4 +151,28 @@ TEST_CASE("openscad/OpenSCAD's examples that use only the nodes read load") {
         ++files;
     }
     CHECK(files == static_cast<int>(expected.size()));
+}
+
+TEST_CASE("openscad/every truncation of a file is read or refused with located errors") {
+    const std::string text = "group() {\n\tdifference() {\n\t\tcube(size = [30, 30, 30], center = true);\n"
+                             "\t\tsphere($fn = 0, $fa = 12, $fs = 2, r = 20);\n\t}\n}\n";
+    for (size_t n = 0; n <= text.size(); ++n) {
+        const std::string prefix = text.substr(0, n);
+        INFO("first " << n << " bytes");
+        DiagnosticSink sink;
+        const std::optional<Scene> scene = compileOpenScadString(prefix, "cut.csg", sink);
+        // A prefix that ends between statements is a whole (maybe empty) model; any other
+        // is refused, each error inside the text (one past its end at most).
+        if (scene) {
+            CHECK_FALSE(sink.hasErrors());
+            continue;
+        }
+        REQUIRE(sink.hasErrors());
+        const int lines = static_cast<int>(std::count(prefix.begin(), prefix.end(), '\n')) + 1;
+        for (const Diagnostic& d : sink.diagnostics()) {
+            CHECK(d.loc.line >= 1);
+            CHECK(d.loc.line <= lines);
+            CHECK(d.loc.col >= 1);
+        }
+    }
 }
