@@ -383,7 +383,7 @@ void frameScene(Scene& scene, const Bounds3& box) {
     scene.camera.up = Vec3(0, 1, 0);
     Light key;
     key.kind = Light::Kind::Directional;
-    key.direction = -glm::normalize(view + Vec3(-0.4, 0.8, 0.0));
+    key.direction = -glm::normalize(view + Vec3(-0.9, 1.1, 0.0));
     key.color = Vec3(0.9);
     Light fill = key;
     fill.direction = -glm::normalize(view + Vec3(0.6, -0.2, 0.0));
