@@ -352,10 +352,23 @@ NodePtr ScadLowering::lower(const ScadCall& c) {
     return lowerBoolean(c.name, c.children);
 }
 
+namespace {
+
+/// The first call marked '!' (root) in the tree, depth first, or null.
+const ScadCall* findRoot(const std::vector<ScadCall>& calls) {
+    for (const ScadCall& c : calls) {
+        if (c.modifier == '!') return &c;
+        if (c.modifier == '%' || c.modifier == '*') continue;
+        if (const ScadCall* inner = findRoot(c.children)) return inner;
+    }
+    return nullptr;
+}
+
+}  // namespace
+
 NodePtr ScadLowering::lowerAll(const std::vector<ScadCall>& calls) {
-    // '!' (root) keeps only that subtree, as OpenSCAD does.
-    for (const ScadCall& c : calls)
-        if (c.modifier == '!') return lower(c);
+    // '!' (root) keeps only that subtree, wherever it is, as OpenSCAD does.
+    if (const ScadCall* root = findRoot(calls)) return lower(*root);
     return lowerBoolean("union", calls);
 }
 

@@ -108,6 +108,13 @@ TEST_CASE("openscad/modifiers: % and * are left out, # and ! are kept") {
     const Read root = readCsg("sphere(r = 5);\n!cube(size = 1);\n");
     REQUIRE(root.scene.has_value());
     CHECK(root.scene->objects.at(0)->bounds().hi.x <= 1 + 1e-12);
+    const Read nested = readCsg("difference() {\n  sphere(r = 5);\n  multmatrix([[1, 0, 0, 7], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])\n"
+                                "    !cube(size = 1);\n}\n");
+    REQUIRE(nested.scene.has_value());
+    // The cube alone at the origin: the multmatrix above the root is dropped too, as OpenSCAD
+    // 2021.01 does (it exports such a file as the bare cube).
+    CHECK(nested.scene->objects.at(0)->bounds().lo.x >= -1e-12);
+    CHECK(nested.scene->objects.at(0)->bounds().hi.x <= 1 + 1e-12);
 }
 
 TEST_CASE("openscad/OpenSCAD's examples that use only the nodes read load") {
