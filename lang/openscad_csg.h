@@ -8,13 +8,13 @@
 /// rotation, (x, y, z) ↦ (x, z, −y), documented in docs/openscad.md.
 #pragma once
 
-#include "lang/diagnostic.h"
-#include "scene/scene.h"
-
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "lang/diagnostic.h"
+#include "scene/scene.h"
 
 namespace kerf {
 
@@ -32,7 +32,7 @@ struct ScadValue {
 struct ScadArg {
     std::string name;  ///< empty for a positional argument
     ScadValue value;
-    SourcePos pos;     ///< where the argument starts (its name, or its value)
+    SourcePos pos;  ///< where the argument starts (its name, or its value)
 };
 
 /// One module instantiation: `name(args) { children }` or `name(args);`.
@@ -51,7 +51,8 @@ struct ScadCall {
 
 /// Parses a .csg text into its top-level calls; syntax errors go to `sink` (parsing goes on
 /// at the next statement so several are reported). `file` is the sink's index of the text.
-std::vector<ScadCall> parseOpenScadCsg(const std::string& text, uint32_t file, DiagnosticSink& sink);
+std::vector<ScadCall> parseOpenScadCsg(const std::string& text, uint32_t file,
+                                       DiagnosticSink& sink);
 
 /// Reads, parses and lowers a .csg file. On any error returns nullopt with every error found
 /// reported to `sink`; notes and warnings are reported either way.

@@ -4,13 +4,13 @@
 // nothing, a cube of size 0) are null, as OpenSCAD drops them from its Booleans.
 #include "lang/openscad_lower.h"
 
-#include "csg/affine_check.h"
-#include "csg/solids.h"
-#include "lang/source.h"
-
 #include <algorithm>
 #include <cmath>
 #include <set>
+
+#include "csg/affine_check.h"
+#include "csg/solids.h"
+#include "lang/source.h"
 
 namespace kerf {
 
@@ -18,11 +18,16 @@ namespace {
 
 const char* kindName(ScadValue::Kind k) {
     switch (k) {
-        case ScadValue::Kind::Undef: return "undef";
-        case ScadValue::Kind::Bool: return "a boolean";
-        case ScadValue::Kind::Number: return "a number";
-        case ScadValue::Kind::String: return "a string";
-        case ScadValue::Kind::Vector: return "a vector";
+        case ScadValue::Kind::Undef:
+            return "undef";
+        case ScadValue::Kind::Bool:
+            return "a boolean";
+        case ScadValue::Kind::Number:
+            return "a number";
+        case ScadValue::Kind::String:
+            return "a string";
+        case ScadValue::Kind::Vector:
+            return "a vector";
     }
     return "?";
 }
@@ -65,7 +70,8 @@ bool ScadLowering::number(const ScadCall& c, const std::string& name, int positi
     const ScadArg* a = c.arg(name, position);
     if (!a || a->value.kind == ScadValue::Kind::Undef) return true;
     if (a->value.kind != ScadValue::Kind::Number) {
-        error(a->value.pos, c.name + " " + name + " must be a number, got " + kindName(a->value.kind));
+        error(a->value.pos,
+              c.name + " " + name + " must be a number, got " + kindName(a->value.kind));
         return false;
     }
     if (!std::isfinite(a->value.number)) {
@@ -80,7 +86,8 @@ bool ScadLowering::flag(const ScadCall& c, const std::string& name, int position
     const ScadArg* a = c.arg(name, position);
     if (!a || a->value.kind == ScadValue::Kind::Undef) return true;
     if (a->value.kind != ScadValue::Kind::Bool) {
-        error(a->value.pos, c.name + " " + name + " must be true or false, got " + kindName(a->value.kind));
+        error(a->value.pos,
+              c.name + " " + name + " must be true or false, got " + kindName(a->value.kind));
         return false;
     }
     out = a->value.boolean;
@@ -127,12 +134,14 @@ void ScadLowering::reportFacets() {
     Diagnostic d;
     d.loc = mSink.locate(mFirstCurve);
     d.severity = Severity::Note;
-    const std::string facets = mFewestFacets == mMostFacets
-                                   ? std::to_string(mFewestFacets)
-                                   : std::to_string(mFewestFacets) + " to " + std::to_string(mMostFacets);
-    d.message = "$fn, $fa and $fs are ignored: kerf traces circles, spheres and cylinders exactly (" +
-                std::to_string(mCurves) + " here), where OpenSCAD would have used " + facets +
-                " facets around each";
+    const std::string facets =
+        mFewestFacets == mMostFacets
+            ? std::to_string(mFewestFacets)
+            : std::to_string(mFewestFacets) + " to " + std::to_string(mMostFacets);
+    d.message =
+        "$fn, $fa and $fs are ignored: kerf traces circles, spheres and cylinders exactly (" +
+        std::to_string(mCurves) + " here), where OpenSCAD would have used " + facets +
+        " facets around each";
     mSink.report(std::move(d));
 }
 
@@ -156,11 +165,13 @@ NodePtr ScadLowering::lowerBoolean(const std::string& op, const std::vector<Scad
         std::vector<NodePtr> operands{children.front()};
         for (size_t i = 1; i < children.size(); ++i)
             if (children[i]) operands.push_back(children[i]);
-        return operands.size() == 1 ? operands.front() : makeBoolean(BoolOp::Difference, std::move(operands));
+        return operands.size() == 1 ? operands.front()
+                                    : makeBoolean(BoolOp::Difference, std::move(operands));
     }
     if (op == "intersection") {
         if (present.empty() || present.size() < children.size()) return nullptr;
-        return present.size() == 1 ? present.front() : makeBoolean(BoolOp::Intersection, std::move(present));
+        return present.size() == 1 ? present.front()
+                                   : makeBoolean(BoolOp::Intersection, std::move(present));
     }
     // group, union, render: the union of what is there.
     if (present.empty()) return nullptr;
@@ -177,7 +188,8 @@ NodePtr ScadLowering::lowerMultmatrix(const ScadCall& c) {
             const ScadValue& row = v.items[i];
             ok = row.kind == ScadValue::Kind::Vector && row.items.size() == 4;
             for (size_t j = 0; ok && j < 4; ++j) {
-                ok = row.items[j].kind == ScadValue::Kind::Number && std::isfinite(row.items[j].number);
+                ok = row.items[j].kind == ScadValue::Kind::Number &&
+                     std::isfinite(row.items[j].number);
                 if (ok) m[i][j] = row.items[j].number;
             }
         }
@@ -197,8 +209,9 @@ NodePtr ScadLowering::lowerMultmatrix(const ScadCall& c) {
     const AffineStatus status = checkAffine(map);
     if (status != AffineStatus::Ok) {
         error(a ? a->value.pos : c.pos,
-              status == AffineStatus::Singular ? "multmatrix flattens space (its matrix is singular)"
-                                               : "multmatrix cannot be inverted in double precision",
+              status == AffineStatus::Singular
+                  ? "multmatrix flattens space (its matrix is singular)"
+                  : "multmatrix cannot be inverted in double precision",
               "a scale of 0 along an axis makes a flat solid, which kerf cannot trace");
         return nullptr;
     }
@@ -206,7 +219,8 @@ NodePtr ScadLowering::lowerMultmatrix(const ScadCall& c) {
     if (!child) return nullptr;
     NodePtr placed = makeTransform(child, map);
     if (child->bounds().finite() && !placed->bounds().finite()) {
-        error(a ? a->value.pos : c.pos, "multmatrix moves its children beyond the range of doubles (their extent overflows)");
+        error(a ? a->value.pos : c.pos,
+              "multmatrix moves its children beyond the range of doubles (their extent overflows)");
         return nullptr;
     }
     return placed;
@@ -221,8 +235,10 @@ NodePtr ScadLowering::lowerColor(const ScadCall& c) {
     for (size_t i = 0; ok && i < v.items.size(); ++i)
         ok = v.items[i].kind == ScadValue::Kind::Number && std::isfinite(v.items[i].number);
     if (!ok) {
-        error(v.pos, std::string("color c must be a vector [r, g, b] or [r, g, b, a] of numbers, got ") +
-                         (v.kind == ScadValue::Kind::String ? "the name \"" + v.text + "\"" : kindName(v.kind)),
+        error(v.pos,
+              std::string("color c must be a vector [r, g, b] or [r, g, b, a] of numbers, got ") +
+                  (v.kind == ScadValue::Kind::String ? "the name \"" + v.text + "\""
+                                                     : kindName(v.kind)),
               "OpenSCAD exports named colours as vectors; export the .csg again");
         return nullptr;
     }
@@ -302,9 +318,9 @@ NodePtr ScadLowering::lowerCylinder(const ScadCall& c) {
 }
 
 bool ScadLowering::reportIfUnsupported(const ScadCall& c) {
-    static const std::set<std::string> known = {"group", "union", "render", "difference", "intersection",
-                                                "multmatrix", "color", "cube", "sphere", "cylinder",
-                                                "polyhedron"};
+    static const std::set<std::string> known = {
+        "group", "union", "render", "difference", "intersection", "multmatrix",
+        "color", "cube",  "sphere", "cylinder",   "polyhedron"};
     if (known.count(c.name) || isScadProfileNode(c.name)) return false;
     const auto& reasons = unsupportedReasons();
     auto it = reasons.find(c.name);
@@ -412,7 +428,8 @@ std::optional<Scene> compileOpenScadString(const std::string& text, const std::s
                                            DiagnosticSink& sink) {
     const int errorsBefore = sink.errorCount();
     const size_t diagnosticsBefore = sink.diagnostics().size();
-    SourceText source{std::make_shared<const std::string>(name), std::make_shared<const std::string>(text)};
+    SourceText source{std::make_shared<const std::string>(name),
+                      std::make_shared<const std::string>(text)};
     const uint32_t file = sink.sourceIndex(source.name, source.text);
     if (!checkSourceText(source, sink)) return std::nullopt;
     const std::vector<ScadCall> calls = parseOpenScadCsg(*source.text, file, sink);
@@ -436,7 +453,8 @@ std::optional<Scene> compileOpenScadString(const std::string& text, const std::s
     }
     NodePtr turned = makeTransform(root, kerfFromOpenScad());
     if (!turned->bounds().finite()) {  // only sizes near the largest double get here
-        sink.error(SourceLoc{source.name, 1, 1}, "the model's extent overflows the range of doubles");
+        sink.error(SourceLoc{source.name, 1, 1},
+                   "the model's extent overflows the range of doubles");
         return std::nullopt;
     }
     frameScene(scene, turned->bounds());
@@ -448,7 +466,8 @@ std::optional<Scene> compileOpenScadFile(const std::string& path, DiagnosticSink
     std::string why;
     auto bytes = readFileBytes(path, why);
     if (!bytes) {
-        sink.error(SourceLoc{std::make_shared<const std::string>(path), 0, 0}, "cannot read '" + path + "': " + why);
+        sink.error(SourceLoc{std::make_shared<const std::string>(path), 0, 0},
+                   "cannot read '" + path + "': " + why);
         return std::nullopt;
     }
     return compileOpenScadString(*bytes, path, sink);
@@ -457,7 +476,8 @@ std::optional<Scene> compileOpenScadFile(const std::string& path, DiagnosticSink
 bool isOpenScadCsgPath(const std::string& path) {
     if (path.size() < 4) return false;
     std::string ext = path.substr(path.size() - 4);
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char ch) { return std::tolower(ch); });
     return ext == ".csg";
 }
 

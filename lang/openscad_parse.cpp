@@ -1,13 +1,12 @@
 // The .csg reader's tokenizer and parser: module instantiations with named or positional
 // literal arguments, nested blocks, OpenSCAD's modifier characters and comments. Nothing is
 // evaluated: a .csg file holds no expressions beyond a sign before a number.
-#include "lang/openscad_csg.h"
-
-#include "scene/limits.h"
-
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+
+#include "lang/openscad_csg.h"
+#include "scene/limits.h"
 
 namespace kerf {
 
@@ -62,7 +61,8 @@ private:
     /// Skips to just after the next ';' or '}' at any depth, so the next statement parses.
     void recover() {
         while (mTok.kind != Token::Kind::End) {
-            const bool stop = mTok.kind == Token::Kind::Punct && (mTok.text == ";" || mTok.text == "}");
+            const bool stop =
+                mTok.kind == Token::Kind::Punct && (mTok.text == ";" || mTok.text == "}");
             advance();
             if (stop) return;
         }
@@ -75,18 +75,25 @@ private:
             advance();
             return true;
         }
-        error(mTok.offset, std::string("expected '") + p + "' " + where + ", found " + describe(mTok));
+        error(mTok.offset,
+              std::string("expected '") + p + "' " + where + ", found " + describe(mTok));
         return false;
     }
 
     static std::string describe(const Token& t) {
         switch (t.kind) {
-            case Token::Kind::End: return "the end of the file";
-            case Token::Kind::Name: return "'" + t.text + "'";
-            case Token::Kind::Number: return "a number";
-            case Token::Kind::String: return "a string";
-            case Token::Kind::Punct: return "'" + t.text + "'";
-            case Token::Kind::Bad: return "'" + t.text + "'";
+            case Token::Kind::End:
+                return "the end of the file";
+            case Token::Kind::Name:
+                return "'" + t.text + "'";
+            case Token::Kind::Number:
+                return "a number";
+            case Token::Kind::String:
+                return "a string";
+            case Token::Kind::Punct:
+                return "'" + t.text + "'";
+            case Token::Kind::Bad:
+                return "'" + t.text + "'";
         }
         return "?";
     }
@@ -99,7 +106,8 @@ private:
             return true;
         }
         if (depth > kMaxCsgDepth) {
-            error(mTok.offset, "modules nested too deeply (more than " + std::to_string(kMaxCsgDepth) + " levels)");
+            error(mTok.offset, "modules nested too deeply (more than " +
+                                   std::to_string(kMaxCsgDepth) + " levels)");
             return false;
         }
         if (mTok.kind == Token::Kind::Punct && mTok.text.size() == 1 &&
@@ -158,8 +166,8 @@ private:
                 continue;
             }
             if (!isPunct(")")) {
-                error(mTok.offset, "expected ',' or ')' in the arguments of '" + call.name + "', found " +
-                                       describe(mTok));
+                error(mTok.offset, "expected ',' or ')' in the arguments of '" + call.name +
+                                       "', found " + describe(mTok));
                 return false;
             }
         }
@@ -170,7 +178,8 @@ private:
     bool value(ScadValue& v, int depth) {
         v.pos = at(mTok.offset);
         if (depth > kMaxNesting) {
-            error(mTok.offset, "vectors nested too deeply (more than " + std::to_string(kMaxNesting) + " levels)");
+            error(mTok.offset, "vectors nested too deeply (more than " +
+                                   std::to_string(kMaxNesting) + " levels)");
             return false;
         }
         if (isPunct("-") || isPunct("+")) {
@@ -213,7 +222,8 @@ private:
                 }
                 advance();
                 return true;
-            default: break;
+            default:
+                break;
         }
         if (isPunct("[")) {
             v.kind = ScadValue::Kind::Vector;
@@ -263,7 +273,8 @@ private:
             } else if (mText.compare(mPos, 2, "/*") == 0) {
                 const size_t end = mText.find("*/", mPos + 2);
                 if (end == std::string::npos) {
-                    error(static_cast<uint32_t>(mPos), "comment is not closed", "add the missing */");
+                    error(static_cast<uint32_t>(mPos), "comment is not closed",
+                          "add the missing */");
                     mPos = mText.size();
                 } else {
                     mPos = end + 2;
@@ -280,14 +291,17 @@ private:
         mTok.offset = static_cast<uint32_t>(mPos);
         if (mPos >= mText.size()) return;
         const char c = mText[mPos];
-        auto isNameChar = [](char ch) { return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_'; };
+        auto isNameChar = [](char ch) {
+            return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+        };
         if (std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == '$') {
             const size_t start = mPos++;
             while (mPos < mText.size() && isNameChar(mText[mPos])) ++mPos;
             mTok.kind = Token::Kind::Name;
             mTok.text = mText.substr(start, mPos - start);
         } else if (std::isdigit(static_cast<unsigned char>(c)) ||
-                   (c == '.' && mPos + 1 < mText.size() && std::isdigit(static_cast<unsigned char>(mText[mPos + 1])))) {
+                   (c == '.' && mPos + 1 < mText.size() &&
+                    std::isdigit(static_cast<unsigned char>(mText[mPos + 1])))) {
             number();
         } else if (c == '"') {
             string();
@@ -306,7 +320,8 @@ private:
     void number() {
         const size_t start = mPos;
         auto digits = [&] {
-            while (mPos < mText.size() && std::isdigit(static_cast<unsigned char>(mText[mPos]))) ++mPos;
+            while (mPos < mText.size() && std::isdigit(static_cast<unsigned char>(mText[mPos])))
+                ++mPos;
         };
         digits();
         if (mPos < mText.size() && mText[mPos] == '.') {
@@ -360,7 +375,8 @@ private:
 
 }  // namespace
 
-std::vector<ScadCall> parseOpenScadCsg(const std::string& text, uint32_t file, DiagnosticSink& sink) {
+std::vector<ScadCall> parseOpenScadCsg(const std::string& text, uint32_t file,
+                                       DiagnosticSink& sink) {
     return Parser(text, file, sink).program();
 }
 

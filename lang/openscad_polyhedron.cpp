@@ -4,13 +4,12 @@
 // round is taken as it is). Convex faces are split into fans; a face that is not convex is
 // cut into ears (a fan of it could fold over itself) in the plane it is most nearly parallel
 // to, and one that has no ear (it crosses itself) is an error naming it.
-#include "lang/openscad_lower.h"
-
-#include "mesh/mesh_shape.h"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
+
+#include "lang/openscad_lower.h"
+#include "mesh/mesh_shape.h"
 
 namespace kerf {
 
@@ -36,7 +35,8 @@ Vec3 newellNormal(const std::vector<Vec3>& poly) {
     for (size_t i = 0; i < n; ++i) {
         const Vec3& a = poly[i];
         const Vec3& b = poly[(i + 1) % n];
-        normal += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+        normal +=
+            Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
     }
     return normal;
 }
@@ -75,7 +75,8 @@ bool earClip(const std::vector<Vec3>& poly, const std::vector<uint32_t>& idx, co
     while (ring.size() > 3) {
         bool clipped = false;
         for (size_t k = 0; k < ring.size() && !clipped; ++k) {
-            const size_t a = ring[(k + ring.size() - 1) % ring.size()], b = ring[k], c = ring[(k + 1) % ring.size()];
+            const size_t a = ring[(k + ring.size() - 1) % ring.size()], b = ring[k],
+                         c = ring[(k + 1) % ring.size()];
             if (cross(a, b, c) <= 0) continue;  // a reflex or flat corner is no ear
             bool empty = true;
             for (size_t j : ring) {
@@ -108,7 +109,8 @@ NodePtr lowerScadPolyhedron(const ScadCall& c, ScadLowering& lowering) {
     }
     TriangleMesh mesh;
     if (!readPoints(pointsArg->value, mesh.positions)) {
-        lowering.error(pointsArg->value.pos, "polyhedron points must be a vector of [x, y, z] finite numbers");
+        lowering.error(pointsArg->value.pos,
+                       "polyhedron points must be a vector of [x, y, z] finite numbers");
         return nullptr;
     }
     const ScadValue& faces = facesArg->value;
@@ -137,7 +139,8 @@ NodePtr lowerScadPolyhedron(const ScadCall& c, ScadLowering& lowering) {
         for (uint32_t i : idx) poly.push_back(mesh.positions[i]);
         const Vec3 normal = newellNormal(poly);
         if (isConvex(poly, normal)) {
-            for (size_t i = 1; i + 1 < idx.size(); ++i) mesh.triangles.push_back({idx[0], idx[i], idx[i + 1]});
+            for (size_t i = 1; i + 1 < idx.size(); ++i)
+                mesh.triangles.push_back({idx[0], idx[i], idx[i + 1]});
         } else if (!earClip(poly, idx, normal, mesh.triangles)) {
             lowering.error(face.pos, "polyhedron face " + std::to_string(f) + " crosses itself",
                            "a face must be a simple polygon; split it into simple ones");
@@ -147,7 +150,8 @@ NodePtr lowerScadPolyhedron(const ScadCall& c, ScadLowering& lowering) {
     // Signed volume (divergence theorem, ×6): negative when the file's faces ran the other way.
     double volume = 0.0;
     for (const auto& t : mesh.triangles)
-        volume += glm::dot(mesh.positions[t[0]], glm::cross(mesh.positions[t[1]], mesh.positions[t[2]]));
+        volume +=
+            glm::dot(mesh.positions[t[0]], glm::cross(mesh.positions[t[1]], mesh.positions[t[2]]));
     if (volume < 0)
         for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
     const SourceLoc loc = lowering.locate(c.pos);
@@ -155,9 +159,10 @@ NodePtr lowerScadPolyhedron(const ScadCall& c, ScadLowering& lowering) {
     auto shape = std::make_shared<const MeshShape>(std::move(mesh));
     if (!shape->isSolid()) {
         const MeshReport& report = shape->report();
-        lowering.error(c.pos, "polyhedron is not a closed solid: " +
-                                  (report.firstBadEdge ? describeBadEdge(*report.firstBadEdge)
-                                                       : std::string("it has no triangle")),
+        lowering.error(c.pos,
+                       "polyhedron is not a closed solid: " +
+                           (report.firstBadEdge ? describeBadEdge(*report.firstBadEdge)
+                                                : std::string("it has no triangle")),
                        "every edge must be shared by exactly two faces that run it opposite ways");
         return nullptr;
     }

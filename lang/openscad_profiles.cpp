@@ -12,8 +12,9 @@ bool isScadProfileNode(const std::string& name) {
 }
 
 NodePtr lowerScadProfileNode(const ScadCall& c, ScadLowering& lowering) {
-    lowering.unsupported(c, c.name + " is not supported yet: 2-D profiles and extrusions are not read "
-                            "from .csg files yet");
+    lowering.unsupported(c, c.name +
+                                " is not supported yet: 2-D profiles and extrusions are not read "
+                                "from .csg files yet");
     // Nodes under it that no part of the reader reads are listed in the same run (the 2-D
     // nodes under an extrusion are not: they go with it).
     lowering.reportUnsupportedWithin(c.children);

@@ -1,13 +1,12 @@
 // The .csg reader's errors: syntax errors and nodes it cannot read, each at its line and
 // column, all of them in one run; and OpenSCAD's example files, which load when they use only
 // the nodes read (tests/data/openscad/ holds those, exported by OpenSCAD 2021.01).
-#include "lang/openscad_csg.h"
-
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <filesystem>
 #include <map>
+
+#include "lang/openscad_csg.h"
 
 using namespace kerf;
 
@@ -73,7 +72,8 @@ TEST_CASE("openscad/every unsupported node is listed with its line and column") 
 }
 
 TEST_CASE("openscad/2-D nodes are not read yet") {
-    const Read r = readCsg("circle(r = 1);\nsquare(size = [1, 2]);\npolygon(points = [[0, 0], [1, 0], [0, 1]]);\n");
+    const Read r = readCsg(
+        "circle(r = 1);\nsquare(size = [1, 2]);\npolygon(points = [[0, 0], [1, 0], [0, 1]]);\n");
     requireErrors(r, {{1, 1, "circle is not supported yet"},
                       {2, 1, "square is not supported yet"},
                       {3, 1, "polygon is not supported yet"}});
@@ -83,19 +83,23 @@ TEST_CASE("openscad/syntax errors point at the token") {
     SECTION("a missing semicolon") {
         // A call without ';' takes the next statement as its child, as in OpenSCAD: the
         // error is at the end of the file.
-        requireErrors(readCsg("cube(size = 1)\n"), {{2, 1, "expected a module name, found the end of the file"}});
+        requireErrors(readCsg("cube(size = 1)\n"),
+                      {{2, 1, "expected a module name, found the end of the file"}});
     }
     SECTION("an expression is not a literal") {
         requireErrors(readCsg("sphere(r = 1 + 2);\n"), {{1, 14, "expected ',' or ')'"}});
     }
     SECTION("an unclosed block") {
-        requireErrors(readCsg("union() {\n  cube(size = 1);\n"), {{1, 1, "block of 'union' is not closed"}});
+        requireErrors(readCsg("union() {\n  cube(size = 1);\n"),
+                      {{1, 1, "block of 'union' is not closed"}});
     }
     SECTION("a wrong argument type") {
-        requireErrors(readCsg("sphere(r = \"big\");\n"), {{1, 12, "sphere r must be a number, got a string"}});
+        requireErrors(readCsg("sphere(r = \"big\");\n"),
+                      {{1, 12, "sphere r must be a number, got a string"}});
     }
     SECTION("parsing goes on after an error, so several are reported") {
-        requireErrors(readCsg("cube(size = );\nsphere(r = ]);\n"), {{1, 13, "expected a value"}, {2, 12, "expected a value"}});
+        requireErrors(readCsg("cube(size = );\nsphere(r = ]);\n"),
+                      {{1, 13, "expected a value"}, {2, 12, "expected a value"}});
     }
 }
 
@@ -108,8 +112,10 @@ TEST_CASE("openscad/modifiers: % and * are left out, # and ! are kept") {
     const Read root = readCsg("sphere(r = 5);\n!cube(size = 1);\n");
     REQUIRE(root.scene.has_value());
     CHECK(root.scene->objects.at(0)->bounds().hi.x <= 1 + 1e-12);
-    const Read nested = readCsg("difference() {\n  sphere(r = 5);\n  multmatrix([[1, 0, 0, 7], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])\n"
-                                "    !cube(size = 1);\n}\n");
+    const Read nested = readCsg(
+        "difference() {\n  sphere(r = 5);\n  multmatrix([[1, 0, 0, 7], [0, 1, 0, 0], [0, 0, 1, 0], "
+        "[0, 0, 0, 1]])\n"
+        "    !cube(size = 1);\n}\n");
     REQUIRE(nested.scene.has_value());
     // The cube alone at the origin: the multmatrix above the root is dropped too, as OpenSCAD
     // 2021.01 does (it exports such a file as the bare cube).
@@ -127,12 +133,14 @@ TEST_CASE("openscad/OpenSCAD's examples that use only the nodes read load") {
         int curves, fewest, most;
     };
     const std::map<std::string, Facets> expected = {
-        {"CSG.csg", {3, 30, 30}},         {"CSG-modules.csg", {19, 63, 72}}, {"assert.csg", {0, 0, 0}},
-        {"example001.csg", {4, 30, 30}},  {"example002.csg", {1, 30, 30}},   {"example003.csg", {0, 0, 0}},
-        {"example004.csg", {1, 30, 30}},  {"example005.csg", {9, 30, 30}},   {"example011.csg", {0, 0, 0}},
-        {"example014.csg", {0, 0, 0}},    {"example018.csg", {8, 30, 30}},   {"example019.csg", {41, 19, 19}},
-        {"example022.csg", {24, 16, 16}}, {"example024.csg", {0, 0, 0}},     {"functions.csg", {41, 5, 5}},
-        {"logo.csg", {4, 100, 100}}};
+        {"CSG.csg", {3, 30, 30}},         {"CSG-modules.csg", {19, 63, 72}},
+        {"assert.csg", {0, 0, 0}},        {"example001.csg", {4, 30, 30}},
+        {"example002.csg", {1, 30, 30}},  {"example003.csg", {0, 0, 0}},
+        {"example004.csg", {1, 30, 30}},  {"example005.csg", {9, 30, 30}},
+        {"example011.csg", {0, 0, 0}},    {"example014.csg", {0, 0, 0}},
+        {"example018.csg", {8, 30, 30}},  {"example019.csg", {41, 19, 19}},
+        {"example022.csg", {24, 16, 16}}, {"example024.csg", {0, 0, 0}},
+        {"functions.csg", {41, 5, 5}},    {"logo.csg", {4, 100, 100}}};
     int files = 0;
     for (const auto& entry : fs::directory_iterator(dir)) {
         const std::string name = entry.path().filename().string();
@@ -150,8 +158,9 @@ TEST_CASE("openscad/OpenSCAD's examples that use only the nodes read load") {
         if (fewest == 0) {
             CHECK(note.empty());
         } else {
-            const std::string facets = fewest == most ? std::to_string(fewest)
-                                                      : std::to_string(fewest) + " to " + std::to_string(most);
+            const std::string facets = fewest == most
+                                           ? std::to_string(fewest)
+                                           : std::to_string(fewest) + " to " + std::to_string(most);
             CHECK_THAT(note, Catch::Contains("(" + std::to_string(curves) + " here)") &&
                                  Catch::Contains(" " + facets + " facets"));
         }
@@ -161,8 +170,9 @@ TEST_CASE("openscad/OpenSCAD's examples that use only the nodes read load") {
 }
 
 TEST_CASE("openscad/every truncation of a file is read or refused with located errors") {
-    const std::string text = "group() {\n\tdifference() {\n\t\tcube(size = [30, 30, 30], center = true);\n"
-                             "\t\tsphere($fn = 0, $fa = 12, $fs = 2, r = 20);\n\t}\n}\n";
+    const std::string text =
+        "group() {\n\tdifference() {\n\t\tcube(size = [30, 30, 30], center = true);\n"
+        "\t\tsphere($fn = 0, $fa = 12, $fs = 2, r = 20);\n\t}\n}\n";
     for (size_t n = 0; n <= text.size(); ++n) {
         const std::string prefix = text.substr(0, n);
         INFO("first " << n << " bytes");
