@@ -8,13 +8,13 @@
 /// rotation, (x, y, z) ↦ (x, z, −y), documented in docs/openscad.md.
 #pragma once
 
+#include "lang/diagnostic.h"
+#include "scene/scene.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include "lang/diagnostic.h"
-#include "scene/scene.h"
 
 namespace kerf {
 

@@ -4,13 +4,13 @@
 // nothing, a cube of size 0) are null, as OpenSCAD drops them from its Booleans.
 #include "lang/openscad_lower.h"
 
-#include <algorithm>
-#include <cmath>
-#include <set>
-
 #include "csg/affine_check.h"
 #include "csg/solids.h"
 #include "lang/source.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
 
 namespace kerf {
 

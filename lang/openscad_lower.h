@@ -5,10 +5,10 @@
 /// adapter through which 2-D nodes and extrusions go).
 #pragma once
 
+#include "lang/openscad_csg.h"
+
 #include <map>
 #include <tuple>
-
-#include "lang/openscad_csg.h"
 
 namespace kerf {
 

@@ -1,12 +1,12 @@
 // The .csg reader's tokenizer and parser: module instantiations with named or positional
 // literal arguments, nested blocks, OpenSCAD's modifier characters and comments. Nothing is
 // evaluated: a .csg file holds no expressions beyond a sign before a number.
+#include "lang/openscad_csg.h"
+#include "scene/limits.h"
+
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-
-#include "lang/openscad_csg.h"
-#include "scene/limits.h"
 
 namespace kerf {
 

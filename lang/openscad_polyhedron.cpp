@@ -4,12 +4,12 @@
 // round is taken as it is). Convex faces are split into fans; a face that is not convex is
 // cut into ears (a fan of it could fold over itself) in the plane it is most nearly parallel
 // to, and one that has no ear (it crosses itself) is an error naming it.
+#include "lang/openscad_lower.h"
+#include "mesh/mesh_shape.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
-
-#include "lang/openscad_lower.h"
-#include "mesh/mesh_shape.h"
 
 namespace kerf {
 

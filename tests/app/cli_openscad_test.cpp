@@ -1,11 +1,11 @@
 // End-to-end: `kerf check`, `kerf slice` and `kerf render` of OpenSCAD .csg exports, against
 // bounds and areas worked out by hand, and the error format for nodes kerf cannot read.
+#include "io/image.h"
+#include "kerf_runner.h"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <regex>
-
-#include "io/image.h"
-#include "kerf_runner.h"
 
 using namespace kerf::test;
 

@@ -3,11 +3,11 @@
 // at height z is at kerf y = z.
 #include "lang/openscad_csg.h"
 
-#include <catch2/catch.hpp>
-#include <cmath>
-
 #include "csg/span.h"
 #include "csg/trace_context.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
 
 using namespace kerf;
 

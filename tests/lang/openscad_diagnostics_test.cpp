@@ -1,12 +1,12 @@
 // The .csg reader's errors: syntax errors and nodes it cannot read, each at its line and
 // column, all of them in one run; and OpenSCAD's example files, which load when they use only
 // the nodes read (tests/data/openscad/ holds those, exported by OpenSCAD 2021.01).
+#include "lang/openscad_csg.h"
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <map>
-
-#include "lang/openscad_csg.h"
 
 using namespace kerf;
 
