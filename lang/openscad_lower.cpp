@@ -113,6 +113,15 @@ bool ScadLowering::triple(const ScadCall& c, const std::string& name, int positi
     return true;
 }
 
+bool ScadLowering::radius(const ScadCall& c, const std::string& rName, int position,
+                          const std::string& dName, double& out) {
+    double d = 0.0;
+    const ScadArg* diameter = c.arg(dName);
+    if (!number(c, rName, position, out) || !number(c, dName, -1, d)) return false;
+    if (diameter && diameter->value.kind == ScadValue::Kind::Number) out = 0.5 * d;  // d wins
+    return true;
+}
+
 void ScadLowering::countFacets(const ScadCall& c, double r) {
     double fn = 0.0, fa = 12.0, fs = 2.0;  // OpenSCAD's defaults
     number(c, "$fn", -1, fn);
@@ -275,9 +284,8 @@ NodePtr ScadLowering::lowerCube(const ScadCall& c) {
 }
 
 NodePtr ScadLowering::lowerSphere(const ScadCall& c) {
-    double r = 1.0, d = 0.0;
-    if (!number(c, "r", 0, r) || !number(c, "d", -1, d)) return nullptr;
-    if (c.arg("d") && !c.arg("r", 0)) r = 0.5 * d;
+    double r = 1.0;
+    if (!radius(c, "r", 0, "d", r)) return nullptr;
     if (r < 0) {
         error(c.pos, "sphere radius must not be negative");
         return nullptr;
@@ -291,18 +299,14 @@ NodePtr ScadLowering::lowerSphere(const ScadCall& c) {
 }
 
 NodePtr ScadLowering::lowerCylinder(const ScadCall& c) {
-    double h = 1.0, r = 1.0, d = 0.0;
+    // OpenSCAD's signature: cylinder(h, r1, r2, center), r and the diameters named only; r
+    // sets both radii, r1 and r2 each one.
+    double h = 1.0, r = 1.0;
     bool center = false;
-    if (!number(c, "h", 0, h) || !number(c, "r", -1, r) || !number(c, "d", -1, d) ||
-        !flag(c, "center", -1, center))
+    if (!number(c, "h", 0, h) || !radius(c, "r", -1, "d", r) || !flag(c, "center", 3, center))
         return nullptr;
-    if (c.arg("d") && !c.arg("r")) r = 0.5 * d;
-    double r1 = r, r2 = r, d1 = 2 * r, d2 = 2 * r;
-    if (!number(c, "r1", 1, r1) || !number(c, "r2", 2, r2) || !number(c, "d1", -1, d1) ||
-        !number(c, "d2", -1, d2))
-        return nullptr;
-    if (c.arg("d1") && !c.arg("r1", 1)) r1 = 0.5 * d1;
-    if (c.arg("d2") && !c.arg("r2", 2)) r2 = 0.5 * d2;
+    double r1 = r, r2 = r;
+    if (!radius(c, "r1", 1, "d1", r1) || !radius(c, "r2", 2, "d2", r2)) return nullptr;
     if (h < 0 || r1 < 0 || r2 < 0) {
         error(c.pos, "cylinder height and radii must not be negative");
         return nullptr;

@@ -131,6 +131,12 @@ TEST_CASE("openscad/cylinder r1, r2 and center") {
         requireEnds(spansOf(r, {0, -20, 0}, {0, 1, 0}), {15, 25});
         requireEnds(spansOf(r, {-10, 4.9, 0}, {1, 0, 0}), {7, 13});
     }
+    SECTION("positional h, r1, r2, center and diameters, as OpenSCAD reads them") {
+        const Read r = readCsg("cylinder(10, 3, 3, true);\n");
+        requireEnds(spansOf(r, {0, -20, 0}, {0, 1, 0}), {15, 25});
+        const Read d = readCsg("cylinder(h = 2, d1 = 4, d2 = 4);\n");
+        requireEnds(spansOf(d, {-10, 1, 0}, {1, 0, 0}), {8, 12});
+    }
     SECTION("a cone to a point") {
         const Read r = readCsg("cylinder(h = 4, r1 = 2, r2 = 0, center = false);\n");
         requireEnds(spansOf(r, {-10, 2, 0}, {1, 0, 0}), {9, 11});
