@@ -136,6 +136,7 @@ bool isSolidKind(const std::string& name) {
     const auto has = [&](const std::vector<std::string>& v) {
         return std::find(v.begin(), v.end(), name) != v.end();
     };
+    if (name == "disc" || name == "triangle") return true;  // surfaces (lang/lower_surfaces.cpp)
     return has(primitiveKinds()) || has(booleanKinds());
 }
 

@@ -90,6 +90,7 @@ std::shared_ptr<const MeshShape> Lowering::meshShape(const std::string& written,
 }
 
 bool Lowering::checkSolidOperands(const std::vector<NodePtr>& operands, const std::string& use, SourcePos at) {
+    if (!checkSurfaceOperands(operands, use, at)) return false;
     if (mOpenMeshes.empty()) return true;  // no mesh that is not a solid: nothing to look for
     bool ok = true;
     for (const NodePtr& operand : operands) {
