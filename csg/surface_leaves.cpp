@@ -44,7 +44,12 @@ public:
 
     // No inside: the empty solid's form.
     double value(const Vec3&) const final { return 1.0; }
-    Interval valueInterval(const IntervalVec3&) const final { return Interval(1.0); }
+    /// Deliberately loose where the box meets the bounds: ambiguous, so interval culling
+    /// (primary beams) never proves a region that holds the sheet empty.
+    Interval valueInterval(const IntervalVec3& box) const final {
+        const Bounds3 b{Vec3(box.x.lo, box.y.lo, box.z.lo), Vec3(box.x.hi, box.y.hi, box.z.hi)};
+        return Bounds3::overlap(b, mBounds).empty() ? Interval(1.0) : Interval(-1.0, 1.0);
+    }
     long double valueExtended(const LVec3&) const final { return 1.0L; }
     ExprId implicitExpr(ExprGraph& g, ExprId, ExprId, ExprId) const final { return g.constant(1.0); }
 

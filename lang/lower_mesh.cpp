@@ -7,6 +7,7 @@
 
 #include "mesh/mesh_loader.h"
 #include "mesh/mesh_shape.h"
+#include "csg/surfaces.h"
 
 #include <filesystem>
 #include <system_error>
@@ -114,9 +115,9 @@ bool Lowering::checkSolidOperands(const std::vector<NodePtr>& operands, const st
 }
 
 void Lowering::checkSectionedSurfaces(const Scene& scene) {
-    if (mOpenMeshes.empty() || scene.sections.empty()) return;
+    if ((mOpenMeshes.empty() && mSurfaces.empty()) || scene.sections.empty()) return;
     for (const NodePtr& object : scene.objects) {
-        if (!meshLeafBelow(object.get())) continue;
+        if (!meshLeafBelow(object.get()) && !isSurfaceTree(*object)) continue;  // csg/surfaces.h
         const Bounds3& box = object->bounds();
         for (size_t i = 0; i < scene.sections.size(); ++i) {
             const SectionPlane& plane = scene.sections[i];

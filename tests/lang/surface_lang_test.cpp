@@ -92,6 +92,10 @@ TEST_CASE("surfaces: a surface where a solid is needed is an error at the surfac
     requireOneError("object clip disc { } by surface sphere { };", 1, 25, "cannot be what 'clip' cuts by");
     requireOneError("object clip sphere { } by box { min <0, 0, 0> max <1, 1, 1> };", 1, 13,
                     "clip cuts a surface, but this is a solid");
+    // A section plane cuts solids only; one that crosses a surface is refused as for open meshes.
+    requireOneError("section { point <0, 0, 0> normal <0, 0, 1> }\nobject disc { normal <0, 0, 1> };", 2, 8,
+                    "cannot be cut by the section plane");
+    CHECK(compileText("section { point <0, 0, 5> normal <0, 0, 1> }\nobject disc { };").scene.has_value());
     // The message names the use and says what to write instead.
     const Compiled c = compileText("object union {\n  disc { }\n  sphere { }\n};");
     REQUIRE(c.sink.errorCount() == 1);
