@@ -4,6 +4,7 @@
 
 #include "csg/solids.h"
 #include "csg/surfaces.h"
+#include "csg/tree_tape.h"
 
 #include <cmath>
 #include <random>
@@ -248,4 +249,13 @@ TEST_CASE("surfaces: isSurfaceTree sees through transforms, materials and interi
     CHECK_FALSE(isSurfaceKind(NodeKind::Interior));
     CHECK(isLeaf(NodeKind::Disc));
     CHECK_FALSE(isLeaf(NodeKind::SurfaceOf));
+}
+
+TEST_CASE("surfaces: the tree's implicit form has no inside for a surface, and interior keeps its solid's") {
+    // treeTape is what mesh export and slicing compile; `surface sphere` must not mesh as a ball.
+    const auto sheet = treeTape(*makeSurfaceOf(makeSphere(Vec3(0.0), 1.0)));
+    CHECK(sheet->eval(Vec3(0.0)) > 0.0);
+    const auto ball = treeTape(*makeInterior(makeSphere(Vec3(0.0), 1.0), 2));
+    CHECK(ball->eval(Vec3(0.0)) == -1.0);
+    CHECK(ball->eval(Vec3(2.0, 0.0, 0.0)) == 1.0);
 }
