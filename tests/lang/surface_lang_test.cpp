@@ -65,6 +65,18 @@ TEST_CASE("surfaces: each keyword builds its surface node") {
     CHECK_FALSE(isSurfaceTree(*s.objects[6]));
 }
 
+TEST_CASE("surfaces: surfaces are values: lets, functions and loops make them") {
+    const Scene s = scene(
+        "let d = disc { radius 2 };\n"
+        "fn sail(h) = triangle { a <0, 0, 0> b <1, 0, 0> c <0, h, 0> };\n"
+        "object d;\nobject sail(3) material red;\n"
+        "for i in 1 .. 2 { object disc { center <i, 0, 0> }; }\n");
+    REQUIRE(s.objects.size() == 4);
+    CHECK(std::get<DiscParams>(s.objects[0]->params()).radius == 2.0);
+    CHECK(std::get<TriangleParams>(s.objects[1]->children()[0]->params()).c == Vec3(0, 3, 0));
+    CHECK(std::get<DiscParams>(s.objects[3]->params()).center == Vec3(2, 0, 0));
+}
+
 TEST_CASE("surfaces: interior gives the back its material, before or after material") {
     for (const char* order : {"material red interior blue", "interior blue material red"}) {
         INFO(order);
