@@ -43,6 +43,12 @@ struct Cubic {
         const double u = 1.0 - t;
         return u * u * u * p[0] + 3.0 * u * u * t * p[1] + 3.0 * u * t * t * p[2] + t * t * t * p[3];
     }
+    /// The direction of travel at t (the chord where the derivative vanishes).
+    Vec2 tangent(double t) const {
+        const double u = 1.0 - t;
+        const Vec2 d = u * u * (p[1] - p[0]) + 2.0 * u * t * (p[2] - p[1]) + t * t * (p[3] - p[2]);
+        return d != Vec2(0.0) ? d : p[3] - p[0];
+    }
     /// de Casteljau at t: the part before t and after it.
     std::pair<Cubic, Cubic> split(double t) const {
         const Vec2 a = glm::mix(p[0], p[1], t), b = glm::mix(p[1], p[2], t), c = glm::mix(p[2], p[3], t);
@@ -89,14 +95,21 @@ struct Piece {
     bool rightHalf = true;  ///< the arc piece lies at x ≥ centre
 };
 
+/// The nearest point found so far, with the unit normal of its segment there (either side)
+/// and the segment's size: near the outline p − q is rounding noise, the normal is not.
 struct Nearest {
     double d = kInf;
     Vec2 q{0.0};
-    void offer(Vec2 p, Vec2 point) {
-        const double d2 = glm::length(p - point);
-        if (d2 < d) {
-            d = d2;
+    Vec2 normal{0.0};
+    double size = 0.0;
+    void offer(Vec2 p, Vec2 point, Vec2 tangent, double segmentSize) {
+        const double dist = glm::length(p - point);
+        if (dist < d) {
+            d = dist;
             q = point;
+            const double len = glm::length(tangent);
+            normal = len > 0.0 ? Vec2(-tangent.y, tangent.x) / len : Vec2(0.0);
+            size = segmentSize;
         }
     }
 };
@@ -106,7 +119,7 @@ double boxDistance(const Bounds2& b, Vec2 p) {
     return glm::length(d);
 }
 
-void nearestOnCubic(const Cubic& c, Vec2 p, double tolerance, int depth, Nearest& n) {
+void nearestOnCubic(const Cubic& c, Vec2 p, double tolerance, double size, int depth, Nearest& n) {
     // The control polygon lies within h of the chord, so the curve does too.
     const double h = std::max(distanceToSegment(c.p[0], c.p[3], c.p[1]),
                               distanceToSegment(c.p[0], c.p[3], c.p[2]));
@@ -115,39 +128,44 @@ void nearestOnCubic(const Cubic& c, Vec2 p, double tolerance, int depth, Nearest
     const double lower = chord - h;
     if (lower >= n.d) return;
     const Vec2 q = c.at(s);
-    n.offer(p, q);
-    n.offer(p, c.p[0]);
-    n.offer(p, c.p[3]);
+    n.offer(p, q, c.tangent(s), size);
+    n.offer(p, c.p[0], c.tangent(0.0), size);
+    n.offer(p, c.p[3], c.tangent(1.0), size);
     if (depth >= 52 || glm::length(p - q) - lower <= tolerance) return;
     const auto [left, right] = c.split(0.5);
     // Nearer half first, so the bound prunes the other.
     const double dl = distanceToSegment(left.p[0], left.p[3], p);
     const double dr = distanceToSegment(right.p[0], right.p[3], p);
     if (dl <= dr) {
-        nearestOnCubic(left, p, tolerance, depth + 1, n);
-        nearestOnCubic(right, p, tolerance, depth + 1, n);
+        nearestOnCubic(left, p, tolerance, size, depth + 1, n);
+        nearestOnCubic(right, p, tolerance, size, depth + 1, n);
     } else {
-        nearestOnCubic(right, p, tolerance, depth + 1, n);
-        nearestOnCubic(left, p, tolerance, depth + 1, n);
+        nearestOnCubic(right, p, tolerance, size, depth + 1, n);
+        nearestOnCubic(left, p, tolerance, size, depth + 1, n);
     }
 }
 
 void nearestOn(const Segment& s, Vec2 p, Nearest& n) {
+    const double size = glm::length(s.box.hi - s.box.lo);
     switch (s.kind) {
         case PathSegment::Kind::Line: {
             double t;
-            n.offer(p, nearestOnSegment(s.a, s.b, p, t));
+            n.offer(p, nearestOnSegment(s.a, s.b, p, t), s.b - s.a, size);
             return;
         }
         case PathSegment::Kind::Arc: {
             const Vec2 d = p - s.arc.c;
             const double len = glm::length(d);
-            if (len > 0.0 && s.arc.covers(std::atan2(d.y, d.x))) n.offer(p, s.arc.c + d * (s.arc.r / len));
-            n.offer(p, s.a);
-            n.offer(p, s.b);
+            const auto tangentAt = [&](Vec2 q) { const Vec2 r = q - s.arc.c; return Vec2(-r.y, r.x); };
+            if (len > 0.0 && s.arc.covers(std::atan2(d.y, d.x))) {
+                const Vec2 q = s.arc.c + d * (s.arc.r / len);
+                n.offer(p, q, tangentAt(q), size);
+            }
+            n.offer(p, s.a, tangentAt(s.a), size);
+            n.offer(p, s.b, tangentAt(s.b), size);
             return;
         }
-        default: nearestOnCubic(s.cubic, p, s.tolerance, 0, n);
+        default: nearestOnCubic(s.cubic, p, s.tolerance, size, 0, n);
     }
 }
 
@@ -234,8 +252,13 @@ public:
         const Nearest n = nearest(p2);
         const double sign = inside(p2) ? -1.0 : 1.0;
         const Vec2 away = p2 - n.q;
-        const double len = glm::length(away);
-        gradient = len > 0.0 ? Vec3(sign * away / len, 0.0) : Vec3(0.0);
+        const double scale = n.size + std::max(std::abs(n.q.x), std::abs(n.q.y));
+        if (n.d > 0x1p-30 * scale) {  // p − q is accurate: the distance's own gradient
+            gradient = Vec3(sign * away / n.d, 0.0);
+        } else {  // on the outline: the segment's normal, turned to point out of the shape
+            const Vec2 probe = n.q + 0x1p-24 * n.size * n.normal;
+            gradient = Vec3(inside(probe) ? -n.normal : n.normal, 0.0);
+        }
         return sign * n.d;
     }
     Interval range(const Interval& x, const Interval& y, const Interval&) const override {

@@ -202,3 +202,21 @@ TEST_CASE("pathField::valueGradient points away from the outline with unit lengt
         }
     }
 }
+
+TEST_CASE("pathField::valueGradient on the outline is the outward normal of the edge") {
+    // A triangle with a slanted edge from (2, 0) to (0, 1): points exactly on it (p − q is
+    // rounding noise there) must still get the edge's outward normal (1, 2)/√5.
+    PathShape shape;
+    shape.loops.push_back(polygonLoop({{0, 0}, {2, 0}, {0, 1}}));
+    const auto f = pathField(shape);
+    const Vec2 outward = glm::normalize(Vec2(1, 2));
+    for (double t = 0.05; t < 1.0; t += 0.05) {
+        const Vec2 p = glm::mix(Vec2(2, 0), Vec2(0, 1), t);
+        Vec3 g;
+        const double v = f->valueGradient(Vec3(p, 0.0), g);
+        INFO("t=" << t << " v=" << v);
+        REQUIRE(std::abs(v) <= 1e-15);
+        REQUIRE(g.x == Approx(outward.x).margin(1e-12));
+        REQUIRE(g.y == Approx(outward.y).margin(1e-12));
+    }
+}
