@@ -220,3 +220,55 @@ TEST_CASE("pathField::valueGradient on the outline is the outward normal of the 
         REQUIRE(g.y == Approx(outward.y).margin(1e-12));
     }
 }
+
+TEST_CASE("pathField::value with hundreds of segments (through the BVH) equals the brute-force minimum") {
+    // A star-shaped outline of 600 vertices at random radii, and a Bézier loop inside it.
+    std::mt19937_64 rng(6);
+    std::uniform_real_distribution<double> radius(1.0, 2.0), coord(-2.5, 2.5);
+    std::vector<Vec2> points;
+    for (int i = 0; i < 600; ++i) {
+        const double a = 2 * kPi * i / 600.0, r = radius(rng);
+        points.emplace_back(r * std::cos(a), r * std::sin(a));
+    }
+    PathShape shape;
+    shape.loops.push_back(polygonLoop(points));
+    const auto f = pathField(shape);
+    for (int i = 0; i < 1000; ++i) {
+        const Vec2 p(coord(rng), coord(rng));
+        double best = 1e300;
+        bool odd = false;
+        for (size_t k = 0; k < points.size(); ++k) {
+            const Vec2 a = points[k], b = points[(k + 1) % points.size()];
+            const double s = std::clamp(glm::dot(p - a, b - a) / glm::dot(b - a, b - a), 0.0, 1.0);
+            best = std::min(best, glm::length(p - (a + s * (b - a))));
+            if ((a.y <= p.y) != (b.y <= p.y) && a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) > p.x) odd = !odd;
+        }
+        INFO("p=(" << p.x << "," << p.y << ")");
+        REQUIRE(f->value(Vec3(p, 0.0)) == Approx(odd ? -best : best).margin(1e-12));
+    }
+}
+
+TEST_CASE("pathField::range encloses samples near Bézier curves") {
+    PathShape shape;
+    PathLoop loop;
+    PathSegment cubic;
+    cubic.kind = PathSegment::Kind::Cubic;
+    cubic.p = {Vec2(0, 0), Vec2(3, 2), Vec2(-1, 2), Vec2(2, 0)};  // a loop that crosses itself
+    loop.segments.push_back(cubic);
+    loop.segments.push_back(line({2, 0}, {0, 0}));
+    shape.loops.push_back(loop);
+    const auto f = pathField(shape);
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> coord(-0.5, 2.5), size(0.0, 0.5), unit(0.0, 1.0);
+    for (int i = 0; i < 500; ++i) {
+        const Vec2 lo(coord(rng), coord(rng) * 0.7);
+        const Vec2 hi = lo + Vec2(size(rng), size(rng));
+        const Interval r = f->range(Interval(lo.x, hi.x), Interval(lo.y, hi.y), Interval(0.0));
+        for (int k = 0; k < 50; ++k) {
+            const Vec2 p = lo + Vec2(unit(rng), unit(rng)) * (hi - lo);
+            const double v = f->value(Vec3(p, 0.0));
+            INFO("p=(" << p.x << "," << p.y << ") v=" << v << " range [" << r.lo << "," << r.hi << "]");
+            REQUIRE(r.contains(v));
+        }
+    }
+}
