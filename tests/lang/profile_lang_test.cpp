@@ -107,6 +107,10 @@ TEST_CASE("profiles: errors") {
     requireOneError("object extrude { profile path { line [1, 0] } height 1 };", 1, 33, "'line' before 'start'");
     requireOneError("object extrude { profile path { start [1, 0] arc [[-2, 0], [0, 0]] } height 1 };", 1, 50,
                     "start and end must be at the same distance from the center");
+    requireOneError("object extrude { profile polygon { points [[0, 0], [1, 0], [0, 1e308 * 10]] } height 1 };", 1,
+                    70, "value is not finite");
+    requireOneError("object extrude { profile union { circle { } circle { } translate <1, 0, 0> } height 1 };", 1,
+                    56, "a 2-D profile takes no modifiers");
     requireOneError("object extrude { profile path { start [0, 0] loop [1, 0] } height 1 };", 1, 46,
                     "unknown step 'loop' in path");
 }
