@@ -97,11 +97,13 @@ struct Piece {
 
 /// The nearest point found so far, with the unit normal of its segment there (either side)
 /// and the segment's size: near the outline p − q is rounding noise, the normal is not.
+struct Segment;
 struct Nearest {
     double d = kInf;
     Vec2 q{0.0};
     Vec2 normal{0.0};
     double size = 0.0;
+    const Segment* segment = nullptr;
     void offer(Vec2 p, Vec2 point, Vec2 tangent, double segmentSize) {
         const double dist = glm::length(p - point);
         if (dist < d) {
@@ -145,7 +147,15 @@ void nearestOnCubic(const Cubic& c, Vec2 p, double tolerance, double size, int d
     }
 }
 
+void nearestOnAny(const Segment& s, Vec2 p, Nearest& n);
+
 void nearestOn(const Segment& s, Vec2 p, Nearest& n) {
+    const double before = n.d;
+    nearestOnAny(s, p, n);
+    if (n.d < before) n.segment = &s;
+}
+
+void nearestOnAny(const Segment& s, Vec2 p, Nearest& n) {
     const double size = glm::length(s.box.hi - s.box.lo);
     switch (s.kind) {
         case PathSegment::Kind::Line: {
@@ -280,6 +290,43 @@ public:
         return Interval(-hi, hi);
     }
 
+    Interval rangeGradient(const Interval& x, const Interval& y, const Interval& z, Interval g[3]) const override {
+        g[0] = g[1] = Interval(-1.0, 1.0);
+        g[2] = Interval(0.0);  // z is ignored
+        const Interval r = range(x, y, z);
+        if (!std::isfinite(r.lo) || !std::isfinite(r.hi)) return r;
+        // When one straight edge is the nearest feature for every point of the box, at an
+        // interior point of it, the box holds no other outline: the sign flips only across
+        // that edge and the field is the signed distance to its line — affine, its gradient
+        // the edge's outward normal. Proven here with the 1-Lipschitz bounds used by range().
+        const Vec2 center(x.mid(), y.mid());
+        const Vec2 half(std::max(x.hi - center.x, center.x - x.lo), std::max(y.hi - center.y, center.y - y.lo));
+        const double rad = glm::length(half) * (1.0 + 0x1p-50);
+        const double scale = std::max({mScale, std::abs(center.x), std::abs(center.y)}) + std::max(half.x, half.y);
+        const double err = 0x1p-40 * scale;
+        if (!(rad > 0x1p-30 * scale)) return r;  // too small for the side probe below
+        const Nearest n = nearest(center);
+        if (!n.segment || n.segment->kind != PathSegment::Kind::Line) return r;
+        const Segment& s = *n.segment;
+        // Every other segment stays farther than this one from every point of the box.
+        if (!(nearest(center, &s).d - rad - err > n.d + rad + err)) return r;
+        // The foot of every point of the box lies strictly inside the edge.
+        const Vec2 ab = s.b - s.a;
+        const double len2 = glm::dot(ab, ab);
+        if (!(len2 > 0.0)) return r;
+        const double sc = glm::dot(center - s.a, ab) / len2;
+        const double sr = (std::abs(ab.x) * half.x + std::abs(ab.y) * half.y) / len2;
+        if (!(sc - sr > 0x1p-30 && sc + sr < 1.0 - 0x1p-30)) return r;
+        // The outward side: a probe off the edge by rad/2 meets no other outline (the others
+        // are more than 2·rad from the box).
+        Vec2 normal = Vec2(-ab.y, ab.x) / std::sqrt(len2);
+        if (inside(s.a + sc * ab + 0.5 * rad * normal)) normal = -normal;
+        constexpr double kUlps = 0x1p-50;  // rounding in the normal's components
+        g[0] = Interval(normal.x - kUlps, normal.x + kUlps);
+        g[1] = Interval(normal.y - kUlps, normal.y + kUlps);
+        return r;
+    }
+
 private:
     struct BvhNode {
         Bounds2 box;
@@ -407,7 +454,7 @@ private:
         return index;
     }
 
-    Nearest nearest(Vec2 p) const {
+    Nearest nearest(Vec2 p, const Segment* skip = nullptr) const {
         Nearest n;
         if (mNodes.empty()) return n;
         int stack[64];
@@ -417,7 +464,10 @@ private:
             const BvhNode& node = mNodes[stack[--top]];
             if (boxDistance(node.box, p) >= n.d) continue;
             if (node.left < 0) {
-                for (int i = 0; i < node.count; ++i) nearestOn(mSegments[mOrder[node.first + i]], p, n);
+                for (int i = 0; i < node.count; ++i) {
+                    const Segment& seg = mSegments[mOrder[node.first + i]];
+                    if (&seg != skip) nearestOn(seg, p, n);
+                }
                 continue;
             }
             const double dl = boxDistance(mNodes[node.left].box, p);

@@ -272,3 +272,39 @@ TEST_CASE("pathField::range encloses samples near Bézier curves") {
         }
     }
 }
+
+TEST_CASE("pathField::rangeGradient encloses every difference quotient in the box") {
+    // The mean-value form root isolation relies on: f(p) − f(q) ∈ g·(p − q) for p, q in the
+    // box, where g is the enclosure (the edge's normal when proven, else [−1, 1]).
+    PathShape shape;
+    shape.loops.push_back(polygonLoop({{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 3}, {0, 3}}));
+    shape.loops.push_back(polygonLoop({{0.3, 0.3}, {0.7, 0.3}, {0.5, 0.7}}));
+    const auto f = pathField(shape);
+    std::mt19937_64 rng(8);
+    std::uniform_real_distribution<double> coord(-0.5, 3.5), size(0.0, 0.3), unit(0.0, 1.0);
+    int proven = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Vec2 lo(coord(rng), coord(rng));
+        const Vec2 hi = lo + Vec2(size(rng), size(rng)) * (unit(rng) < 0.5 ? 0.05 : 1.0);
+        Interval g[3];
+        const Interval r = f->rangeGradient(Interval(lo.x, hi.x), Interval(lo.y, hi.y), Interval(0.0), g);
+        REQUIRE(g[2].lo == 0.0);
+        REQUIRE(g[2].hi == 0.0);
+        proven += g[0].width() < 1e-6;
+        for (int k = 0; k < 20; ++k) {
+            const Vec2 p = lo + Vec2(unit(rng), unit(rng)) * (hi - lo);
+            const Vec2 q = lo + Vec2(unit(rng), unit(rng)) * (hi - lo);
+            const double fp = f->value(Vec3(p, 0.0)), fq = f->value(Vec3(q, 0.0));
+            REQUIRE(r.contains(fp));
+            const Vec2 d = p - q;
+            const double dlo = std::min(g[0].lo * d.x, g[0].hi * d.x) + std::min(g[1].lo * d.y, g[1].hi * d.y);
+            const double dhi = std::max(g[0].lo * d.x, g[0].hi * d.x) + std::max(g[1].lo * d.y, g[1].hi * d.y);
+            const double slack = 1e-14;  // rounding in the two distances
+            INFO("box (" << lo.x << "," << lo.y << ")-(" << hi.x << "," << hi.y << ") g=[" << g[0].lo << ","
+                         << g[0].hi << "]x[" << g[1].lo << "," << g[1].hi << "] diff " << fp - fq);
+            REQUIRE(fp - fq >= dlo - slack);
+            REQUIRE(fp - fq <= dhi + slack);
+        }
+    }
+    CHECK(proven > 100);  // the edges' interiors are proven affine often enough to matter
+}
