@@ -29,7 +29,10 @@ Bounds2 pathBounds(const PathShape& shape);
 
 /// The signed distance to the shape's outline in the (x, y) plane, z ignored. `range` is the
 /// distance at the box's centre ± the box's half-diagonal (as mesh/mesh_shape does), with the
-/// sign of the centre when no outline is in reach; `lipschitz` is 1.
+/// sign of the centre when no outline is in reach; `lipschitz` is 1. `rangeGradient` gives
+/// ∂/∂z = 0 and, where one straight edge is provably the nearest feature of the whole box
+/// (at interior points of it), that edge's outward normal — so root isolation proves roots on
+/// polygon sides unique instead of bisecting; elsewhere [−1, 1].
 std::shared_ptr<const ScalarField> pathField(PathShape shape);
 
 }  // namespace kerf
