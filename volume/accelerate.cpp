@@ -27,8 +27,10 @@ AcceleratedObjects accelerate(const std::vector<NodePtr>& objects, Accel accel,
     out.objectBvh = accel != Accel::None;
     out.objects.reserve(objects.size());
     for (const NodePtr& o : objects) {
-        // A surface (csg/surfaces.h) has no inside for the octree's cells to classify.
-        const bool octree = (accel == Accel::Octree && !isSurfaceTree(*o)) ||
+        // A surface (csg/surfaces.h) has no inside for the octree's cells to classify; a tree
+        // with a mesh or a profile (Op::Field) keeps its own search (hasExternalField).
+        const bool octree =
+            (accel == Accel::Octree && !isSurfaceTree(*o) && !hasExternalField(o)) ||
                             (accel == Accel::Auto && octreePays(o, options));
         out.objects.push_back(octree ? withOctree(o, options) : o);
     }

@@ -382,6 +382,18 @@ bool hasImplicitLeaf(const NodePtr& node) {
     return found;
 }
 
+bool hasExternalField(const NodePtr& node) {
+    bool found = false;
+    forEachDistinct(node, [&](const Node& n) {
+        if (found) return;
+        if (n.kind() == NodeKind::Mesh) found = true;
+        if (n.kind() != NodeKind::Implicit) return;
+        for (const TapeInstr& in : std::get<ImplicitParams>(n.params()).tape->instrs())
+            if (in.op == Op::Field) found = true;
+    });
+    return found;
+}
+
 namespace {
 
 /// The longest side of any implicit leaf's bounds, in the object's space: each leaf's own
@@ -419,6 +431,7 @@ bool octreePays(const NodePtr& object, const OctreeOptions& options) {
     const Bounds3& b = object->bounds();
     if (b.empty() || !b.finite() || !hasImplicitLeaf(object)) return false;
     if (isSurfaceTree(*object)) return false;  // csg/surfaces.h: no inside to classify cells by
+    if (hasExternalField(object)) return false;
     return largestImplicitExtent(object) >= kMinImplicitCells * frameFor(b, options).h;
 }
 

@@ -50,6 +50,12 @@ struct OctreeStats {
 /// Whether `node` holds an implicit leaf.
 bool hasImplicitLeaf(const NodePtr& node);
 
+/// Whether `node` holds a mesh or an implicit whose tape calls an external field (a profile's
+/// outline, csg/scalar_field.h). Neither gets an octree: a field's interval enclosure costs a
+/// BVH query per cell and is loose, and one pixel of models/profiles.kerf at tolerance 2e-3
+/// lost its entering crossing under the octree (cause not found; see docs/architecture.md).
+bool hasExternalField(const NodePtr& node);
+
 /// An implicit leaf narrower than this many finest cells gains nothing from the octree: its
 /// own bound box already confines its search to about as few cells (10,000 small blobs in a
 /// union, which the union's BVH finds; measured slower with the octree).
