@@ -18,7 +18,7 @@ std::shared_ptr<const PlacedMesh> placedMeshOf(const Node& object) {
         if (kind == NodeKind::Material) {
             node = node->children()[0].get();
         } else if (kind == NodeKind::Transform) {
-            const Affine& m = std::get<TransformParams>(node->params()).worldFromLocal;
+            const Affine m = std::get<TransformParams>(node->params()).worldFromLocal;  // params() is a copy
             worldFromLocal = worldFromLocal.after(m);
             node = node->children()[0].get();
         } else if (kind == NodeKind::Mesh) {
@@ -27,7 +27,8 @@ std::shared_ptr<const PlacedMesh> placedMeshOf(const Node& object) {
             return nullptr;
         }
     }
-    const MeshShape& shape = *std::get<MeshParams>(node->params()).shape;
+    const std::shared_ptr<const MeshShape> held = std::get<MeshParams>(node->params()).shape;
+    const MeshShape& shape = *held;
     auto placed = std::make_shared<PlacedMesh>();
     placed->solid = shape.isSolid();
     placed->triangles = shape.mesh().triangles;
