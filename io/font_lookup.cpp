@@ -3,14 +3,14 @@
 // usually another family. We compare the family asked for with the families of the match
 // and refuse a substitute, so a typo never renders in a different typeface unnoticed.
 
-#include "io/font_outline.h"
-
 #include <fontconfig/fontconfig.h>
+#include <sys/stat.h>
 
 #include <cctype>
 #include <memory>
 #include <mutex>
-#include <sys/stat.h>
+
+#include "io/font_outline.h"
 
 namespace kerf {
 namespace {
@@ -24,7 +24,9 @@ std::string familyKey(const std::string& name) {
     return key;
 }
 
-bool looksLikePath(const std::string& font) {
+}  // namespace
+
+bool isFontPath(const std::string& font) {
     if (font.find('/') != std::string::npos) return true;
     auto endsWith = [&](const char* ext) {
         std::string e(ext);
@@ -36,21 +38,25 @@ bool looksLikePath(const std::string& font) {
     return endsWith(".ttf") || endsWith(".otf") || endsWith(".ttc") || endsWith(".pfb");
 }
 
+namespace {
+
 struct PatternDeleter {
     void operator()(FcPattern* p) const { FcPatternDestroy(p); }
 };
 using PatternPtr = std::unique_ptr<FcPattern, PatternDeleter>;
 
-const char* const kListHint = " (list the installed fonts with `fc-list : family style`)";
+const char* const kListHint = "list the installed fonts with `fc-list : family style`";
 
 }  // namespace
 
 std::string findFontFile(const std::string& font) {
-    if (font.empty()) throw FontError("font name is empty" + std::string(kListHint));
-    if (looksLikePath(font)) {
+    if (font.empty())
+        throw FontError(FontError::Subject::Font, "the font name is empty", kListHint);
+    if (isFontPath(font)) {
         struct stat st {};
         if (::stat(font.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
-            throw FontError("font file '" + font + "' does not exist or is not a regular file");
+            throw FontError(FontError::Subject::Font,
+                            "font file '" + font + "' does not exist or is not a regular file");
         }
         return font;
     }
@@ -58,10 +64,14 @@ std::string findFontFile(const std::string& font) {
     // fontconfig's default configuration is shared process state: one lookup at a time.
     static std::mutex mutex;
     std::lock_guard<std::mutex> lock(mutex);
-    if (!FcInit()) throw FontError("cannot initialise fontconfig to look up font '" + font + "'");
+    if (!FcInit())
+        throw FontError(FontError::Subject::Font,
+                        "cannot initialise fontconfig to look up font '" + font + "'");
 
     PatternPtr pattern(FcNameParse(reinterpret_cast<const FcChar8*>(font.c_str())));
-    if (!pattern) throw FontError("'" + font + "' is not a valid font pattern" + kListHint);
+    if (!pattern)
+        throw FontError(FontError::Subject::Font, "'" + font + "' is not a valid font pattern",
+                        kListHint);
     std::string wanted;
     FcChar8* family = nullptr;
     if (FcPatternGetString(pattern.get(), FC_FAMILY, 0, &family) == FcResultMatch) {
@@ -74,7 +84,7 @@ std::string findFontFile(const std::string& font) {
     PatternPtr match(FcFontMatch(nullptr, pattern.get(), &result));
     FcChar8* file = nullptr;
     if (!match || FcPatternGetString(match.get(), FC_FILE, 0, &file) != FcResultMatch) {
-        throw FontError("no font found for '" + font + "'" + kListHint);
+        throw FontError(FontError::Subject::Font, "no font found for '" + font + "'", kListHint);
     }
 
     if (!wanted.empty()) {
@@ -90,8 +100,10 @@ std::string findFontFile(const std::string& font) {
             if (familyKey(n) == familyKey(wanted)) same = true;
         }
         if (!same) {
-            throw FontError("font '" + wanted + "' is not installed (fontconfig would substitute '" +
-                            got + "')" + kListHint);
+            throw FontError(FontError::Subject::Font,
+                            "font '" + wanted +
+                                "' is not installed (fontconfig would substitute '" + got + "')",
+                            kListHint);
         }
     }
     return reinterpret_cast<const char*>(file);

@@ -29,11 +29,16 @@ std::u32string decodeUtf8(const std::string& s) {
     std::u32string out;
     size_t i = 0;
     auto bad = [&](size_t at) {
-        return FontError("text is not valid UTF-8 (byte " + std::to_string(at + 1) + ")");
+        return FontError(FontError::Subject::Text,
+                         "text is not valid UTF-8 (byte " + std::to_string(at + 1) + ")");
     };
     while (i < s.size()) {
         unsigned char b = static_cast<unsigned char>(s[i]);
-        int n = b < 0x80 ? 0 : (b >> 5) == 0x6 ? 1 : (b >> 4) == 0xE ? 2 : (b >> 3) == 0x1E ? 3 : -1;
+        int n = b < 0x80           ? 0
+                : (b >> 5) == 0x6  ? 1
+                : (b >> 4) == 0xE  ? 2
+                : (b >> 3) == 0x1E ? 3
+                                   : -1;
         if (n < 0) throw bad(i);
         char32_t c = n == 0 ? b : n == 1 ? (b & 0x1F) : n == 2 ? (b & 0x0F) : (b & 0x07);
         for (int k = 1; k <= n; ++k) {
@@ -150,87 +155,90 @@ Bounds2 segmentBounds(const PathSegment& s) {
     include(b, s.start());
     include(b, s.end());
     switch (s.kind) {
-    case PathSegment::Kind::Line:
-        break;
-    case PathSegment::Kind::Quadratic:
-        // Per axis the derivative 2[(1-t)(p1-p0) + t(p2-p1)] vanishes once.
-        for (int a = 0; a < 2; ++a) {
-            double d = s.p[0][a] - 2.0 * s.p[1][a] + s.p[2][a];
-            if (d != 0.0) {
-                double t = (s.p[0][a] - s.p[1][a]) / d;
-                if (t > 0.0 && t < 1.0) include(b, quadraticAt(s, t));
-            }
-        }
-        break;
-    case PathSegment::Kind::Cubic:
-        // Per axis the derivative is the quadratic a t² + b t + c (up to the factor 3).
-        for (int ax = 0; ax < 2; ++ax) {
-            double p0 = s.p[0][ax], p1 = s.p[1][ax], p2 = s.p[2][ax], p3 = s.p[3][ax];
-            double a = -p0 + 3.0 * p1 - 3.0 * p2 + p3, bb = 2.0 * (p0 - 2.0 * p1 + p2),
-                   c = p1 - p0;
-            double roots[2];
-            int n = 0;
-            if (a == 0.0) {
-                if (bb != 0.0) roots[n++] = -c / bb;
-            } else {
-                double disc = bb * bb - 4.0 * a * c;
-                if (disc >= 0.0) {
-                    double q = -0.5 * (bb + std::copysign(std::sqrt(disc), bb));
-                    roots[n++] = q / a;
-                    if (q != 0.0) roots[n++] = c / q;
+        case PathSegment::Kind::Line:
+            break;
+        case PathSegment::Kind::Quadratic:
+            // Per axis the derivative 2[(1-t)(p1-p0) + t(p2-p1)] vanishes once.
+            for (int a = 0; a < 2; ++a) {
+                double d = s.p[0][a] - 2.0 * s.p[1][a] + s.p[2][a];
+                if (d != 0.0) {
+                    double t = (s.p[0][a] - s.p[1][a]) / d;
+                    if (t > 0.0 && t < 1.0) include(b, quadraticAt(s, t));
                 }
             }
-            for (int i = 0; i < n; ++i) {
-                if (roots[i] > 0.0 && roots[i] < 1.0) include(b, cubicAt(s, roots[i]));
+            break;
+        case PathSegment::Kind::Cubic:
+            // Per axis the derivative is the quadratic a t² + b t + c (up to the factor 3).
+            for (int ax = 0; ax < 2; ++ax) {
+                double p0 = s.p[0][ax], p1 = s.p[1][ax], p2 = s.p[2][ax], p3 = s.p[3][ax];
+                double a = -p0 + 3.0 * p1 - 3.0 * p2 + p3, bb = 2.0 * (p0 - 2.0 * p1 + p2),
+                       c = p1 - p0;
+                double roots[2];
+                int n = 0;
+                if (a == 0.0) {
+                    if (bb != 0.0) roots[n++] = -c / bb;
+                } else {
+                    double disc = bb * bb - 4.0 * a * c;
+                    if (disc >= 0.0) {
+                        double q = -0.5 * (bb + std::copysign(std::sqrt(disc), bb));
+                        roots[n++] = q / a;
+                        if (q != 0.0) roots[n++] = c / q;
+                    }
+                }
+                for (int i = 0; i < n; ++i) {
+                    if (roots[i] > 0.0 && roots[i] < 1.0) include(b, cubicAt(s, roots[i]));
+                }
             }
-        }
-        break;
-    case PathSegment::Kind::Arc: {
-        // The ends and the axis points of the circle that lie within the sweep.
-        Vec2 c = s.p[2];
-        double r = glm::length(s.p[0] - c);
-        double a0 = std::atan2(s.p[0].y - c.y, s.p[0].x - c.x);
-        double a1 = std::atan2(s.p[1].y - c.y, s.p[1].x - c.x);
-        if (!s.ccw) std::swap(a0, a1);
-        const double twoPi = 2.0 * M_PI;
-        double sweep = std::fmod(a1 - a0 + 2.0 * twoPi, twoPi);
-        if (sweep == 0.0) sweep = twoPi;  // same ends: a full turn
-        for (int k = 0; k < 4; ++k) {
-            double ang = k * 0.5 * M_PI;
-            if (std::fmod(ang - a0 + 2.0 * twoPi, twoPi) <= sweep) {
-                include(b, c + r * Vec2(std::cos(ang), std::sin(ang)));
+            break;
+        case PathSegment::Kind::Arc: {
+            // The ends and the axis points of the circle that lie within the sweep.
+            Vec2 c = s.p[2];
+            double r = glm::length(s.p[0] - c);
+            double a0 = std::atan2(s.p[0].y - c.y, s.p[0].x - c.x);
+            double a1 = std::atan2(s.p[1].y - c.y, s.p[1].x - c.x);
+            if (!s.ccw) std::swap(a0, a1);
+            const double twoPi = 2.0 * M_PI;
+            double sweep = std::fmod(a1 - a0 + 2.0 * twoPi, twoPi);
+            if (sweep == 0.0) sweep = twoPi;  // same ends: a full turn
+            for (int k = 0; k < 4; ++k) {
+                double ang = k * 0.5 * M_PI;
+                if (std::fmod(ang - a0 + 2.0 * twoPi, twoPi) <= sweep) {
+                    include(b, c + r * Vec2(std::cos(ang), std::sin(ang)));
+                }
             }
+            break;
         }
-        break;
-    }
     }
     return b;
 }
 
 TextOutline layoutText(const TextSpec& spec) {
     if (!(std::isfinite(spec.size) && spec.size > 0.0)) {
-        throw FontError("text size must be finite and greater than 0");
+        throw FontError(FontError::Subject::Text, "text size must be finite and greater than 0");
     }
     if (!(std::isfinite(spec.spacing) && spec.spacing > 0.0)) {
-        throw FontError("text spacing must be finite and greater than 0");
+        throw FontError(FontError::Subject::Text, "text spacing must be finite and greater than 0");
     }
     std::u32string chars = decodeUtf8(spec.text);
     for (char32_t c : chars) {
-        if (c == U'\n' || c == U'\r') throw FontError("text must be one line (it has a line break)");
+        if (c == U'\n' || c == U'\r')
+            throw FontError(FontError::Subject::Text,
+                            "text must be one line (it has a line break)");
     }
 
     TextOutline out;
     out.fontFile = findFontFile(spec.font);
     FreeTypeFace ft;
-    if (FT_Init_FreeType(&ft.library) != 0) throw FontError("cannot initialise FreeType");
+    if (FT_Init_FreeType(&ft.library) != 0)
+        throw FontError(FontError::Subject::Font, "cannot initialise FreeType");
     if (FT_New_Face(ft.library, out.fontFile.c_str(), 0, &ft.face) != 0) {
-        throw FontError("cannot read font file '" + out.fontFile + "' (for font '" + spec.font +
-                        "')");
+        throw FontError(FontError::Subject::Font, "cannot read font file '" + out.fontFile +
+                                                      "' (for font '" + spec.font + "')");
     }
     FT_Face face = ft.face;
     if (!FT_IS_SCALABLE(face) || face->units_per_EM == 0) {
-        throw FontError("font '" + spec.font + "' (" + out.fontFile +
-                        ") has no outlines (a bitmap font)");
+        throw FontError(FontError::Subject::Font, "font '" + spec.font + "' (" + out.fontFile +
+                                                      ") has no outlines (a bitmap font)");
     }
     out.fontHasKerning = FT_HAS_KERNING(face);
 
@@ -247,8 +255,8 @@ TextOutline layoutText(const TextSpec& spec) {
     for (char32_t c : chars) {
         FT_UInt index = FT_Get_Char_Index(face, c);
         if (index == 0) {
-            throw FontError("font '" + spec.font + "' (" + out.fontFile + ") has no glyph for " +
-                            codepointName(c));
+            throw FontError(FontError::Subject::Text, "font '" + spec.font + "' (" + out.fontFile +
+                                                          ") has no glyph for " + codepointName(c));
         }
         if (previous != 0 && out.fontHasKerning) {
             FT_Vector kern{0, 0};
@@ -259,13 +267,15 @@ TextOutline layoutText(const TextSpec& spec) {
         if (FT_Load_Glyph(face, index, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP) !=
                 0 ||
             face->glyph->format != FT_GLYPH_FORMAT_OUTLINE) {
-            throw FontError("font '" + spec.font + "' (" + out.fontFile +
-                            "): cannot load the outline of " + codepointName(c));
+            throw FontError(FontError::Subject::Font, "font '" + spec.font + "' (" + out.fontFile +
+                                                          "): cannot load the outline of " +
+                                                          codepointName(c));
         }
         sink.shape.loops.clear();
         if (FT_Outline_Decompose(&face->glyph->outline, &funcs, &sink) != 0) {
-            throw FontError("font '" + spec.font + "' (" + out.fontFile +
-                            "): cannot read the outline of " + codepointName(c));
+            throw FontError(FontError::Subject::Font, "font '" + spec.font + "' (" + out.fontFile +
+                                                          "): cannot read the outline of " +
+                                                          codepointName(c));
         }
         sink.closeLoop();
         if (!sink.shape.loops.empty()) {
@@ -298,19 +308,27 @@ TextOutline layoutText(const TextSpec& spec) {
     Vec2 shift{0.0, 0.0};
     bool ink = !out.ink.empty();
     switch (spec.halign) {
-    case TextSpec::HAlign::Left: break;
-    case TextSpec::HAlign::Right: shift.x = -out.advance; break;
-    case TextSpec::HAlign::Center:
-        if (ink) shift.x = -0.5 * (out.ink.lo.x + out.ink.hi.x);
-        break;
+        case TextSpec::HAlign::Left:
+            break;
+        case TextSpec::HAlign::Right:
+            shift.x = -out.advance;
+            break;
+        case TextSpec::HAlign::Center:
+            if (ink) shift.x = -0.5 * (out.ink.lo.x + out.ink.hi.x);
+            break;
     }
     switch (spec.valign) {
-    case TextSpec::VAlign::Baseline: break;
-    case TextSpec::VAlign::Top: if (ink) shift.y = -out.ink.hi.y; break;
-    case TextSpec::VAlign::Bottom: if (ink) shift.y = -out.ink.lo.y; break;
-    case TextSpec::VAlign::Center:
-        if (ink) shift.y = -0.5 * (out.ink.lo.y + out.ink.hi.y);
-        break;
+        case TextSpec::VAlign::Baseline:
+            break;
+        case TextSpec::VAlign::Top:
+            if (ink) shift.y = -out.ink.hi.y;
+            break;
+        case TextSpec::VAlign::Bottom:
+            if (ink) shift.y = -out.ink.lo.y;
+            break;
+        case TextSpec::VAlign::Center:
+            if (ink) shift.y = -0.5 * (out.ink.lo.y + out.ink.hi.y);
+            break;
     }
     if (shift != Vec2(0.0, 0.0)) {
         for (auto& g : out.glyphs) translate(g, shift);

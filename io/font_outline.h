@@ -8,18 +8,28 @@
 /// io links nothing of csg).
 #pragma once
 
-#include "csg/profile_path.h"
-
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "csg/profile_path.h"
+
 namespace kerf {
 
-/// Thrown for a font that cannot be found or read, or a text it cannot draw. what() is a
-/// complete sentence naming the font (and the character, when one is missing).
+/// Thrown for a font that cannot be found or read, or a text it cannot draw. `message` names
+/// the font (and the character, when one is missing); `hint` says what to do, if anything
+/// (how to list the installed fonts). what() is both.
 struct FontError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    /// What is wrong: the font (lookup, file) or the text (its bytes, a missing glyph, size).
+    enum class Subject { Font, Text };
+    FontError(Subject subject, const std::string& message, const std::string& hint = {})
+        : std::runtime_error(hint.empty() ? message : message + " (" + hint + ")"),
+          subject(subject),
+          message(message),
+          hint(hint) {}
+    Subject subject;
+    std::string message;
+    std::string hint;
 };
 
 struct TextSpec {
@@ -52,13 +62,13 @@ struct TextOutline {
     std::vector<PathShape> glyphs;
     /// All glyphs' loops in one even-odd shape: the text exactly when !glyphsOverlap.
     PathShape shape;
-    Bounds2 ink;             ///< exact bounds of the curves (not of their control points)
-    double penStart = 0.0;   ///< x where the pen starts (0 for Left)
-    double advance = 0.0;    ///< the kerned, spaced advance of the whole line
+    Bounds2 ink;            ///< exact bounds of the curves (not of their control points)
+    double penStart = 0.0;  ///< x where the pen starts (0 for Left)
+    double advance = 0.0;   ///< the kerned, spaced advance of the whole line
     /// Whether two glyphs' ink bounds overlap: then the even-odd `shape` could show the
     /// overlap as a hole, and a caller should take the union of `glyphs` instead.
     bool glyphsOverlap = false;
-    std::string fontFile;    ///< the file the font came from
+    std::string fontFile;         ///< the file the font came from
     bool fontHasKerning = false;  ///< the font has a 'kern' table FreeType reads
 };
 
@@ -78,6 +88,10 @@ PathShape textOutline(const TextSpec& spec);
 /// The file fontconfig picks for `pattern` (or `pattern` itself when it names a file), the
 /// same lookup layoutText does. Throws FontError as layoutText does.
 std::string findFontFile(const std::string& pattern);
+
+/// Whether `font` is taken as a file path rather than a fontconfig pattern: it has a '/' or
+/// ends with a font file's extension (.ttf, .otf, .ttc, .pfb).
+bool isFontPath(const std::string& font);
 
 /// Exact bounds of a segment's curve (its ends and the extrema of its Bézier).
 Bounds2 segmentBounds(const PathSegment& segment);

@@ -18,6 +18,7 @@
 #pragma once
 
 #include "csg/expr.h"
+#include "io/font_outline.h"
 #include "scene/scene.h"
 #include "lang/ast.h"
 #include "lang/eval_limits.h"
@@ -195,6 +196,12 @@ private:
     int heightOf(const NodePtr& node);
     /// `node`, or null with an error at `at` if its tree is deeper than kMaxCsgDepth.
     NodePtr limitDepth(NodePtr node, SourcePos at);
+
+    // lower_text.cpp
+    /// A `text { string … font … size … }` profile laid out (io/font_outline.h); nullopt with
+    /// an error at the property at fault (a missing font at `font`, a missing glyph at
+    /// `string`). The caller takes the union of `glyphs` when `glyphsOverlap`.
+    std::optional<TextOutline> lowerText(const Solid& s);
 
     // lower_scene.cpp
     void lowerMaterial(const Statement& s, Material& m);

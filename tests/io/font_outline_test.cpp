@@ -4,9 +4,9 @@
 
 #include "io/font_outline.h"
 
-#include <catch2/catch.hpp>
-
 #include <ft2build.h>
+
+#include <catch2/catch.hpp>
 #include FT_FREETYPE_H
 #include FT_OUTLINE_H
 #include FT_BBOX_H
@@ -23,12 +23,15 @@ namespace {
 Vec2 pointAt(const PathSegment& s, double t) {
     double u = 1.0 - t;
     switch (s.kind) {
-    case PathSegment::Kind::Line: return u * s.p[0] + t * s.p[1];
-    case PathSegment::Kind::Quadratic: return u * u * s.p[0] + 2 * u * t * s.p[1] + t * t * s.p[2];
-    case PathSegment::Kind::Cubic:
-        return u * u * u * s.p[0] + 3 * u * u * t * s.p[1] + 3 * u * t * t * s.p[2] +
-               t * t * t * s.p[3];
-    case PathSegment::Kind::Arc: break;
+        case PathSegment::Kind::Line:
+            return u * s.p[0] + t * s.p[1];
+        case PathSegment::Kind::Quadratic:
+            return u * u * s.p[0] + 2 * u * t * s.p[1] + t * t * s.p[2];
+        case PathSegment::Kind::Cubic:
+            return u * u * u * s.p[0] + 3 * u * u * t * s.p[1] + 3 * u * t * t * s.p[2] +
+                   t * t * t * s.p[3];
+        case PathSegment::Kind::Arc:
+            break;
     }
     FAIL("glyph outlines have no arcs");
     return {};
@@ -77,7 +80,10 @@ bool insideEvenOdd(const PathShape& shape, Vec2 q) {
                 if (!(up ? (y0 <= q.y && q.y < y1) : (y1 <= q.y && q.y < y0))) continue;
                 for (int k = 0; k < 80; ++k) {
                     double tm = 0.5 * (t0 + t1);
-                    if ((pointAt(seg, tm).y <= q.y) == up) t0 = tm; else t1 = tm;
+                    if ((pointAt(seg, tm).y <= q.y) == up)
+                        t0 = tm;
+                    else
+                        t1 = tm;
                 }
                 if (pointAt(seg, 0.5 * (t0 + t1)).x > q.x) ++crossings;
             }
@@ -91,7 +97,8 @@ double distanceToOutline(const PathShape& shape, Vec2 q) {
     double best = INFINITY;
     for (const auto& loop : shape.loops) {
         for (const auto& seg : loop.segments) {
-            for (int i = 0; i <= 2000; ++i) best = std::min(best, glm::length(pointAt(seg, i / 2000.0) - q));
+            for (int i = 0; i <= 2000; ++i)
+                best = std::min(best, glm::length(pointAt(seg, i / 2000.0) - q));
         }
     }
     return best;
@@ -137,8 +144,8 @@ void compareWithFreeTypeRaster(const std::string& utf8, char32_t code, int ppem)
     std::string firstFar;
     for (int j = -margin; j < static_cast<int>(bm.rows) + margin; ++j) {
         for (int i = -margin; i < static_cast<int>(bm.width) + margin; ++i) {
-            bool inBitmap = i >= 0 && j >= 0 && i < static_cast<int>(bm.width) &&
-                            j < static_cast<int>(bm.rows);
+            bool inBitmap =
+                i >= 0 && j >= 0 && i < static_cast<int>(bm.width) && j < static_cast<int>(bm.rows);
             int cov = inBitmap ? bm.buffer[j * bm.pitch + i] : 0;
             if (cov != 0 && cov != 255) continue;  // the outline crosses this pixel
             Vec2 q{ft.face->glyph->bitmap_left + i + 0.5, ft.face->glyph->bitmap_top - j - 0.5};
@@ -199,7 +206,8 @@ TEST_CASE("font_outline::outlines are the font's points, exactly") {
         REQUIRE(FT_Load_Char(ft.face, 'H', FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING) == 0);
         const FT_Outline& o = ft.face->glyph->outline;
         std::set<std::pair<double, double>> fontPoints, ours;
-        for (int k = 0; k < o.n_points; ++k) fontPoints.insert({double(o.points[k].x), double(o.points[k].y)});
+        for (int k = 0; k < o.n_points; ++k)
+            fontPoints.insert({double(o.points[k].x), double(o.points[k].y)});
         for (const auto& loop : shape.loops) {
             for (const auto& seg : loop.segments) {
                 CHECK(seg.kind == PathSegment::Kind::Line);
@@ -336,18 +344,21 @@ TEST_CASE("font_outline::alignment") {
 TEST_CASE("font_outline::errors") {
     TextSpec spec;
     spec.text = "kerf";
+    // what() with the subject first: "font: …" or "text: …".
     auto message = [&]() -> std::string {
         try {
             layoutText(spec);
         } catch (const FontError& e) {
-            return e.what();
+            return (e.subject == FontError::Subject::Font ? "font: " : "text: ") +
+                   std::string(e.what());
         }
         return "(no error)";
     };
     SECTION("a family fontconfig does not have is not silently substituted") {
         spec.font = "Kerf No Such Font";
         std::string m = message();
-        CHECK_THAT(m, Catch::Contains("'Kerf No Such Font' is not installed"));
+        CHECK_THAT(m, Catch::StartsWith("font: font 'Kerf No Such Font' is not installed"));
+        CHECK_THAT(m, Catch::Contains("would substitute 'DejaVu"));
         CHECK_THAT(m, Catch::Contains("fc-list"));
     }
     SECTION("a font file that does not exist") {
@@ -356,12 +367,12 @@ TEST_CASE("font_outline::errors") {
     }
     SECTION("a file that is not a font") {
         spec.font = KERF_SOURCE_DIR "/io/font_outline.h";
-        CHECK_THAT(message(), Catch::Contains("cannot read font file"));
+        CHECK_THAT(message(), Catch::StartsWith("font: cannot read font file"));
     }
     SECTION("a character the font has no glyph for") {
         spec.font = kFont;
         spec.text = "a\xE4\xB8\xAD";  // U+4E2D, a CJK ideograph DejaVu does not cover
-        CHECK_THAT(message(), Catch::Contains("has no glyph for U+4E2D"));
+        CHECK_THAT(message(), Catch::StartsWith("text: ") && Catch::Contains("has no glyph for U+4E2D"));
     }
     SECTION("invalid UTF-8, line breaks, sizes") {
         spec.font = kFont;
