@@ -116,7 +116,7 @@ int cubicTo(const FT_Vector* c1, const FT_Vector* c2, const FT_Vector* to, void*
     return 0;
 }
 
-void include(Bounds2& b, Vec2 p) {
+void include(InkBounds& b, Vec2 p) {
     if (b.empty()) {
         b.lo = b.hi = p;
     } else {
@@ -124,7 +124,7 @@ void include(Bounds2& b, Vec2 p) {
         b.hi = glm::max(b.hi, p);
     }
 }
-void include(Bounds2& b, const Bounds2& o) {
+void include(InkBounds& b, const InkBounds& o) {
     if (o.empty()) return;
     include(b, o.lo);
     include(b, o.hi);
@@ -150,8 +150,8 @@ void translate(PathShape& shape, Vec2 d) {
 
 }  // namespace
 
-Bounds2 segmentBounds(const PathSegment& s) {
-    Bounds2 b;
+InkBounds segmentBounds(const PathSegment& s) {
+    InkBounds b;
     include(b, s.start());
     include(b, s.end());
     switch (s.kind) {
@@ -250,7 +250,7 @@ TextOutline layoutText(const TextSpec& spec) {
 
     OutlineSink sink;
     sink.scale = spec.size / static_cast<double>(face->units_per_EM);
-    std::vector<Bounds2> glyphInk;
+    std::vector<InkBounds> glyphInk;
     FT_UInt previous = 0;
     for (char32_t c : chars) {
         FT_UInt index = FT_Get_Char_Index(face, c);
@@ -279,7 +279,7 @@ TextOutline layoutText(const TextSpec& spec) {
         }
         sink.closeLoop();
         if (!sink.shape.loops.empty()) {
-            Bounds2 ink;
+            InkBounds ink;
             for (const auto& loop : sink.shape.loops) {
                 for (const auto& seg : loop.segments) include(ink, segmentBounds(seg));
             }
@@ -296,7 +296,7 @@ TextOutline layoutText(const TextSpec& spec) {
 
     for (size_t i = 0; i < glyphInk.size() && !out.glyphsOverlap; ++i) {
         for (size_t j = i + 1; j < glyphInk.size(); ++j) {
-            const Bounds2 &a = glyphInk[i], &b = glyphInk[j];
+            const InkBounds &a = glyphInk[i], &b = glyphInk[j];
             if (a.lo.x < b.hi.x && b.lo.x < a.hi.x && a.lo.y < b.hi.y && b.lo.y < a.hi.y) {
                 out.glyphsOverlap = true;
                 break;

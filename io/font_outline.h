@@ -49,7 +49,7 @@ struct TextSpec {
 };
 
 /// Axis-aligned bounds in the plane; empty (lo > hi) when there is no ink.
-struct Bounds2 {
+struct InkBounds {
     Vec2 lo{1.0, 1.0}, hi{-1.0, -1.0};
     bool empty() const { return lo.x > hi.x; }
 };
@@ -62,7 +62,7 @@ struct TextOutline {
     std::vector<PathShape> glyphs;
     /// All glyphs' loops in one even-odd shape: the text exactly when !glyphsOverlap.
     PathShape shape;
-    Bounds2 ink;            ///< exact bounds of the curves (not of their control points)
+    InkBounds ink;          ///< exact bounds of the curves (not of their control points)
     double penStart = 0.0;  ///< x where the pen starts (0 for Left)
     double advance = 0.0;   ///< the kerned, spaced advance of the whole line
     /// Whether two glyphs' ink bounds overlap: then the even-odd `shape` could show the
@@ -94,6 +94,6 @@ std::string findFontFile(const std::string& pattern);
 bool isFontPath(const std::string& font);
 
 /// Exact bounds of a segment's curve (its ends and the extrema of its Bézier).
-Bounds2 segmentBounds(const PathSegment& segment);
+InkBounds segmentBounds(const PathSegment& segment);
 
 }  // namespace kerf

@@ -267,10 +267,10 @@ TEST_CASE("font_outline::advances and kerning") {
     // The V is placed at A's advance plus the kerning: its leftmost point moves by exactly that.
     spec.text = "V";
     TextOutline vAlone = layoutText(spec);
-    Bounds2 vInAv;
+    InkBounds vInAv;
     for (const auto& loop : av.glyphs[1].loops) {
         for (const auto& seg : loop.segments) {
-            Bounds2 b = segmentBounds(seg);
+            InkBounds b = segmentBounds(seg);
             if (vInAv.empty()) vInAv = b;
             vInAv.lo = glm::min(vInAv.lo, b.lo);
             vInAv.hi = glm::max(vInAv.hi, b.hi);
@@ -372,7 +372,8 @@ TEST_CASE("font_outline::errors") {
     SECTION("a character the font has no glyph for") {
         spec.font = kFont;
         spec.text = "a\xE4\xB8\xAD";  // U+4E2D, a CJK ideograph DejaVu does not cover
-        CHECK_THAT(message(), Catch::StartsWith("text: ") && Catch::Contains("has no glyph for U+4E2D"));
+        CHECK_THAT(message(),
+                   Catch::StartsWith("text: ") && Catch::Contains("has no glyph for U+4E2D"));
     }
     SECTION("invalid UTF-8, line breaks, sizes") {
         spec.font = kFont;
