@@ -8,6 +8,8 @@
 #include "io/font_outline.h"
 
 #include <ft2build.h>
+
+#include "io/outline_overlap.h"
 #include FT_FREETYPE_H
 #include FT_OUTLINE_H
 
@@ -297,7 +299,8 @@ TextOutline layoutText(const TextSpec& spec) {
     for (size_t i = 0; i < glyphInk.size() && !out.glyphsOverlap; ++i) {
         for (size_t j = i + 1; j < glyphInk.size(); ++j) {
             const InkBounds &a = glyphInk[i], &b = glyphInk[j];
-            if (a.lo.x < b.hi.x && b.lo.x < a.hi.x && a.lo.y < b.hi.y && b.lo.y < a.hi.y) {
+            if (a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y &&
+                outlinesMayOverlap(out.glyphs[i], out.glyphs[j])) {
                 out.glyphsOverlap = true;
                 break;
             }

@@ -65,8 +65,9 @@ struct TextOutline {
     InkBounds ink;          ///< exact bounds of the curves (not of their control points)
     double penStart = 0.0;  ///< x where the pen starts (0 for Left)
     double advance = 0.0;   ///< the kerned, spaced advance of the whole line
-    /// Whether two glyphs' ink bounds overlap: then the even-odd `shape` could show the
-    /// overlap as a hole, and a caller should take the union of `glyphs` instead.
+    /// Whether two glyphs may share a point (io/outline_overlap.h: their outlines cross or
+    /// touch, or one holds the other): then the even-odd `shape` would show the overlap as a
+    /// hole, and a caller should take the union of `glyphs` instead.
     bool glyphsOverlap = false;
     std::string fontFile;         ///< the file the font came from
     bool fontHasKerning = false;  ///< the font has a 'kern' table FreeType reads

@@ -67,7 +67,7 @@ std::vector<double> yMonotoneBreaks(const PathSegment& s) {
 // Even-odd inside test by counting crossings of the ray from q towards +x: each y-monotone
 // piece crosses the line y = q.y at most once (half-open in y, so a shared end counts once),
 // found by bisection to the last bit.
-bool insideEvenOdd(const PathShape& shape, Vec2 q) {
+bool oracleInside(const PathShape& shape, Vec2 q) {
     int crossings = 0;
     for (const auto& loop : shape.loops) {
         for (const auto& seg : loop.segments) {
@@ -149,7 +149,7 @@ void compareWithFreeTypeRaster(const std::string& utf8, char32_t code, int ppem)
             int cov = inBitmap ? bm.buffer[j * bm.pitch + i] : 0;
             if (cov != 0 && cov != 255) continue;  // the outline crosses this pixel
             Vec2 q{ft.face->glyph->bitmap_left + i + 0.5, ft.face->glyph->bitmap_top - j - 0.5};
-            bool ours = insideEvenOdd(shape, q);
+            bool ours = oracleInside(shape, q);
             ++checked;
             inside += ours;
             if (ours != (cov == 255)) {
