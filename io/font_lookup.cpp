@@ -49,7 +49,7 @@ const char* const kListHint = "list the installed fonts with `fc-list : family s
 
 }  // namespace
 
-std::string findFontFile(const std::string& font) {
+FontLocation findFont(const std::string& font) {
     if (font.empty())
         throw FontError(FontError::Subject::Font, "the font name is empty", kListHint);
     if (isFontPath(font)) {
@@ -58,7 +58,7 @@ std::string findFontFile(const std::string& font) {
             throw FontError(FontError::Subject::Font,
                             "font file '" + font + "' does not exist or is not a regular file");
         }
-        return font;
+        return {font, 0};
     }
 
     // fontconfig's default configuration is shared process state: one lookup at a time.
@@ -77,6 +77,11 @@ std::string findFontFile(const std::string& font) {
     if (FcPatternGetString(pattern.get(), FC_FAMILY, 0, &family) == FcResultMatch) {
         wanted = reinterpret_cast<const char*>(family);
     }
+
+    // The style asked for, read before the defaults fill it in.
+    int wantedWeight = -1, wantedSlant = -1;
+    FcPatternGetInteger(pattern.get(), FC_WEIGHT, 0, &wantedWeight);
+    FcPatternGetInteger(pattern.get(), FC_SLANT, 0, &wantedSlant);
 
     FcConfigSubstitute(nullptr, pattern.get(), FcMatchPattern);
     FcDefaultSubstitute(pattern.get());
@@ -106,7 +111,31 @@ std::string findFontFile(const std::string& font) {
                             kListHint);
         }
     }
-    return reinterpret_cast<const char*>(file);
+
+    // A style the family lacks is also substituted silently (a regular face for "bold"); the
+    // outlines would be the regular ones, so it is refused too. Near weights are accepted
+    // ("light" finds ExtraLight), a weight on the other side of regular is not.
+    int gotWeight = FC_WEIGHT_REGULAR, gotSlant = FC_SLANT_ROMAN;
+    FcPatternGetInteger(match.get(), FC_WEIGHT, 0, &gotWeight);
+    FcPatternGetInteger(match.get(), FC_SLANT, 0, &gotSlant);
+    FcChar8* gotStyle = nullptr;
+    FcPatternGetString(match.get(), FC_STYLE, 0, &gotStyle);
+    const std::string style = gotStyle ? reinterpret_cast<const char*>(gotStyle) : "?";
+    const bool heavyWanted = wantedWeight >= FC_WEIGHT_DEMIBOLD;
+    const bool lightWanted = wantedWeight >= 0 && wantedWeight <= FC_WEIGHT_LIGHT;
+    if ((heavyWanted && gotWeight < FC_WEIGHT_DEMIBOLD) ||
+        (lightWanted && gotWeight > FC_WEIGHT_LIGHT) ||
+        (wantedSlant > FC_SLANT_ROMAN && gotSlant == FC_SLANT_ROMAN)) {
+        throw FontError(FontError::Subject::Font,
+                        "font '" + font + "' has no such style (fontconfig would use '" +
+                            (wanted.empty() ? std::string() : wanted + " ") + style + "')",
+                        kListHint);
+    }
+    int index = 0;
+    FcPatternGetInteger(match.get(), FC_INDEX, 0, &index);
+    return {reinterpret_cast<const char*>(file), index};
 }
+
+std::string findFontFile(const std::string& font) { return findFont(font).file; }
 
 }  // namespace kerf

@@ -229,11 +229,12 @@ TextOutline layoutText(const TextSpec& spec) {
     }
 
     TextOutline out;
-    out.fontFile = findFontFile(spec.font);
+    const FontLocation location = findFont(spec.font);
+    out.fontFile = location.file;
     FreeTypeFace ft;
     if (FT_Init_FreeType(&ft.library) != 0)
         throw FontError(FontError::Subject::Font, "cannot initialise FreeType");
-    if (FT_New_Face(ft.library, out.fontFile.c_str(), 0, &ft.face) != 0) {
+    if (FT_New_Face(ft.library, out.fontFile.c_str(), location.index, &ft.face) != 0) {
         throw FontError(FontError::Subject::Font, "cannot read font file '" + out.fontFile +
                                                       "' (for font '" + spec.font + "')");
     }

@@ -86,8 +86,17 @@ TextOutline layoutText(const TextSpec& spec);
 /// `layoutText(spec).shape`.
 PathShape textOutline(const TextSpec& spec);
 
-/// The file fontconfig picks for `pattern` (or `pattern` itself when it names a file), the
-/// same lookup layoutText does. Throws FontError as layoutText does.
+/// A font face: a file, and the face's index within it (a collection, .ttc, holds several).
+struct FontLocation {
+    std::string file;
+    int index = 0;
+};
+
+/// The face fontconfig picks for `pattern` (or face 0 of `pattern` itself when it names a
+/// file), the lookup layoutText does. Throws FontError as layoutText does, also for a style
+/// the family lacks ("DejaVu Serif:light": fontconfig would give the Book face).
+FontLocation findFont(const std::string& pattern);
+/// `findFont(pattern).file`.
 std::string findFontFile(const std::string& pattern);
 
 /// Whether `font` is taken as a file path rather than a fontconfig pattern: it has a '/' or

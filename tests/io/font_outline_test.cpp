@@ -390,7 +390,14 @@ TEST_CASE("font_outline::errors") {
         spec.spacing = NAN;
         CHECK_THAT(message(), Catch::Contains("spacing must be finite"));
     }
-    SECTION("a style of an installed family is found") {
+    SECTION("a style of an installed family is found; a style it lacks is an error") {
         CHECK_THAT(findFontFile("DejaVu Sans:bold"), Catch::Contains("Bold"));
+        CHECK_THAT(findFontFile("DejaVu Sans:italic"), Catch::Contains("Oblique"));
+        CHECK_THAT(findFontFile("DejaVu Sans:light"), Catch::Contains("ExtraLight"));
+        spec.font = "DejaVu Serif:light";  // DejaVu Serif has no light face
+        CHECK_THAT(message(),
+                   Catch::StartsWith("font: font 'DejaVu Serif:light' has no such style"));
+        spec.font = "DejaVu Sans Mono:light";
+        CHECK_THAT(message(), Catch::Contains("has no such style"));
     }
 }
