@@ -297,11 +297,18 @@ TextOutline layoutText(const TextSpec& spec) {
     }
     out.advance = sink.pen.x * sink.scale;
 
-    for (size_t i = 0; i < glyphInk.size() && !out.glyphsOverlap; ++i) {
-        for (size_t j = i + 1; j < glyphInk.size(); ++j) {
-            const InkBounds &a = glyphInk[i], &b = glyphInk[j];
-            if (a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y &&
-                outlinesMayOverlap(out.glyphs[i], out.glyphs[j])) {
+    // Pairs whose ink bounds meet, by a sweep in x (a long line is not quadratic in its
+    // length), then the exact test of their outlines.
+    std::vector<size_t> order(glyphInk.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return glyphInk[a].lo.x < glyphInk[b].lo.x; });
+    for (size_t k = 0; k < order.size() && !out.glyphsOverlap; ++k) {
+        const InkBounds& a = glyphInk[order[k]];
+        for (size_t m = k + 1; m < order.size() && glyphInk[order[m]].lo.x <= a.hi.x; ++m) {
+            const InkBounds& b = glyphInk[order[m]];
+            if (a.lo.y <= b.hi.y && b.lo.y <= a.hi.y &&
+                outlinesMayOverlap(out.glyphs[order[k]], out.glyphs[order[m]])) {
                 out.glyphsOverlap = true;
                 break;
             }
