@@ -3,6 +3,7 @@
 
 #include "lang/compile.h"
 #include "lang/diagnostic.h"
+#include "lang/openscad_csg.h"
 #include "lang/source.h"
 
 #include <cerrno>
@@ -34,7 +35,8 @@ std::optional<Scene> loadModel(const std::string& path, std::ostream& err, bool 
         return std::nullopt;
     }
     DiagnosticSink sink;
-    std::optional<Scene> scene = compileFile(path, sink);
+    // OpenSCAD's exported CSG trees (.csg) have their own reader; everything else is kerf's language.
+    std::optional<Scene> scene = isOpenScadCsgPath(path) ? compileOpenScadFile(path, sink) : compileFile(path, sink);
     if (!sink.diagnostics().empty()) err << sink.format(!quiet);  // --quiet silences echo
     if (!scene && !sink.hasErrors()) {
         // The contract says errors are reported; never fail silently if one was not.

@@ -1,13 +1,18 @@
-// The triangle BVH's figures: build time (1 and 2 threads) and single-thread primary- and
-// shadow-ray throughput on three generated meshes, with a brute-force check of a sample of the
-// rays (the same watertight test over every triangle: t must agree bit for bit).
+// The triangle BVH's figures: build time (1 and 2 threads) and primary- and shadow-ray
+// throughput (1 thread, CPU and wall time; 2 threads, wall time) on three generated meshes,
+// with a brute-force check of a sample of the rays (the same watertight test over every
+// triangle: hit and t must agree bit for bit; shadow rays: occluded or not).
 // Built only when asked: cmake --build build --target kerf_bvh_bench; run: build/mesh/kerf_bvh_bench
 // [--size N] (image N×N rays per mesh, default 1024) [--only sphere|city|fan]
-// [--traversal-cost C] [--leaf N] (build options, to tune).
+// [--traversal-cost C] [--leaf N] (build options, to tune) [--check RAYS] (brute-force rays
+// per mesh; default as many as 2e8 triangle tests allow) [--scalar] (no AVX2 lanes)
+// [--split-depth N] (halvings of thin triangles' references; 0: none).
 #include "mesh/triangle_bvh.h"
 #include "mesh/watertight_triangle.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 
 #include <chrono>
 #include <cstdio>
@@ -122,6 +127,7 @@ struct Camera {
 };
 
 BvhBuildOptions gOptions;
+long gCheck = -1;  // brute-force rays per mesh; -1: as many as 2e8 triangle tests allow
 
 void run(const char* name, const TriangleMesh& mesh, const Camera& cam, const Vec3& light,
          int n) {
@@ -166,8 +172,43 @@ void run(const char* name, const TriangleMesh& mesh, const Camera& cam, const Ve
     for (const Ray& r : shadowRays) shadowed += bvh.anyHit(r, 0.0, 1.0 - 1e-9, shadowStats);
     const double shadow = seconds(t1), shadowCpu = threadSeconds() - c1;
 
-    // Brute force on a sample of the primary rays: the reference.
-    const size_t sample = std::max<size_t>(1, std::min<size_t>(rays.size(), 2e8 / mesh.triangles.size()));
+    // The same rays on two threads (wall time; the answers must not change).
+    double primary2 = 0, shadow2 = 0;
+    size_t differ2 = 0;
+    {
+        tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+        std::vector<char> mask2(rays.size());
+        std::vector<double> t2(rays.size());
+        auto t2start = std::chrono::steady_clock::now();
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 4096),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                              BvhStats st;
+                              for (size_t i = r.begin(); i < r.end(); ++i) {
+                                  TriangleHit h;
+                                  mask2[i] = bvh.closestHit(rays[i], 0.0, kInf, h, st);
+                                  t2[i] = h.t;
+                              }
+                          });
+        primary2 = seconds(t2start);
+        std::vector<char> occ2(shadowRays.size());
+        t2start = std::chrono::steady_clock::now();
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, shadowRays.size(), 4096),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                              BvhStats st;
+                              for (size_t i = r.begin(); i < r.end(); ++i)
+                                  occ2[i] = bvh.anyHit(shadowRays[i], 0.0, 1.0 - 1e-9, st);
+                          });
+        shadow2 = seconds(t2start);
+        size_t occluded2 = 0;
+        for (size_t i = 0; i < rays.size(); ++i)
+            differ2 += mask2[i] != hitMask[i] || (mask2[i] && t2[i] != hits[i].t);
+        for (char o : occ2) occluded2 += o;
+        differ2 += occluded2 != shadowed;
+    }
+
+    // Brute force on a sample of the primary rays and of the shadow rays: the reference.
+    const size_t sample = gCheck >= 0 ? std::min<size_t>(rays.size(), size_t(gCheck))
+                                      : std::max<size_t>(1, std::min<size_t>(rays.size(), 2e8 / mesh.triangles.size()));
     size_t mismatches = 0;
     for (size_t s = 0; s < sample; ++s) {
         const size_t i = (s * 7919) % rays.size();
@@ -182,7 +223,24 @@ void run(const char* name, const TriangleMesh& mesh, const Camera& cam, const Ve
         const bool bruteHit = best < kInf;
         if (bruteHit != bool(hitMask[i]) || (bruteHit && best != hits[i].t)) ++mismatches;
     }
-    std::printf("%s: %zu triangles, %zu nodes, depth %d\n", name, mesh.triangles.size(),
+    size_t shadowMismatches = 0;
+    const size_t shadowSample = std::min(sample, shadowRays.size());
+    for (size_t s = 0; s < shadowSample; ++s) {
+        const size_t i = (s * 7919) % shadowRays.size();
+        const ShearedRay sr(shadowRays[i]);
+        bool any = false;
+        for (const auto& t : mesh.triangles) {
+            TriangleIntersection x;
+            if (intersectWatertight(sr, mesh.positions[t[0]], mesh.positions[t[1]],
+                                    mesh.positions[t[2]], 0.0, 1.0 - 1e-9, x)) {
+                any = true;
+                break;
+            }
+        }
+        BvhStats st;
+        if (any != bvh.anyHit(shadowRays[i], 0.0, 1.0 - 1e-9, st)) ++shadowMismatches;
+    }
+    std::printf("%s: %zu triangles, %zu nodes, depth %d\n", name, bvh.triangleCount(),
                 bvh.nodeCount(), bvh.depth());
     std::printf("  build: %.3f s (1 thread; CPU time %.3f s), %.3f s (2 threads)\n", build1,
                 build1Cpu, build2);
@@ -198,8 +256,13 @@ void run(const char* name, const TriangleMesh& mesh, const Camera& cam, const Ve
                 shadowRays.size() / shadowCpu * 1e-6,
                 double(shadowStats.nodesVisited) / std::max<size_t>(1, shadowRays.size()),
                 double(shadowStats.trianglesTested) / std::max<size_t>(1, shadowRays.size()));
-    std::printf("  brute force on %zu primary rays: %zu differ (hit or t, bitwise)\n", sample,
-                mismatches);
+    std::printf("  2 threads: primary %.3f s, %.2f M rays/s; shadow %.3f s, %.2f M rays/s "
+                "(wall time); %zu answers differ from 1 thread\n",
+                primary2, rays.size() / primary2 * 1e-6, shadow2,
+                shadowRays.size() / std::max(shadow2, 1e-12) * 1e-6, differ2);
+    std::printf("  brute force on %zu primary rays: %zu differ (hit or t, bitwise); on %zu shadow "
+                "rays: %zu differ\n",
+                sample, mismatches, shadowSample, shadowMismatches);
     std::fflush(stdout);
 }
 
@@ -213,10 +276,16 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
         else if (!std::strcmp(argv[i], "--traversal-cost") && i + 1 < argc)
             gOptions.traversalCost = std::atof(argv[++i]);
+        else if (!std::strcmp(argv[i], "--check") && i + 1 < argc)
+            gCheck = std::atol(argv[++i]);
+        else if (!std::strcmp(argv[i], "--split-depth") && i + 1 < argc)
+            gOptions.splitDepth = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--scalar"))
+            gOptions.simd = false;
         else if (!std::strcmp(argv[i], "--leaf") && i + 1 < argc)
             gOptions.maxLeafSize = std::atoi(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: kerf_bvh_bench [--size N] [--only sphere|city|fan] [--traversal-cost C] [--leaf N]\n");
+            std::fprintf(stderr, "usage: kerf_bvh_bench [--size N] [--only sphere|city|fan] [--traversal-cost C] [--leaf N] [--check RAYS] [--scalar] [--split-depth N]\n");
             return 2;
         }
     }

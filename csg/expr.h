@@ -32,7 +32,7 @@ struct ExprNode {
     Op op = Op::Const;
     int32_t a = -1;
     int32_t b = -1;
-    int32_t c = -1;      ///< Noise's third operand
+    int32_t c = -1;      ///< the third operand of Noise and Field
     double value = 0.0;  ///< the constant for Const, the exponent for PowInt, Noise's seed
 };
 

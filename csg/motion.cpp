@@ -55,6 +55,10 @@ public:
         return true;
     }
 
+    bool anySurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx) const override {
+        return mChild->anySurface(at(sceneTime()).toLocal(ray), tmin, tmax, ctx);
+    }
+
     double value(const Vec3& p) const override { return mChild->value(at(sceneTime()).toLocal(p)); }
 
     long double valueExtended(const LVec3& p) const override {

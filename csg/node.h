@@ -43,6 +43,14 @@ public:
     virtual bool firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx,
                               Boundary& hit, bool& entering) const;
 
+    /// Whether firstSurface would find a crossing (shadow rays). Wrappers pass it down, and a
+    /// leaf whose every crossing is a surface (a mesh) may stop at any one, not the nearest.
+    virtual bool anySurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx) const {
+        Boundary hit;
+        bool entering = false;
+        return firstSurface(ray, tmin, tmax, ctx, hit, entering);
+    }
+
     /// The implicit form: ≤ 0 inside, > 0 outside. Its magnitude is not a distance.
     virtual double value(const Vec3& p) const = 0;
     /// An interval holding value(p) for every p in the box.

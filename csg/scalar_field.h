@@ -10,6 +10,8 @@
 
 namespace kerf {
 
+/// A field is shared by threads: its methods must be thread safe, and must not evaluate a tape
+/// themselves (the evaluators' per-thread scratch is not reentrant).
 class ScalarField {
 public:
     virtual ~ScalarField() = default;
@@ -17,7 +19,8 @@ public:
     virtual double value(const Vec3& p) const = 0;
     /// f at p for reference computations (at least as accurate as value()).
     virtual long double valueExtended(const glm::tvec3<long double>& p) const = 0;
-    /// f at p and a gradient there (a one-sided one where f has a kink).
+    /// f at p (the same bits as value(p)) and a gradient there (a one-sided one where f has a
+    /// kink).
     virtual double valueGradient(const Vec3& p, Vec3& gradient) const = 0;
     /// An interval holding f(p) for every p in the box.
     virtual Interval range(const Interval& x, const Interval& y, const Interval& z) const = 0;

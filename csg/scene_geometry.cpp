@@ -104,9 +104,7 @@ bool SceneGeometry::occluded(const Ray& ray, double tmin, double tmax, TraceCont
     bool blocked = false;
     traverse(ray, tmin, tmax, ctx, [&](int index, double) {
         if (blocked) return -kInf;  // an empty range: the walk ends without more tests
-        Boundary bd;
-        bool entering = true;
-        blocked = mObjects[index]->firstSurface(ray, tmin, tmax, ctx, bd, entering);
+        blocked = mObjects[index]->anySurface(ray, tmin, tmax, ctx);
         return blocked ? -kInf : tmax;
     });
     return blocked;

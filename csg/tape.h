@@ -22,7 +22,7 @@ struct TapeInstr {
     Op op;
     int32_t a;
     int32_t b;
-    int32_t c;  ///< Noise's third operand, else −1
+    int32_t c;  ///< the third operand of Noise and Field, else −1
     double value;
 };
 

@@ -45,6 +45,11 @@ public:
         return true;
     }
 
+    bool anySurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx) const override {
+        const Ray local{mLocalFromWorld.point(ray.origin), mLocalFromWorld.vector(ray.dir)};
+        return mChild->anySurface(local, tmin, tmax, ctx);
+    }
+
     double value(const Vec3& p) const override { return mChild->value(mLocalFromWorld.point(p)); }
 
     long double valueExtended(const LVec3& p) const override {
@@ -102,6 +107,10 @@ public:
         if (!mChild->firstSurface(ray, tmin, tmax, ctx, hit, entering)) return false;
         if (hit.material == Boundary::kNoMaterial) hit.material = mMaterial;
         return true;
+    }
+
+    bool anySurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx) const override {
+        return mChild->anySurface(ray, tmin, tmax, ctx);
     }
 
     double value(const Vec3& p) const override { return mChild->value(p); }

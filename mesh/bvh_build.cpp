@@ -4,6 +4,9 @@
 // range's own triangles and tasks write disjoint ranges.
 #include "mesh/triangle_bvh.h"
 
+#include "mesh/bvh4.h"
+#include "mesh/bvh_split.h"
+
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
@@ -23,7 +26,7 @@ struct BuildNode {
     Bounds3 box;
     std::unique_ptr<BuildNode> child[2];
     int axis = 0;
-    uint32_t begin = 0, count = 0;  // leaf range of the order array (count 0: inner)
+    uint32_t begin = 0, count = 0;  // leaf range of the references (count 0: inner)
 };
 
 double halfArea(const Bounds3& b) {
@@ -43,11 +46,17 @@ float roundUp(double x) {
 
 }  // namespace
 
+// A reference as the build sorts it: its data moves with it, so the binning passes read
+// memory in order (an index array into separate boxes would be read at random).
+struct BuildRef {
+    Bounds3 box;
+    Vec3 centroid;
+    uint32_t id;  ///< index into the references
+};
+
 struct BvhBuilder {
     const BvhBuildOptions& options;
-    std::vector<Bounds3> boxes;
-    std::vector<Vec3> centroids;
-    std::vector<uint32_t> order;
+    std::vector<BuildRef> refs;
 
     std::unique_ptr<BuildNode> build(uint32_t begin, uint32_t end, int depth, size_t& nodes);
     void flatten(const BuildNode& n, std::vector<TriangleBvh::Node>& out);
@@ -66,18 +75,30 @@ bool BvhBuilder::sahSplit(uint32_t begin, uint32_t end, const Bounds3& box,
     const double parentArea = halfArea(box);
     double bestCost = n <= uint32_t(options.maxLeafSize) ? n * parentArea : kInf;
     int bestAxis = -1, bestBin = 0;
+    // One pass bins the references along all three axes.
+    Bounds3 bins3[3][kMaxBins];
+    uint32_t counts3[3][kMaxBins] = {};
+    double lo3[3], scale3[3];
+    bool active[3];
     for (int a = 0; a < 3; ++a) {
-        const double lo = cbox.lo[a], extent = cbox.hi[a] - cbox.lo[a];
-        if (!(extent > 0.0)) continue;
-        const double scale = bins / extent;
-        Bounds3 binBox[kMaxBins];
-        uint32_t binCount[kMaxBins] = {};
-        for (uint32_t i = begin; i < end; ++i) {
-            const uint32_t t = order[i];
-            const int b = std::min(bins - 1, int((centroids[t][a] - lo) * scale));
-            binBox[b].extend(boxes[t]);
-            ++binCount[b];
+        lo3[a] = cbox.lo[a];
+        const double extent = cbox.hi[a] - cbox.lo[a];
+        active[a] = extent > 0.0;
+        scale3[a] = active[a] ? bins / extent : 0.0;
+    }
+    for (uint32_t i = begin; i < end; ++i) {
+        const BuildRef& r = refs[i];
+        for (int a = 0; a < 3; ++a) {
+            if (!active[a]) continue;
+            const int b = std::min(bins - 1, int((r.centroid[a] - lo3[a]) * scale3[a]));
+            bins3[a][b].extend(r.box);
+            ++counts3[a][b];
         }
+    }
+    for (int a = 0; a < 3; ++a) {
+        if (!active[a]) continue;
+        const Bounds3* binBox = bins3[a];
+        const uint32_t* binCount = counts3[a];
         // Right-to-left sweep of the areas and counts right of each boundary.
         double rightArea[kMaxBins];
         Bounds3 acc;
@@ -106,10 +127,10 @@ bool BvhBuilder::sahSplit(uint32_t begin, uint32_t end, const Bounds3& box,
     if (bestAxis < 0) return false;
     const double lo = cbox.lo[bestAxis];
     const double scale = bins / (cbox.hi[bestAxis] - lo);
-    const auto it = std::partition(order.begin() + begin, order.begin() + end, [&](uint32_t t) {
-        return std::min(bins - 1, int((centroids[t][bestAxis] - lo) * scale)) < bestBin;
+    const auto it = std::partition(refs.begin() + begin, refs.begin() + end, [&](const BuildRef& r) {
+        return std::min(bins - 1, int((r.centroid[bestAxis] - lo) * scale)) < bestBin;
     });
-    mid = uint32_t(it - order.begin());
+    mid = uint32_t(it - refs.begin());
     axis = bestAxis;
     return true;
 }
@@ -119,8 +140,8 @@ std::unique_ptr<BuildNode> BvhBuilder::build(uint32_t begin, uint32_t end, int d
     auto node = std::make_unique<BuildNode>();
     Bounds3 cbox;
     for (uint32_t i = begin; i < end; ++i) {
-        node->box.extend(boxes[order[i]]);
-        cbox.extend(centroids[order[i]]);
+        node->box.extend(refs[i].box);
+        cbox.extend(refs[i].centroid);
     }
     ++nodes;
     const uint32_t n = end - begin;
@@ -135,10 +156,10 @@ std::unique_ptr<BuildNode> BvhBuilder::build(uint32_t begin, uint32_t end, int d
             const Vec3 e = cbox.extent();
             axis = e.x >= e.y ? (e.x >= e.z ? 0 : 2) : (e.y >= e.z ? 1 : 2);
             mid = begin + n / 2;
-            std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
-                             [&](uint32_t a, uint32_t b) {
-                                 const double ca = centroids[a][axis], cb = centroids[b][axis];
-                                 return ca < cb || (ca == cb && a < b);
+            std::nth_element(refs.begin() + begin, refs.begin() + mid, refs.begin() + end,
+                             [&](const BuildRef& a, const BuildRef& b) {
+                                 const double ca = a.centroid[axis], cb = b.centroid[axis];
+                                 return ca < cb || (ca == cb && a.id < b.id);
                              });
             split = true;
         }
@@ -185,32 +206,34 @@ void BvhBuilder::flatten(const BuildNode& n, std::vector<TriangleBvh::Node>& out
 
 TriangleBvh::TriangleBvh(const TriangleMesh& mesh, const BvhBuildOptions& options) {
     const size_t count = mesh.triangles.size();
+    mTriangleCount = count;
+    mSimd = options.simd;
     if (count == 0) return;
     BvhBuildOptions opts = options;
     opts.maxLeafSize = std::clamp(opts.maxLeafSize, 1, 255);
-    BvhBuilder builder{opts, {}, {}, {}};
-    builder.boxes.resize(count);
-    builder.centroids.resize(count);
-    builder.order.resize(count);
-    for (size_t i = 0; i < count; ++i) {
-        Bounds3 b;
-        for (uint32_t v : mesh.triangles[i]) b.extend(mesh.positions[v]);
-        builder.boxes[i] = b;
-        builder.centroids[i] = b.center();  // the box's centre bins as well as the centroid
-        builder.order[i] = uint32_t(i);
-    }
+    // The build sorts references: one per triangle, several for thin ones (bvh_split.h).
+    const std::vector<TriangleRef> refs =
+        triangleReferences(mesh, std::clamp(opts.splitDepth, 0, 16), opts.splitRatio);
+    const size_t refCount = refs.size();
+    BvhBuilder builder{opts, {}};
+    builder.refs.resize(refCount);
+    for (size_t i = 0; i < refCount; ++i)  // the box's centre bins as well as the centroid
+        builder.refs[i] = {refs[i].box, refs[i].box.center(), uint32_t(i)};
     size_t nodes = 0;
-    const auto root = builder.build(0, uint32_t(count), 0, nodes);
+    const auto root = builder.build(0, uint32_t(refCount), 0, nodes);
     mBounds = root->box;
     mNodes.reserve(nodes);
     builder.flatten(*root, mNodes);
-    mTris.resize(count);
-    mTriangleIndex = builder.order;
-    for (size_t k = 0; k < count; ++k) {
+    mTris.resize(refCount);
+    mTriangleIndex.resize(refCount);
+    for (size_t k = 0; k < refCount; ++k) {
+        mTriangleIndex[k] = refs[builder.refs[k].id].triangle;
         const auto& t = mesh.triangles[mTriangleIndex[k]];
         for (int j = 0; j < 3; ++j)
             for (int a = 0; a < 3; ++a) mTris[k].p[j][a] = mesh.positions[t[j]][a];
     }
+    mWide = bvh4::collapse(mNodes);
+    mPacks = bvh4::packLeaves(mWide, mTris.data(), mTriangleIndex.data());
 }
 
 }  // namespace kerf

@@ -73,6 +73,14 @@ public:
         return true;
     }
 
+    bool anySurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx) const override {
+        // Every crossing of a mesh is a surface (of a solid or an open surface): any will do.
+        BvhStats stats;
+        const bool found = mShape->bvh().anyHit(ray, tmin, tmax, stats);
+        count(ctx, stats);
+        return found;
+    }
+
     double value(const Vec3& p) const override { return mShape->value(p); }
     Interval valueInterval(const IntervalVec3& box) const override {
         return mShape->range(box.x, box.y, box.z);

@@ -1,131 +1,54 @@
-// The triangle BVH's walks: near child first with a fixed stack, boxes tested conservatively
-// (csg/types.h: a box is never missed through rounding), triangles with the watertight test.
+// The triangle BVH's ray queries: each runs the wide walk of mesh/bvh4_queries.h with the
+// AVX2 box test when the CPU has it, else the scalar one (the same bits either way).
 #include "mesh/triangle_bvh.h"
 
-#include "mesh/watertight_triangle.h"
+#include "mesh/bvh4_queries.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstring>
 
 namespace kerf {
 
-namespace {
-
-constexpr int kStackSize = TriangleBvh::kMaxDepth + 4;
-
-// Walks the tree calling leaf(first, count, tmax) for each leaf whose box the ray may meet
-// within [tmin, tmax]; leaf returns the (possibly smaller) tmax to go on with, or a value below
-// tmin to stop. Both children's boxes are tested together and the nearer entered first; the
-// other waits on the stack with its entry, skipped if the range has shrunk past it. The entries
-// are conservative (never later than exact), so no box that holds a hit is skipped.
-template <class Leaf>
-void walk(const std::vector<TriangleBvh::Node>& nodes, const Ray& ray, double tmin,
-          double tmax, BvhStats& stats, Leaf&& leaf) {
-    if (nodes.empty() || !(tmin < tmax)) return;
-    const RayReciprocal rec(ray);
-    struct Entry {
-        uint32_t node;
-        double tEnter;
-    };
-    Entry stack[kStackSize];
-    int top = 0;
-    ++stats.nodesVisited;
-    {
-        double t0 = tmin, t1 = tmax;
-        if (!Bounds3::clipRayConservative(rec, nodes[0].lo, nodes[0].hi, t0, t1)) return;
-    }
-    uint32_t current = 0;
-    for (;;) {
-        const TriangleBvh::Node& node = nodes[current];
-        bool descend = false;
-        if (node.count > 0) {
-            tmax = leaf(node.index, node.count, tmax);
-            if (!(tmin < tmax)) return;
-        } else {
-            const uint32_t a = current + 1, b = node.index;
-            double a0 = tmin, a1 = tmax, b0 = tmin, b1 = tmax;
-            const bool hitA = Bounds3::clipRayConservative(rec, nodes[a].lo, nodes[a].hi, a0, a1);
-            const bool hitB = Bounds3::clipRayConservative(rec, nodes[b].lo, nodes[b].hi, b0, b1);
-            stats.nodesVisited += 2;
-            if (hitA && hitB) {
-                const bool aFirst = a0 <= b0;
-                stack[top++] = aFirst ? Entry{b, b0} : Entry{a, a0};
-                current = aFirst ? a : b;
-                descend = true;
-            } else if (hitA || hitB) {
-                current = hitA ? a : b;
-                descend = true;
-            }
-        }
-        if (descend) continue;
-        // Pop the next waiting node the shrunken range still reaches.
-        for (;;) {
-            if (top == 0) return;
-            const Entry e = stack[--top];
-            if (e.tEnter <= tmax) {
-                current = e.node;
-                break;
-            }
-        }
-    }
+bool bvh4::avx2::available() {
+    static const bool use = [] {
+        const char* v = std::getenv("KERF_SIMD");
+        return __builtin_cpu_supports("avx2") && !(v && std::strcmp(v, "scalar") == 0);
+    }();
+    return use;
 }
 
+namespace {
+bool useAvx2(bool simd) { return simd && bvh4::avx2::available(); }
 }  // namespace
 
 bool TriangleBvh::closestHit(const Ray& ray, double tmin, double tmax, TriangleHit& hit,
                              BvhStats& stats) const {
-    const ShearedRay sr(ray);
-    bool found = false;
-    walk(mNodes, ray, tmin, tmax, stats, [&](uint32_t first, uint32_t count, double tm) {
-        stats.trianglesTested += count;
-        for (uint32_t k = first; k < first + count; ++k) {
-            TriangleIntersection x;
-            if (intersectWatertight(sr, mTris[k].p[0], mTris[k].p[1], mTris[k].p[2], tmin, tm,
-                                    x)) {
-                tm = x.t;
-                hit = {x.t, mTriangleIndex[k], x.u, x.v};
-                found = true;
-            }
-        }
-        return tm;
-    });
-    return found;
+    if (mWide.empty()) return false;
+    const bvh4::View v{mWide.data(), mNodes.data(), mPacks.data()};
+    if (useAvx2(mSimd)) return bvh4::avx2::closestHit(v, ray, tmin, tmax, hit, stats);
+    return bvh4::closestHit<bvh4::ScalarLanes>(v, ray, tmin, tmax, hit, stats);
 }
 
 bool TriangleBvh::anyHit(const Ray& ray, double tmin, double tmax, BvhStats& stats) const {
-    const ShearedRay sr(ray);
-    bool found = false;
-    walk(mNodes, ray, tmin, tmax, stats, [&](uint32_t first, uint32_t count, double tm) {
-        for (uint32_t k = first; k < first + count; ++k) {
-            ++stats.trianglesTested;
-            TriangleIntersection x;
-            if (intersectWatertight(sr, mTris[k].p[0], mTris[k].p[1], mTris[k].p[2], tmin, tm,
-                                    x)) {
-                found = true;
-                return -kInf;
-            }
-        }
-        return tm;
-    });
-    return found;
+    if (mWide.empty()) return false;
+    const bvh4::View v{mWide.data(), mNodes.data(), mPacks.data()};
+    if (useAvx2(mSimd)) return bvh4::avx2::anyHit(v, ray, tmin, tmax, stats);
+    return bvh4::anyHit<bvh4::ScalarLanes>(v, ray, tmin, tmax, stats);
 }
 
 void TriangleBvh::allCrossings(const Ray& ray, double tmin, double tmax,
                                std::vector<TriangleCrossing>& out, BvhStats& stats) const {
     out.clear();
-    const ShearedRay sr(ray);
-    walk(mNodes, ray, tmin, tmax, stats, [&](uint32_t first, uint32_t count, double tm) {
-        stats.trianglesTested += count;
-        for (uint32_t k = first; k < first + count; ++k) {
-            TriangleIntersection x;
-            if (intersectWatertight(sr, mTris[k].p[0], mTris[k].p[1], mTris[k].p[2], tmin, tm,
-                                    x))
-                out.push_back({x.t, mTriangleIndex[k], x.entering});
-        }
-        return tm;
-    });
+    if (mWide.empty()) return;
+    const bvh4::View v{mWide.data(), mNodes.data(), mPacks.data()};
+    if (useAvx2(mSimd)) bvh4::avx2::allCrossings(v, ray, tmin, tmax, out, stats);
+    else bvh4::allCrossings<bvh4::ScalarLanes>(v, ray, tmin, tmax, out, stats);
     std::sort(out.begin(), out.end(), [](const TriangleCrossing& a, const TriangleCrossing& b) {
         return a.t < b.t || (a.t == b.t && a.triangle < b.triangle);
     });
+    // A triangle referenced from several leaves is crossed once: its repeats are equal.
+    out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
 int TriangleBvh::depth() const {

@@ -4,10 +4,13 @@
 /// triangles copied in leaf order for locality, and three walks with the watertight test:
 /// closest hit, any hit (shadow rays) and every crossing (for CSG spans).
 ///
-/// Split: the build is in bvh_build.cpp, the walks in triangle_bvh.cpp, the ray–triangle test
-/// in watertight_triangle.h.
+/// Split: the build is in bvh_build.cpp; the ray walks run over the binary tree collapsed into
+/// 4-wide nodes (bvh4.h, bvh4_collapse.cpp, bvh4_queries.h, with the AVX2 box test in
+/// bvh4_avx2.cpp) and are dispatched in triangle_bvh.cpp; the ray–triangle test is in
+/// watertight_triangle.h.
 #pragma once
 
+#include "mesh/bvh4_node.h"
 #include "mesh/triangle_mesh.h"
 
 #include <cstdint>
@@ -17,8 +20,11 @@ namespace kerf {
 
 /// Work counters of the walks; the caller owns one (per thread) and reads it when it likes.
 struct BvhStats {
-    uint64_t nodesVisited = 0;     ///< nodes whose box was tested
-    uint64_t trianglesTested = 0;  ///< ray–triangle tests
+    /// Nodes whose box was tested (the ray walks: the root and every child of each wide node
+    /// entered; nearestTriangle: binary nodes).
+    uint64_t nodesVisited = 0;
+    /// Ray–triangle tests (a triangle split over several leaves may be tested more than once).
+    uint64_t trianglesTested = 0;
 };
 
 /// The nearest crossing: t, the mesh's triangle index, and the weights of its vertices 1 and
@@ -44,7 +50,17 @@ struct BvhBuildOptions {
     int bins = 32;          ///< SAH bins over the centroids' extent along each axis
     int maxLeafSize = 8;    ///< a leaf never holds more triangles than this
     int parallelAbove = 16384;  ///< subtrees with more triangles are built as TBB tasks
-    double traversalCost = 1.0;  ///< SAH cost of a walk step (two box tests), in triangle tests
+    /// SAH cost of a walk step, in triangle tests: 3, as four triangles are tested at once
+    /// (sphere +8% primary rays, city unchanged; bench/bvh_bench.cpp --traversal-cost).
+    double traversalCost = 3.0;
+    /// Thin triangles are referenced from several leaves with tighter boxes: a reference is
+    /// halved while its box's half area exceeds splitRatio × its part's area, at most
+    /// splitDepth times (bvh_split.h). 0 turns it off.
+    int splitDepth = 3;
+    double splitRatio = 16.0;
+    /// Ray walks test a wide node's four boxes on AVX2 lanes when the CPU has AVX2 (and
+    /// KERF_SIMD is not "scalar"); false forces the scalar test. Same answers and counters.
+    bool simd = true;
 };
 
 class TriangleBvh {
@@ -63,8 +79,9 @@ public:
     /// Whether any triangle crosses the ray with t in (tmin, tmax) (stops at the first).
     bool anyHit(const Ray& ray, double tmin, double tmax, BvhStats& stats) const;
     /// Every crossing with t in (tmin, tmax), sorted by t then triangle index (appended to
-    /// out, which is cleared first). A ray through an edge or vertex crosses every triangle
-    /// that shares it, so it may report one surface crossing more than once at the same t.
+    /// out, which is cleared first), each triangle once even where it is split over several
+    /// leaves. A ray through an edge or vertex crosses every triangle that shares it, so it may
+    /// report one surface crossing more than once at the same t.
     void allCrossings(const Ray& ray, double tmin, double tmax,
                       std::vector<TriangleCrossing>& out, BvhStats& stats) const;
 
@@ -74,7 +91,7 @@ public:
     bool nearestTriangle(const Vec3& p, double maxDistance, double& distance,
                          uint32_t& triangle, BvhStats& stats) const;
 
-    size_t triangleCount() const { return mTriangleIndex.size(); }
+    size_t triangleCount() const { return mTriangleCount; }
     size_t nodeCount() const { return mNodes.size(); }
     Bounds3 bounds() const { return mBounds; }
     /// Tree depth (a single leaf has depth 1; 0 without triangles), for tests.
@@ -89,13 +106,18 @@ public:
     static_assert(sizeof(Node) == 32, "two nodes per cache line");
     /// Deepest walk the fixed stack allows; the build splits at the median below this depth.
     static constexpr int kMaxDepth = 60;
+    struct Tri { double p[3][3]; };  ///< vertices as plain arrays (see watertight_triangle.h)
 
 private:
-    struct Tri { double p[3][3]; };  ///< vertices as plain arrays (see watertight_triangle.h)
     std::vector<Node> mNodes;
-    std::vector<Tri> mTris;                  ///< triangle vertices in leaf order
+    /// Triangle vertices in leaf order; a split triangle has a slot in each of its leaves.
+    std::vector<Tri> mTris;
     std::vector<uint32_t> mTriangleIndex;    ///< the mesh's index of each slot of mTris
+    size_t mTriangleCount = 0;
     Bounds3 mBounds;
+    std::vector<bvh4::WideNode> mWide;  ///< mNodes collapsed 4-wide: the ray walks' tree
+    std::vector<bvh4::TriPack> mPacks;  ///< mTris again, four side by side per wide leaf
+    bool mSimd = true;
 
     friend struct BvhBuilder;
 };

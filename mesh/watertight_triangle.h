@@ -81,9 +81,10 @@ inline double edgeFunction(double px, double py, double qx, double qy) {
 /// hits the triangles it would hit moved sideways by an infinitesimal (ε, ε²) in the sheared
 /// frame: over a closed mesh it is entered exactly as often as it is left. Vertices as plain
 /// arrays: the permuted axes are then indexed without glm's switch.
-inline bool intersectWatertight(const ShearedRay& r, const double* p0, const double* p1,
-                                const double* p2, double tmin, double tmax,
-                                TriangleIntersection& out) {
+/// Always inlined: the BVH's walks call it in their innermost loop.
+__attribute__((always_inline)) inline bool intersectWatertight(
+    const ShearedRay& r, const double* p0, const double* p1, const double* p2, double tmin,
+    double tmax, TriangleIntersection& out) {
     const double a[3] = {p0[0] - r.origin[0], p0[1] - r.origin[1], p0[2] - r.origin[2]};
     const double b[3] = {p1[0] - r.origin[0], p1[1] - r.origin[1], p1[2] - r.origin[2]};
     const double c[3] = {p2[0] - r.origin[0], p2[1] - r.origin[1], p2[2] - r.origin[2]};

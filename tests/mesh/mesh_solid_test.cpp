@@ -275,3 +275,24 @@ TEST_CASE("meshNode::hard cases: -0 directions, huge and tiny scales, grazing ra
              0.0, kInf, ctx, spans);
     for (const Span& s : spans) CHECK(s.out.t - s.in.t <= 1e-12);
 }
+
+TEST_CASE("meshNode::anySurface answers as firstSurface does, through transforms") {
+    const auto shape = sphereShape(3);
+    const NodePtr tree = makeMaterial(
+        makeTransform(meshNode(shape, true), Affine::rotateDegrees(Vec3(10, 20, 30))), 1);
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    TraceContext ctx;
+    int blocked = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const Ray ray = randomRay(rng);
+        const double tmin = 6.0 * u(rng), tmax = tmin + 4.0 * u(rng);
+        Boundary hit;
+        bool entering = false;
+        const bool first = tree->firstSurface(ray, tmin, tmax, ctx, hit, entering);
+        CHECK(tree->anySurface(ray, tmin, tmax, ctx) == first);
+        blocked += first;
+    }
+    CHECK(blocked > 500);
+    CHECK(blocked < 2500);
+}

@@ -1,0 +1,195 @@
+// The .csg reader's errors: syntax errors and nodes it cannot read, each at its line and
+// column, all of them in one run; and OpenSCAD's example files, which load when they use only
+// the nodes read (tests/data/openscad/ holds those, exported by OpenSCAD 2021.01).
+#include "lang/openscad_csg.h"
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <map>
+
+using namespace kerf;
+
+namespace {
+
+struct Read {
+    DiagnosticSink sink;
+    std::optional<Scene> scene;
+};
+
+Read readCsg(const std::string& text) {
+    Read r;
+    r.scene = compileOpenScadString(text, "test.csg", r.sink);
+    return r;
+}
+
+struct Where {
+    int line;
+    int col;
+    std::string message;
+};
+
+void requireErrors(const Read& r, const std::vector<Where>& expected) {
+    INFO(r.sink.format());
+    REQUIRE_FALSE(r.scene.has_value());
+    std::vector<const Diagnostic*> errors;
+    for (const Diagnostic& d : r.sink.diagnostics())
+        if (d.severity == Severity::Error) errors.push_back(&d);
+    REQUIRE(errors.size() == expected.size());
+    for (size_t i = 0; i < expected.size(); ++i) {
+        CHECK(errors[i]->loc.line == expected[i].line);
+        CHECK(errors[i]->loc.col == expected[i].col);
+        CHECK_THAT(errors[i]->message, Catch::Contains(expected[i].message));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("openscad/every unsupported node is listed with its line and column") {
+    const Read r = readCsg(
+        "union() {\n"
+        "  hull() { sphere(r = 1); cube(size = 1); }\n"
+        "  minkowski() { cube(size = 1); sphere(r = 1); }\n"
+        "  resize(newsize = [1, 1, 1]) sphere(r = 1);\n"
+        "  import(file = \"a.stl\");\n"
+        "  surface(file = \"h.dat\");\n"
+        "  projection(cut = true) sphere(r = 1);\n"
+        "  linear_extrude(height = 2) { offset(r = 1) text(text = \"A\"); }\n"
+        "  rotate_extrude(angle = 360) square(size = [1, 1]);\n"
+        "  frobnicate();\n"
+        "}\n");
+    requireErrors(r, {{2, 3, "hull is not supported"},
+                      {3, 3, "minkowski is not supported"},
+                      {4, 3, "resize is not supported"},
+                      {5, 3, "import is not supported"},
+                      {6, 3, "surface is not supported"},
+                      {7, 3, "projection is not supported"},
+                      {8, 3, "linear_extrude is not supported yet"},
+                      {8, 32, "offset is not supported"},
+                      {8, 46, "text is not supported"},
+                      {9, 3, "rotate_extrude is not supported yet"},
+                      {10, 3, "unknown OpenSCAD module 'frobnicate'"}});
+}
+
+TEST_CASE("openscad/2-D nodes are not read yet") {
+    const Read r = readCsg(
+        "circle(r = 1);\nsquare(size = [1, 2]);\npolygon(points = [[0, 0], [1, 0], [0, 1]]);\n");
+    requireErrors(r, {{1, 1, "circle is not supported yet"},
+                      {2, 1, "square is not supported yet"},
+                      {3, 1, "polygon is not supported yet"}});
+}
+
+TEST_CASE("openscad/syntax errors point at the token") {
+    SECTION("a missing semicolon") {
+        // A call without ';' takes the next statement as its child, as in OpenSCAD: the
+        // error is at the end of the file.
+        requireErrors(readCsg("cube(size = 1)\n"),
+                      {{2, 1, "expected a module name, found the end of the file"}});
+    }
+    SECTION("an expression is not a literal") {
+        requireErrors(readCsg("sphere(r = 1 + 2);\n"), {{1, 14, "expected ',' or ')'"}});
+    }
+    SECTION("an unclosed block") {
+        requireErrors(readCsg("union() {\n  cube(size = 1);\n"),
+                      {{1, 1, "block of 'union' is not closed"}});
+    }
+    SECTION("a wrong argument type") {
+        requireErrors(readCsg("sphere(r = \"big\");\n"),
+                      {{1, 12, "sphere r must be a number, got a string"}});
+    }
+    SECTION("parsing goes on after an error, so several are reported") {
+        requireErrors(readCsg("cube(size = );\nsphere(r = ]);\n"),
+                      {{1, 13, "expected a value"}, {2, 12, "expected a value"}});
+    }
+}
+
+TEST_CASE("openscad/modifiers: % and * are left out, # and ! are kept") {
+    const Read r = readCsg("%sphere(r = 5);\n*cube(size = 9);\n#cube(size = 1);\n");
+    REQUIRE(r.scene.has_value());
+    const Bounds3 b = r.scene->objects.at(0)->bounds();
+    CHECK(b.lo.x >= 0);
+    CHECK(b.hi.x <= 1 + 1e-12);
+    const Read root = readCsg("sphere(r = 5);\n!cube(size = 1);\n");
+    REQUIRE(root.scene.has_value());
+    CHECK(root.scene->objects.at(0)->bounds().hi.x <= 1 + 1e-12);
+    const Read nested = readCsg(
+        "difference() {\n  sphere(r = 5);\n  multmatrix([[1, 0, 0, 7], [0, 1, 0, 0], [0, 0, 1, 0], "
+        "[0, 0, 0, 1]])\n"
+        "    !cube(size = 1);\n}\n");
+    REQUIRE(nested.scene.has_value());
+    // The cube alone at the origin: the multmatrix above the root is dropped too, as OpenSCAD
+    // 2021.01 does (it exports such a file as the bare cube).
+    CHECK(nested.scene->objects.at(0)->bounds().lo.x >= -1e-12);
+    CHECK(nested.scene->objects.at(0)->bounds().hi.x <= 1 + 1e-12);
+}
+
+TEST_CASE("openscad/OpenSCAD's examples that use only the nodes read load") {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(KERF_SOURCE_DIR) / "tests" / "data" / "openscad";
+    // The curves and the facets OpenSCAD would have used around them (fewest, most), worked
+    // out by a separate script from each file's $fn/$fa/$fs and radii with OpenSCAD's rule
+    // (get_fragments_from_r; a cylinder by its larger radius); 0 where the example has none.
+    struct Facets {
+        int curves, fewest, most;
+    };
+    const std::map<std::string, Facets> expected = {
+        {"CSG.csg", {3, 30, 30}},         {"CSG-modules.csg", {19, 63, 72}},
+        {"assert.csg", {0, 0, 0}},        {"example001.csg", {4, 30, 30}},
+        {"example002.csg", {1, 30, 30}},  {"example003.csg", {0, 0, 0}},
+        {"example004.csg", {1, 30, 30}},  {"example005.csg", {9, 30, 30}},
+        {"example011.csg", {0, 0, 0}},    {"example014.csg", {0, 0, 0}},
+        {"example018.csg", {8, 30, 30}},  {"example019.csg", {41, 19, 19}},
+        {"example022.csg", {24, 16, 16}}, {"example024.csg", {0, 0, 0}},
+        {"functions.csg", {41, 5, 5}},    {"logo.csg", {4, 100, 100}}};
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+        const std::string name = entry.path().filename().string();
+        INFO(name);
+        DiagnosticSink sink;
+        const std::optional<Scene> scene = compileOpenScadFile(entry.path().string(), sink);
+        INFO(sink.format());
+        REQUIRE(scene.has_value());
+        CHECK(scene->objects.size() == 1);
+        REQUIRE(expected.count(name) == 1);
+        const auto [curves, fewest, most] = expected.at(name);
+        std::string note;
+        for (const Diagnostic& d : sink.diagnostics())
+            if (d.severity == Severity::Note) note = d.message;
+        if (fewest == 0) {
+            CHECK(note.empty());
+        } else {
+            const std::string facets = fewest == most
+                                           ? std::to_string(fewest)
+                                           : std::to_string(fewest) + " to " + std::to_string(most);
+            CHECK_THAT(note, Catch::Contains("(" + std::to_string(curves) + " here)") &&
+                                 Catch::Contains(" " + facets + " facets"));
+        }
+        ++files;
+    }
+    CHECK(files == static_cast<int>(expected.size()));
+}
+
+TEST_CASE("openscad/every truncation of a file is read or refused with located errors") {
+    const std::string text =
+        "group() {\n\tdifference() {\n\t\tcube(size = [30, 30, 30], center = true);\n"
+        "\t\tsphere($fn = 0, $fa = 12, $fs = 2, r = 20);\n\t}\n}\n";
+    for (size_t n = 0; n <= text.size(); ++n) {
+        const std::string prefix = text.substr(0, n);
+        INFO("first " << n << " bytes");
+        DiagnosticSink sink;
+        const std::optional<Scene> scene = compileOpenScadString(prefix, "cut.csg", sink);
+        // A prefix that ends between statements is a whole (maybe empty) model; any other
+        // is refused, each error inside the text (one past its end at most).
+        if (scene) {
+            CHECK_FALSE(sink.hasErrors());
+            continue;
+        }
+        REQUIRE(sink.hasErrors());
+        const int lines = static_cast<int>(std::count(prefix.begin(), prefix.end(), '\n')) + 1;
+        for (const Diagnostic& d : sink.diagnostics()) {
+            CHECK(d.loc.line >= 1);
+            CHECK(d.loc.line <= lines);
+            CHECK(d.loc.col >= 1);
+        }
+    }
+}
