@@ -177,6 +177,11 @@ private:
     bool checkSolidOperands(const std::vector<NodePtr>& operands, const std::string& use, SourcePos at);
     /// The same for the objects of a scene with section planes: an object a plane crosses is cut.
     void checkSectionedSurfaces(const Scene& scene);
+    // lower_text.cpp
+    /// A `text { string … font … size … }` profile laid out (io/font_outline.h); nullopt with
+    /// an error at the property at fault (a missing font at `font`, a missing glyph at
+    /// `string`). The caller takes the union of `glyphs` when `glyphsOverlap`.
+    std::optional<TextOutline> lowerText(const Solid& s);
 
     /// The box of a `box { min max }` block; `what` is "box" or "bound" (for the message).
     std::optional<Bounds3> boxBounds(const Solid& s, const char* what);
@@ -196,12 +201,6 @@ private:
     int heightOf(const NodePtr& node);
     /// `node`, or null with an error at `at` if its tree is deeper than kMaxCsgDepth.
     NodePtr limitDepth(NodePtr node, SourcePos at);
-
-    // lower_text.cpp
-    /// A `text { string … font … size … }` profile laid out (io/font_outline.h); nullopt with
-    /// an error at the property at fault (a missing font at `font`, a missing glyph at
-    /// `string`). The caller takes the union of `glyphs` when `glyphsOverlap`.
-    std::optional<TextOutline> lowerText(const Solid& s);
 
     // lower_scene.cpp
     void lowerMaterial(const Statement& s, Material& m);
