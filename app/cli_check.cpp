@@ -1,6 +1,8 @@
 /// @file app/cli_check.cpp
 #include "app/cli_check.h"
 
+#include "csg/surfaces.h"
+
 #include "app/exit_codes.h"
 #include "app/model_loader.h"
 #include "csg/format.h"
@@ -105,6 +107,9 @@ void printSceneSummary(const std::string& model, const Scene& scene, std::ostrea
 
     out << model << ": ok\n";
     out << "  objects:     " << scene.objects.size() << "\n";
+    size_t surfaces = 0;  // csg/surfaces.h: rendered, but not sliced nor meshed
+    for (const NodePtr& object : scene.objects) surfaces += isSurfaceTree(*object) ? 1 : 0;
+    if (surfaces > 0) out << "  surfaces:    " << surfaces << " (no inside: left out of slices)\n";
     out << "  materials:   " << declaredMaterials << " (plus the default)\n";
     out << "  lights:      " << scene.lights.size() << "\n";
     // Instanced first: what a ray may meet, as the tree would be written out in full.

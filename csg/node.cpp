@@ -51,6 +51,12 @@ const char* nodeKindName(NodeKind kind) {
         case NodeKind::Intersection: return "intersection";
         case NodeKind::Difference: return "difference";
         case NodeKind::Xor: return "xor";
+        case NodeKind::Disc: return "disc";
+        case NodeKind::Triangle: return "triangle";
+        case NodeKind::OpenCone: return "open cone";
+        case NodeKind::SurfaceOf: return "surface";
+        case NodeKind::Clip: return "clip";
+        case NodeKind::Interior: return "interior";
     }
     return "?";
 }

@@ -24,13 +24,20 @@ enum class NodeKind : uint8_t {
     Sphere, Box, Cylinder, Cone, Torus, HalfSpace, Implicit, Mesh,  // leaves
     Transform, Material, Motion,                              // one child
     Union, Intersection, Difference, Xor,                     // one or more children
+    // Surfaces (csg/surfaces.h): open sheets, never CSG operands. Leaves, then
+    // `surface` (one child), `clip` (surface, solid) and the `interior` modifier (one child).
+    Disc, Triangle, OpenCone, SurfaceOf, Clip, Interior,
 };
 // clang-format on
 
 /// "sphere", "box", …, "xor": the language's keywords for the kinds.
 const char* nodeKindName(NodeKind kind);
 /// True for the primitives (nodes without children).
-inline bool isLeaf(NodeKind kind) { return kind <= NodeKind::Mesh; }
+inline bool isLeaf(NodeKind kind) {
+    return kind <= NodeKind::Mesh || (kind >= NodeKind::Disc && kind <= NodeKind::OpenCone);
+}
+/// True for the kinds that make a surface rather than a solid (csg/surfaces.h).
+inline bool isSurfaceKind(NodeKind kind) { return kind >= NodeKind::Disc && kind <= NodeKind::Clip; }
 /// The Boolean kind of an operator, and back.
 NodeKind booleanKind(BoolOp op);
 BoolOp booleanOp(NodeKind kind);  ///< kind must be Union, Intersection, Difference or Xor
@@ -52,13 +59,24 @@ struct BooleanParams { BoolOp op; };
 /// Over scene time s in [0, 1] the child turns by spin·s degrees (as rotate) and then moves by
 /// velocity·s (csg/motion.h).
 struct MotionParams { Vec3 velocity; Vec3 spin; };
+/// A flat ring: the points of the plane through center, normal n, with inner ≤ |p − c| ≤ radius.
+struct DiscParams { Vec3 center; Vec3 normal; double radius; double inner; };
+/// A triangle; its front faces (b − a) × (c − a).
+struct TriangleParams { Vec3 a, b, c; };
+/// The side of a cone (or, r1 = r2, a cylinder) without its caps.
+struct OpenConeParams { Vec3 a, b; double r1, r2; };
+/// `surface` and `clip`: nothing besides their children.
+struct SurfaceParams {};
+/// The material seen from a surface's back, or from inside a solid.
+struct InteriorParams { int32_t material; };
 
 /// A node's defining data: the alternative matches its kind (all four Boolean kinds give
 /// BooleanParams). Passing it back to the factory of its kind rebuilds an equal node.
 using NodeParams =
     std::variant<SphereParams, BoxParams, CylinderParams, ConeParams, TorusParams,
                  HalfSpaceParams, ImplicitParams, MeshParams, TransformParams, MaterialParams,
-                 BooleanParams, MotionParams>;
+                 BooleanParams, MotionParams, DiscParams, TriangleParams, OpenConeParams,
+                 SurfaceParams, InteriorParams>;
 
 /// A node's children: a view of the NodePtrs it holds, valid while the node lives.
 class NodeSpan {

@@ -83,7 +83,7 @@ std::optional<Hit> SceneGeometry::nearestHit(const Ray& ray, double tmin, double
         const double len = glm::length(bd.normal);
         h.normal = len > 0.0 ? bd.normal / len : -glm::normalize(ray.dir);
         h.entering = entering;
-        h.material = bd.material == Boundary::kNoMaterial ? 0 : bd.material;
+        h.material = bd.hasMaterial() ? bd.material : 0;
         h.primitive = bd.primitive;
         h.relError = bd.relError;
         h.object = index;

@@ -125,8 +125,8 @@ void dropThinSpans(SpanList& s, double relTolerance) {
 
 void fillMaterial(SpanList& s, int32_t material) {
     for (Span& span : s) {
-        if (span.in.material == Boundary::kNoMaterial) span.in.material = material;
-        if (span.out.material == Boundary::kNoMaterial) span.out.material = material;
+        if (!span.in.hasMaterial()) span.in.material = material;
+        if (!span.out.hasMaterial()) span.out.material = material;
     }
 }
 

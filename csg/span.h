@@ -30,6 +30,10 @@ struct Boundary {
     float relError = 0.f;
 
     static constexpr int32_t kNoMaterial = -1;
+    /// No material yet, met from the back of a surface (csg/surfaces.h): an `interior`
+    /// modifier fills these, a `material` modifier fills them as it fills kNoMaterial.
+    static constexpr int32_t kNoMaterialBack = -2;
+    bool hasMaterial() const { return material >= 0; }
     bool isSurface() const { return primitive != 0; }
 };
 

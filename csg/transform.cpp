@@ -105,7 +105,7 @@ public:
     bool firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& ctx, Boundary& hit,
                       bool& entering) const override {
         if (!mChild->firstSurface(ray, tmin, tmax, ctx, hit, entering)) return false;
-        if (hit.material == Boundary::kNoMaterial) hit.material = mMaterial;
+        if (!hit.hasMaterial()) hit.material = mMaterial;
         return true;
     }
 

@@ -11,6 +11,7 @@ namespace kerf {
 ExprId treeExpr(const Node& node, ExprGraph& g, ExprId x, ExprId y, ExprId z) {
     ExprBuilder e{g};
     const NodeKind kind = node.kind();
+    if (isSurfaceKind(kind)) return e.c(1.0);  // csg/surfaces.h: a sheet has no inside
     if (isLeaf(kind)) {
         const ExprId f = static_cast<const Primitive&>(node).implicitExpr(g, x, y, z);
         if (kind != NodeKind::Implicit) return f;
@@ -24,7 +25,8 @@ ExprId treeExpr(const Node& node, ExprGraph& g, ExprId x, ExprId y, ExprId z) {
     }
     const NodeSpan kids = node.children();
     // A moving child as at scene time 0, where a motion leaves it unmoved.
-    if (kind == NodeKind::Material || kind == NodeKind::Motion) return treeExpr(*kids[0], g, x, y, z);
+    if (kind == NodeKind::Material || kind == NodeKind::Motion || kind == NodeKind::Interior)
+        return treeExpr(*kids[0], g, x, y, z);
     if (kind == NodeKind::Transform) {
         // As TransformNode::value: the point mapped by the inverse, row by row.
         ExprId local[3];

@@ -113,7 +113,8 @@ struct Property {
 struct Modifier {
     /// Move and Spin: motion over scene time (csg/motion.h), `move <v>`, `spin <degrees>`.
     /// Displace: the solid's surface moved by a pattern (args[0] is the depth).
-    enum class Kind : uint8_t { Translate, Rotate, Scale, Matrix, Material, Move, Spin, Displace };
+    /// Interior: `interior MATERIAL`, the material of a back side (csg/surfaces.h).
+    enum class Kind : uint8_t { Translate, Rotate, Scale, Matrix, Material, Move, Spin, Displace, Interior };
     Kind kind = Kind::Translate;
     SourcePos loc;  ///< of the keyword
     ExprList args;  ///< one, or twelve for matrix

@@ -101,7 +101,7 @@ struct ForeignProperty {
 };
 
 const ForeignProperty kForeignProperties[] = {
-    {"open", "kerf's cylinders and cones are always capped"},
+    {"open", "kerf writes it 'open true' (the side alone: a surface, not a solid)"},
     {"sturm", "not needed: kerf isolates every root by interval arithmetic"},
     {"max_gradient", "not needed: kerf bounds the function by interval arithmetic"},
     {"accuracy", "not needed: the tolerance is set by --tolerance"},
@@ -136,6 +136,7 @@ bool isSolidKind(const std::string& name) {
     const auto has = [&](const std::vector<std::string>& v) {
         return std::find(v.begin(), v.end(), name) != v.end();
     };
+    if (name == "disc" || name == "triangle") return true;  // surfaces (lang/lower_surfaces.cpp)
     return has(primitiveKinds()) || has(booleanKinds());
 }
 

@@ -177,6 +177,15 @@ private:
     bool checkSolidOperands(const std::vector<NodePtr>& operands, const std::string& use, SourcePos at);
     /// The same for the objects of a scene with section planes: an object a plane crosses is cut.
     void checkSectionedSurfaces(const Scene& scene);
+    // lower_surfaces.cpp
+    /// `disc`, `triangle`, `surface SOLID`, `clip SURFACE by SOLID` (csg/surfaces.h).
+    NodePtr lowerSurface(const Solid& s);
+    /// A surface node made at `at`, remembered so that using it as a solid names it.
+    NodePtr noteSurface(NodePtr surface, SourcePos at);
+    /// checkSolidOperands' part for surfaces: false, with an error, when an operand is one.
+    bool checkSurfaceOperands(const std::vector<NodePtr>& operands, const std::string& use, SourcePos at);
+    /// `interior MATERIAL`: makeInterior below any material modifiers (the innermost wins).
+    NodePtr interiorOf(const NodePtr& node, int32_t material);
     // lower_text.cpp
     /// A `text { string … font … size … }` profile laid out (io/font_outline.h); nullopt with
     /// an error at the property at fault (a missing font at `font`, a missing glyph at
@@ -255,6 +264,8 @@ private:
     /// The `mesh` expressions already reported as not solid (file index << 32 | offset): a
     /// loop or a function makes a leaf per pass, the error is given once.
     std::unordered_set<uint64_t> mReportedOpenMeshes;
+    /// Surface nodes by where they were written (holding the node keeps its address).
+    std::unordered_map<const Node*, std::pair<NodePtr, SourcePos>> mSurfaces;
     std::vector<SourcePos> mSectionLocs;  ///< where each of scene.sections was written
     const Statement* mCamera = nullptr;
     const Statement* mMist = nullptr;

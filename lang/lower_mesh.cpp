@@ -7,6 +7,7 @@
 
 #include "mesh/mesh_loader.h"
 #include "mesh/mesh_shape.h"
+#include "csg/surfaces.h"
 
 #include <filesystem>
 #include <system_error>
@@ -90,6 +91,7 @@ std::shared_ptr<const MeshShape> Lowering::meshShape(const std::string& written,
 }
 
 bool Lowering::checkSolidOperands(const std::vector<NodePtr>& operands, const std::string& use, SourcePos at) {
+    if (!checkSurfaceOperands(operands, use, at)) return false;
     if (mOpenMeshes.empty()) return true;  // no mesh that is not a solid: nothing to look for
     bool ok = true;
     for (const NodePtr& operand : operands) {
@@ -113,9 +115,9 @@ bool Lowering::checkSolidOperands(const std::vector<NodePtr>& operands, const st
 }
 
 void Lowering::checkSectionedSurfaces(const Scene& scene) {
-    if (mOpenMeshes.empty() || scene.sections.empty()) return;
+    if ((mOpenMeshes.empty() && mSurfaces.empty()) || scene.sections.empty()) return;
     for (const NodePtr& object : scene.objects) {
-        if (!meshLeafBelow(object.get())) continue;
+        if (!meshLeafBelow(object.get()) && !isSurfaceTree(*object)) continue;  // csg/surfaces.h
         const Bounds3& box = object->bounds();
         for (size_t i = 0; i < scene.sections.size(); ++i) {
             const SectionPlane& plane = scene.sections[i];

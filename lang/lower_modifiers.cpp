@@ -41,6 +41,18 @@ NodePtr Lowering::applyModifiers(NodePtr node, const Solid& s) {
             hasPending = nullptr;
             node = node && checkSolidOperands({node}, "displaced", m.loc) ? displaced(node, m) : nullptr;
             ok = node != nullptr;
+        } else if (m.kind == Modifier::Kind::Interior) {  // as a material (lower_surfaces.cpp)
+            const std::optional<int> index = materialIndex(m.material, m.materialLoc);
+            if (!index || !ok) {
+                ok = false;
+                continue;
+            }
+            if (hasPending) node = transformed(node, pending, *hasPending);
+            if (!node) return nullptr;
+            pending = Affine{};
+            hasPending = nullptr;
+            node = limitDepth(interiorOf(node, *index), m.loc);
+            ok = node != nullptr;
         } else if (motion || m.kind == Modifier::Kind::Material) {
             // A material or a motion wraps what came before it: pending transforms first.
             std::optional<Vec3> v;

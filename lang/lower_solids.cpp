@@ -4,6 +4,7 @@
 #include "lang/lower.h"
 
 #include "csg/solids.h"
+#include "csg/surfaces.h"
 #include "csg/tape.h"
 #include "lang/diagnostic_hints.h"
 #include "lang/names.h"
@@ -219,6 +220,7 @@ NodePtr Lowering::lowerPrimitive(const Solid& s) {
     if (s.name == "halfspace") return lowerHalfSpace(s);
     if (s.name == "implicit") return lowerImplicit(s);
     if (s.name == "mesh") return lowerMesh(s);
+    if (s.name == "disc" || s.name == "triangle" || s.name == "surface" || s.name == "clip") return lowerSurface(s);
     error(s.loc, "unknown solid '" + s.name + "'", unknownSolidHint(s.name));  // the parser reports most
     return nullptr;
 }
@@ -259,11 +261,14 @@ NodePtr Lowering::lowerCylinder(const Solid& s) {
     const PropertyBlock b(s.properties,
                           {{"from", PropertyType::Vector, true},
                            {"to", PropertyType::Vector, true},
-                           {"radius", PropertyType::Number}},
+                           {"radius", PropertyType::Number},
+                           {"open", PropertyType::Bool}},
                           "cylinder", s.loc, mSink);
     Vec3 from{0.0}, to{0.0};
     double radius = 1.0;
+    bool open = false;  // the side alone, a surface (csg/surfaces.h)
     bool ok = b.ok();
+    ok &= readBool(b, "open", open);
     ok &= readVector(b, "from", from);
     ok &= readVector(b, "to", to);
     ok &= readNumber(b, "radius", radius);
@@ -276,7 +281,7 @@ NodePtr Lowering::lowerCylinder(const Solid& s) {
         error(s.loc, problem);
         return nullptr;
     }
-    return makeCylinder(from, to, radius);
+    return open ? noteSurface(makeOpenCone(from, to, radius, radius), s.loc) : makeCylinder(from, to, radius);
 }
 
 NodePtr Lowering::lowerCone(const Solid& s) {
@@ -284,11 +289,14 @@ NodePtr Lowering::lowerCone(const Solid& s) {
                           {{"from", PropertyType::Vector, true},
                            {"to", PropertyType::Vector, true},
                            {"radius1", PropertyType::Number},
-                           {"radius2", PropertyType::Number}},
+                           {"radius2", PropertyType::Number},
+                           {"open", PropertyType::Bool}},
                           "cone", s.loc, mSink);
     Vec3 from{0.0}, to{0.0};
     double r1 = 1.0, r2 = 0.0;
+    bool open = false;  // the side alone, a surface (csg/surfaces.h)
     bool ok = b.ok();
+    ok &= readBool(b, "open", open);
     ok &= readVector(b, "from", from);
     ok &= readVector(b, "to", to);
     ok &= readNumber(b, "radius1", r1);
@@ -310,7 +318,7 @@ NodePtr Lowering::lowerCone(const Solid& s) {
         error(s.loc, problem);
         return nullptr;
     }
-    return makeCone(from, to, r1, r2);
+    return open ? noteSurface(makeOpenCone(from, to, r1, r2), s.loc) : makeCone(from, to, r1, r2);
 }
 
 NodePtr Lowering::lowerTorus(const Solid& s) {

@@ -240,7 +240,8 @@ ArenaList<Property> Parser::parseProperties(const SourceLoc& open) {
         // property at all; the block is skipped.
         const bool noValue = check(TokenKind::RBrace) || check(TokenKind::End) ||
                              check(TokenKind::LBrace) ||
-                             (isForeignFlag(p.name) && check(TokenKind::Identifier));
+                             (isForeignFlag(p.name) && check(TokenKind::Identifier) &&
+                              !checkWord("true") && !checkWord("false"));  // `open true` has a value
         if (check(TokenKind::LBrace)) skipBlock();
         if (!noValue && check(TokenKind::Identifier) && peek(1).kind == TokenKind::LBrace)
             p.solid = store(parseSolid(false));
@@ -290,6 +291,7 @@ Solid Parser::parseSolid(bool withModifiers) {
         (contains(kStatementWords, t.text) && peek(1).kind != TokenKind::LBrace))
         fail(t.loc, "expected a solid, found " + describe(t), foreignHint(t));
     if (startsMesh()) return parseMesh(withModifiers);
+    if (startsSurfaceOp()) return parseSurfaceOp(withModifiers);
     if (peek(1).kind == TokenKind::LParen && isSolidKind(t.text))  // OpenSCAD's sphere(1)
         fail(peek(1).loc, "expected '{' after '" + t.text + "', found '('", callSyntaxHint(t.text));
     if (peek(1).kind == TokenKind::LParen) {  // a function call that makes a solid
@@ -458,6 +460,13 @@ ArenaList<Modifier> Parser::parseModifiers() {
             next();
             const Expr arg = parseExpr();
             m.args = list(&arg, 1);
+        } else if (word == "interior") {  // `interior MATERIAL` (csg/surfaces.h)
+            m.kind = Modifier::Kind::Interior;
+            next();
+            if (peek().kind != TokenKind::Identifier)
+                fail(peek().loc, "expected a material name after 'interior', found " + describe(peek()));
+            m.materialLoc = peek().pos;
+            m.material = mArena->intern(next().text);
         } else if (word == "material" && peek(1).kind != TokenKind::Identifier) {
             fail(peek(1).loc, "expected a material name after 'material', found " + describe(peek(1)));
         } else if (word == "material" && peek(2).kind != TokenKind::LBrace) {

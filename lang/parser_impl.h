@@ -22,8 +22,8 @@ inline const std::array<const char*, 15> kStatementWords = {
 /// Words that open a statement but may also stand for a child inside a Boolean body.
 inline const std::array<const char*, 2> kBlockWords = {"for", "if"};
 inline const std::array<const char*, 4> kBooleanWords = {"union", "intersection", "difference", "xor"};
-inline const std::array<const char*, 7> kModifierWords = {"translate", "rotate", "scale", "matrix",
-                                                          "material",  "move",   "spin"};
+inline const std::array<const char*, 8> kModifierWords = {"translate", "rotate", "scale", "matrix",
+                                                          "material",  "move",   "spin",  "interior"};
 
 template <size_t N>
 inline bool contains(const std::array<const char*, N>& words, const std::string& w) {
@@ -176,6 +176,11 @@ private:
     /// `mesh FILE (smooth BOOL)? modifiers`: a Primitive named "mesh" whose properties are
     /// file and smooth.
     Solid parseMesh(bool withModifiers);
+    /// True at `surface` or `clip` followed by a solid (parse_surfaces.cpp).
+    bool startsSurfaceOp();
+    /// `surface SOLID` or `clip SURFACE by SOLID`: a Primitive named "surface" or "clip"
+    /// whose children are its operands; modifiers after the clip's solid are the clip's.
+    Solid parseSurfaceOp(bool withModifiers);
     std::vector<Solid> parseChildren(const char* what);
     ArenaList<Modifier> parseModifiers();
     /// `[a, b, …]` with commas, or `[a b …]` separated by blanks, where each entry is a single

@@ -17,10 +17,18 @@
 
 #include <immintrin.h>
 
+#include <cstdint>
+#include <limits>
 #include <vector>
 
+// GCC takes the target from push_options; clang ignores that and needs its own attribute
+// pragma, or the always_inline AVX2 tests could not be inlined into the walks.
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
 #pragma GCC push_options
 #pragma GCC target("avx2")
+#endif
 #include "mesh/bvh4_queries.h"
 
 #define KERF_AVX2_INLINE __attribute__((target("avx2"), always_inline)) inline
@@ -146,4 +154,8 @@ void allCrossings(const View& v, const Ray& ray, double tmin, double tmax,
 }  // namespace avx2
 }  // namespace kerf::bvh4
 
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
 #pragma GCC pop_options
+#endif

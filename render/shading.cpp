@@ -280,6 +280,10 @@ Vec3 WhittedIntegrator::transmittance(const Ray& ray, double tmax, ShadingContex
     mShadowGeometry.forEachObjectSpans(ray, 0.0, tmax, ctx.trace, [&](int, const SpanList& spans) {
         for (const Span& s : spans) {
             if (blocked) return false;
+            if (s.in.t == s.out.t) {  // a surface's crossing (csg/surfaces.h): nothing inside
+                cross(s.in);
+                continue;
+            }
             const double a = std::max(s.in.t, 0.0);
             const double b = std::min(s.out.t, tmax);
             if (!(a < b)) continue;  // the span misses the segment

@@ -1,6 +1,8 @@
 // The scene's section: objects contoured, loops grouped into regions and material layers.
 #include "slice/slice.h"
 
+#include "csg/surfaces.h"
+
 #include "slice/material_at.h"
 #include "slice/mesh_section.h"
 #include "slice/section_tape.h"
@@ -54,6 +56,12 @@ SceneSlicer::SceneSlicer(const Scene& scene, const SlicePlane& family, const Sli
         const NodePtr& node = scene.objects[i];
         const Bounds3 b = node->bounds();
         if (b.empty()) continue;
+        if (isSurfaceTree(*node)) {  // csg/surfaces.h: a sheet has no inside to cut
+            mNotes.push_back("object " + std::to_string(i + 1) +
+                             " is a surface (disc, triangle, open cylinder or cone, surface, clip), not a solid; "
+                             "left out of the section");
+            continue;
+        }
         if (!b.finite()) {
             mNotes.push_back("object " + std::to_string(i + 1) +
                              " is unbounded (a half-space or infinite solid); left out of the section");

@@ -1,6 +1,8 @@
 // The acceleration rule: which objects get an octree.
 #include "volume/accelerate.h"
 
+#include "csg/surfaces.h"
+
 namespace kerf {
 
 const char* accelName(Accel accel) {
@@ -25,8 +27,9 @@ AcceleratedObjects accelerate(const std::vector<NodePtr>& objects, Accel accel,
     out.objectBvh = accel != Accel::None;
     out.objects.reserve(objects.size());
     for (const NodePtr& o : objects) {
-        const bool octree =
-            accel == Accel::Octree || (accel == Accel::Auto && octreePays(o, options));
+        // A surface (csg/surfaces.h) has no inside for the octree's cells to classify.
+        const bool octree = (accel == Accel::Octree && !isSurfaceTree(*o)) ||
+                            (accel == Accel::Auto && octreePays(o, options));
         out.objects.push_back(octree ? withOctree(o, options) : o);
     }
     return out;

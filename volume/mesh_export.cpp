@@ -1,6 +1,7 @@
 // `kerf mesh`'s pipeline, stage by stage, with the time of each.
 #include "volume/mesh_export.h"
 
+#include "csg/surfaces.h"
 #include "csg/tree_tape.h"
 #include "volume/vdb_mesh.h"
 
@@ -27,6 +28,7 @@ TriangleMesh exportMesh(const std::vector<NodePtr>& objects, const MeshExportOpt
     ExprId solid = -1;
     Bounds3 bounds;
     for (const NodePtr& object : objects) {
+        if (isSurfaceTree(*object)) continue;  // csg/surfaces.h: a sheet encloses nothing to mesh
         const Bounds3& b = object->bounds();
         if (!b.empty() && !b.finite()) {
             ++stats.unboundedSkipped;

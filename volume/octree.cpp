@@ -2,6 +2,8 @@
 // runs of boundary cells, each with the tree pruned to its cells.
 #include "volume/octree.h"
 
+#include "csg/surfaces.h"
+
 #include "csg/clip_ray.h"
 #include "csg/node_kind.h"
 #include "csg/tape.h"
@@ -416,6 +418,7 @@ double largestImplicitExtent(const NodePtr& object) {
 bool octreePays(const NodePtr& object, const OctreeOptions& options) {
     const Bounds3& b = object->bounds();
     if (b.empty() || !b.finite() || !hasImplicitLeaf(object)) return false;
+    if (isSurfaceTree(*object)) return false;  // csg/surfaces.h: no inside to classify cells by
     return largestImplicitExtent(object) >= kMinImplicitCells * frameFor(b, options).h;
 }
 

@@ -173,7 +173,7 @@ TEST_CASE("hints: POV-Ray's positional values") {
     SECTION("POV-Ray's open after the values") {
         const Diagnostic d = oneError("object cylinder { <0, 0, 0>, <0, 1, 0>, 1 open };", 1, 19,
                                       "expected a property name in cylinder, found '<'");
-        CHECK_THAT(d.hint, EndsWith("'; kerf's cylinders and cones are always capped"));
+        CHECK_THAT(d.hint, EndsWith("'; kerf writes it 'open true' (the side alone: a surface, not a solid)"));
     }
     SECTION("a count POV-Ray does not take shows the form with placeholders") {
         CHECK(
@@ -197,12 +197,11 @@ TEST_CASE("hints: unknown and value-less properties in every block") {
     SECTION("a flag at the end of a block, and one before another property") {
         const Diagnostic d =
             oneError("object cone {\n  from <0, 0, 0> to <0, 1, 0>\n  radius1 1 open\n};", 3, 13,
-                     "unknown property 'open' in cone");
-        CHECK(
-            d.hint ==
-            "kerf's cylinders and cones are always capped; cone takes: from, to, radius1, radius2");
+                     "property 'open' of cone has no value");
+        // POV-Ray's bare `open` flag: kerf takes `open true` (an open cone is a surface).
+        CHECK(d.hint == "write its value after the name: 'open true'");
         oneError("object cone { from <0, 0, 0> open to <0, 1, 0> };", 1, 30,
-                 "unknown property 'open' in cone");
+                 "property 'open' of cone has no value");
     }
     SECTION("a block for a value is skipped") {
         const Diagnostic d = oneError("object sphere { radius 1 pigment { color <1, 0, 0> } };", 1,

@@ -81,6 +81,11 @@ void dump(const NodePtr& n, std::string& out, std::map<const Node*, int>& ids) {
             } else if constexpr (std::is_same_v<P, MaterialParams>) { out += std::to_string(p.material); }
             else if constexpr (std::is_same_v<P, MotionParams>) { bits(out, p.velocity); bits(out, p.spin); }
             else if constexpr (std::is_same_v<P, MeshParams>) { out += std::to_string(p.smooth); }
+            else if constexpr (std::is_same_v<P, DiscParams>) { bits(out, p.center); bits(out, p.normal); bits(out, p.radius); bits(out, p.inner); }
+            else if constexpr (std::is_same_v<P, TriangleParams>) { bits(out, p.a); bits(out, p.b); bits(out, p.c); }
+            else if constexpr (std::is_same_v<P, OpenConeParams>) { bits(out, p.a); bits(out, p.b); bits(out, p.r1); bits(out, p.r2); }
+            else if constexpr (std::is_same_v<P, SurfaceParams>) {}
+            else if constexpr (std::is_same_v<P, InteriorParams>) { out += std::to_string(p.material); }
             else { out += std::to_string(static_cast<int>(p.op)); }
         },
         n->params());
