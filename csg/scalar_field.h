@@ -27,6 +27,16 @@ public:
     /// A bound on every partial derivative's magnitude, |∂f/∂x|, |∂f/∂y|, |∂f/∂z| ≤ lipschitz()
     /// everywhere (1 for a distance).
     virtual double lipschitz() const { return 1.0; }
+    /// range() and an enclosure g of the gradient over the box, in the sense the mean-value
+    /// form needs: f(p) − f(q) ∈ Σₖ g[k]·(pₖ − qₖ) for all p, q in the box. The default is
+    /// [−L, L] on every axis (L = lipschitz()); a field that can prove more (e.g. that it is
+    /// affine in the box) lets root isolation prove a root unique instead of bisecting.
+    virtual Interval rangeGradient(const Interval& x, const Interval& y, const Interval& z,
+                                   Interval g[3]) const {
+        const double l = lipschitz();
+        for (int k = 0; k < 3; ++k) g[k] = l >= 0.0 && l < kInf ? Interval(-l, l) : Interval::entire();
+        return range(x, y, z);
+    }
 };
 
 }  // namespace kerf

@@ -152,14 +152,12 @@ void Tape::evalIntervalAlongRayReference(const Ray& ray, const Interval& t, Inte
                 break;
             }
             case Op::Field: {
-                // The field gives no gradient enclosure, only a bound L on each partial, so the
-                // chain rule takes every partial in [−L, L] (a slope of a Lipschitz field,
-                // kinks included, lies there).
+                // The chain rule through the field's gradient enclosure over the box: [−L, L]
+                // per axis unless the field proves more (ScalarField::rangeGradient).
                 const RaySlot &a = s[in.a], &b = s[in.b], &c = s[in.c];
-                const ScalarField& field = this->field(in);
-                const Interval partial = lipschitzPartial(field);
-                r.v = field.range(a.v, b.v, c.v);
-                r.d = scaledSlope(partial, a) + scaledSlope(partial, b) + scaledSlope(partial, c);
+                Interval g[3];
+                r.v = this->field(in).rangeGradient(a.v, b.v, c.v, g);
+                r.d = scaledSlope(g[0], a) + scaledSlope(g[1], b) + scaledSlope(g[2], c);
                 break;
             }
             default:

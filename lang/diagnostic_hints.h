@@ -15,6 +15,8 @@ const std::vector<std::string>& primitiveKinds();
 const std::vector<std::string>& booleanKinds();
 /// True for a primitive or a Boolean.
 bool isSolidKind(const std::string& name);
+/// circle, rect, polygon, path, offset: 2-D profiles, written inside extrude and revolve.
+bool isProfileKind(const std::string& name);
 
 /// The hint for a name used as a solid that kerf does not know: a near-miss spelling
 /// (edit distance at most 2), or what kerf has instead of another modeller's solid, then the

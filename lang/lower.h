@@ -18,6 +18,7 @@
 #pragma once
 
 #include "csg/expr.h"
+#include "csg/profile.h"
 #include "io/font_outline.h"
 #include "scene/scene.h"
 #include "lang/ast.h"
@@ -210,6 +211,19 @@ private:
     int heightOf(const NodePtr& node);
     /// `node`, or null with an error at `at` if its tree is deeper than kMaxCsgDepth.
     NodePtr limitDepth(NodePtr node, SourcePos at);
+
+    // lower_profiles.cpp: 2-D profiles (csg/profile.h) and the solids made from them.
+    /// circle, rect, polygon, path, offset, or a union / intersection / difference of them.
+    std::optional<Profile> lowerProfile(const Solid& s);
+    std::optional<Profile> lowerPath(const Solid& s);
+    /// The block's required `profile` property, lowered.
+    std::optional<Profile> profileProperty(const PropertyBlock& b);
+    NodePtr lowerExtrude(const Solid& s);
+    NodePtr lowerRevolve(const Solid& s);
+    /// A 2-D point written [x, y]; `what` names it in messages.
+    bool point2(const Expr& e, const std::string& what, Vec2& out);
+    /// A list of at least three 2-D points.
+    bool points2(const Value& v, SourcePos at, const std::string& what, std::vector<Vec2>& out);
 
     // lower_scene.cpp
     void lowerMaterial(const Statement& s, Material& m);

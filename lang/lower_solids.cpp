@@ -221,6 +221,14 @@ NodePtr Lowering::lowerPrimitive(const Solid& s) {
     if (s.name == "implicit") return lowerImplicit(s);
     if (s.name == "mesh") return lowerMesh(s);
     if (s.name == "disc" || s.name == "triangle" || s.name == "surface" || s.name == "clip") return lowerSurface(s);
+    if (s.name == "extrude") return lowerExtrude(s);
+    if (s.name == "revolve") return lowerRevolve(s);
+    if (isProfileKind(s.name)) {
+        error(s.loc, "'" + s.name + "' is a 2-D profile, not a solid",
+              "make a solid of it: extrude { profile " + s.name + " { … } height 1 } or revolve { profile " +
+                  s.name + " { … } }");
+        return nullptr;
+    }
     error(s.loc, "unknown solid '" + s.name + "'", unknownSolidHint(s.name));  // the parser reports most
     return nullptr;
 }

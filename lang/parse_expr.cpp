@@ -178,8 +178,9 @@ Expr Parser::binary(const Token& op, const Expr& lhs, const Expr& rhs, char code
 }
 
 bool Parser::isSolidWord(const std::string& w) {
-    static const std::array<const char*, 7> kPrimitives = {"sphere", "box", "cylinder", "cone",
-                                                           "torus", "halfspace", "implicit"};
+    static const std::array<const char*, 9> kPrimitives = {"sphere",    "box",      "cylinder",
+                                                           "cone",      "torus",    "halfspace",
+                                                           "implicit",  "extrude",  "revolve"};
     if (w == "disc" || w == "triangle") return true;  // surfaces (lower_surfaces.cpp)
     return contains(kPrimitives, w) || contains(kBooleanWords, w);
 }

@@ -121,12 +121,11 @@ IntervalSlopes evalIntervalSlopes(const Tape& tape, const Interval& u, const Int
                 for (int k = 1; k < 3; ++k) r[k] = g[0] * a[k] + g[1] * b[k] + g[2] * c[k];
                 break;
             }
-            case Op::Field: {  // the chain rule with each partial in [−L, L] (L = lipschitz())
+            case Op::Field: {  // the chain rule through the field's gradient enclosure
                 const Interval* c = &s[3 * in.c];
-                const ScalarField& field = tape.field(in);
-                const Interval partial = lipschitzPartial(field);
-                r[0] = field.range(a[0], b[0], c[0]);
-                for (int k = 1; k < 3; ++k) r[k] = partial * a[k] + partial * b[k] + partial * c[k];
+                Interval g[3];
+                r[0] = tape.field(in).rangeGradient(a[0], b[0], c[0], g);
+                for (int k = 1; k < 3; ++k) r[k] = g[0] * a[k] + g[1] * b[k] + g[2] * c[k];
                 break;
             }
             default:

@@ -14,8 +14,8 @@ using kerf::test::compileText;
 namespace {
 
 const char* const kSolidList =
-    "The solids are: sphere, box, cylinder, cone, torus, halfspace, implicit, union, intersection, "
-    "difference, xor";
+    "The solids are: sphere, box, cylinder, cone, torus, halfspace, implicit, extrude, revolve, union, "
+    "intersection, difference, xor";
 
 /// The one error of `text`, checked for its message and place.
 Diagnostic oneError(const std::string& text, int line, int col, const std::string& message) {
@@ -96,7 +96,7 @@ TEST_CASE("hints: an unknown solid used like a primitive") {
               std::string("did you mean 'union'? ") + kSolidList);
         CHECK(oneError("object  sph { };", 1, 9, "unknown solid 'sph'").hint ==
               "the solids are: sphere, box, "
-              "cylinder, cone, torus, halfspace, implicit, union, intersection, difference, xor");
+              "cylinder, cone, torus, halfspace, implicit, extrude, revolve, union, intersection, difference, xor");
     }
     SECTION("as the bound of an implicit") {
         CHECK_THAT(

@@ -1,0 +1,192 @@
+// 2-D profiles as expressions, and the extrude / revolve solids built on them.
+#include "csg/profile.h"
+
+#include "csg/solids.h"
+#include "csg/tape.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace kerf {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+ExprId sub(ExprGraph& g, ExprId a, ExprId b) { return g.binary(Op::Sub, a, b); }
+ExprId add(ExprGraph& g, ExprId a, ExprId b) { return g.binary(Op::Add, a, b); }
+ExprId mul(ExprGraph& g, ExprId a, ExprId b) { return g.binary(Op::Mul, a, b); }
+ExprId num(ExprGraph& g, double v) { return g.constant(v); }
+
+Bounds2 hull(const Bounds2& a, const Bounds2& b) { return {glm::min(a.lo, b.lo), glm::max(a.hi, b.hi)}; }
+Bounds2 overlap(const Bounds2& a, const Bounds2& b) { return {glm::max(a.lo, b.lo), glm::min(a.hi, b.hi)}; }
+
+/// The box grown by a small fraction of its size, so that a face lying on it (an extrusion's
+/// cap, a cylinder's side) is inside the implicit's bound rather than on its edge.
+Bounds3 padded(Bounds3 b) {
+    const Vec3 pad = 0x1p-20 * (b.hi - b.lo) + 0x1p-40 * glm::max(glm::abs(b.lo), glm::abs(b.hi));
+    return {b.lo - pad, b.hi + pad};
+}
+
+Profile combine(std::vector<Profile> parts, Op op, Bounds2 bounds) {
+    Profile r;
+    r.bounds = bounds;
+    r.distance = [parts = std::move(parts), op](ExprGraph& g, ExprId u, ExprId v) {
+        ExprId d = parts[0].distance(g, u, v);
+        for (size_t i = 1; i < parts.size(); ++i) {
+            ExprId e = parts[i].distance(g, u, v);
+            if (op == Op::Sub) {  // difference: max(d, −e)
+                d = g.binary(Op::Max, d, g.unary(Op::Neg, e));
+            } else {
+                d = g.binary(op, d, e);
+            }
+        }
+        return d;
+    };
+    return r;
+}
+
+}  // namespace
+
+Profile profileCircle(Vec2 center, double radius) {
+    Profile p;
+    p.bounds = {center - Vec2(radius), center + Vec2(radius)};
+    p.distance = [center, radius](ExprGraph& g, ExprId u, ExprId v) {
+        const ExprId du = sub(g, u, num(g, center.x)), dv = sub(g, v, num(g, center.y));
+        return sub(g, g.unary(Op::Sqrt, add(g, g.unary(Op::Square, du), g.unary(Op::Square, dv))), num(g, radius));
+    };
+    return p;
+}
+
+Profile profileRect(Vec2 lo, Vec2 hi) {
+    Profile p;
+    p.bounds = {lo, hi};
+    const Vec2 c = 0.5 * (lo + hi), h = 0.5 * (hi - lo);
+    p.distance = [c, h](ExprGraph& g, ExprId u, ExprId v) {
+        // q = |p − c| − h. The distance is max(qx, qy) except beyond a corner (qx, qy > 0), where
+        // it is |q|; there |q| ≤ qx + qy, and elsewhere qx + qy ≤ max(qx, qy), so
+        // max(max(qx, qy), min(|q|, qx + qy)) is exact everywhere. The textbook |max(q, 0)| is
+        // avoided: its sqrt is 0 over the whole inside, where its slope is unbounded and root
+        // isolation could never prove an interval free of roots.
+        const ExprId qx = sub(g, g.unary(Op::Abs, sub(g, u, num(g, c.x))), num(g, h.x));
+        const ExprId qy = sub(g, g.unary(Op::Abs, sub(g, v, num(g, c.y))), num(g, h.y));
+        const ExprId corner = g.unary(Op::Sqrt, add(g, g.unary(Op::Square, qx), g.unary(Op::Square, qy)));
+        return g.binary(Op::Max, g.binary(Op::Max, qx, qy), g.binary(Op::Min, corner, add(g, qx, qy)));
+    };
+    return p;
+}
+
+Profile profilePath(PathShape shape) {
+    Profile p;
+    p.bounds = pathBounds(shape);
+    auto field = pathField(std::move(shape));
+    p.distance = [field](ExprGraph& g, ExprId u, ExprId v) { return g.field(u, v, num(g, 0.0), field); };
+    return p;
+}
+
+Profile profilePolygon(const std::vector<Vec2>& outline, const std::vector<std::vector<Vec2>>& holes) {
+    PathShape shape;
+    const auto addLoop = [&](const std::vector<Vec2>& points) {
+        PathLoop loop;
+        for (size_t i = 0; i < points.size(); ++i) {
+            PathSegment s;
+            s.p[0] = points[i];
+            s.p[1] = points[(i + 1) % points.size()];
+            loop.segments.push_back(s);
+        }
+        shape.loops.push_back(std::move(loop));
+    };
+    addLoop(outline);
+    for (const auto& h : holes) addLoop(h);
+    return profilePath(std::move(shape));
+}
+
+Profile profileUnion(std::vector<Profile> parts) {
+    Bounds2 b = parts[0].bounds;
+    for (const Profile& p : parts) b = hull(b, p.bounds);
+    return combine(std::move(parts), Op::Min, b);
+}
+
+Profile profileIntersection(std::vector<Profile> parts) {
+    Bounds2 b = parts[0].bounds;
+    for (const Profile& p : parts) b = overlap(b, p.bounds);
+    b.hi = glm::max(b.hi, b.lo);  // disjoint: an empty box, kept well-formed
+    return combine(std::move(parts), Op::Max, b);
+}
+
+Profile profileDifference(std::vector<Profile> parts) {
+    const Bounds2 b = parts[0].bounds;
+    return combine(std::move(parts), Op::Sub, b);
+}
+
+Profile profileOffset(Profile p, double r) {
+    Profile out;
+    out.bounds = {p.bounds.lo - Vec2(r), p.bounds.hi + Vec2(r)};
+    if (r < 0.0) out.bounds = p.bounds;  // shrinking: the old box still holds it
+    out.distance = [inner = std::move(p.distance), r](ExprGraph& g, ExprId u, ExprId v) {
+        return sub(g, inner(g, u, v), num(g, r));
+    };
+    return out;
+}
+
+NodePtr makeExtrude(const Profile& profile, const ExtrudeOptions& o) {
+    ExprGraph g;
+    const double y0 = o.center ? -0.5 * o.height : 0.0;
+    const ExprId x = g.x(), y = g.y(), z = g.z();
+    // t = (y − y0)/h, 0 at the bottom, 1 at the top.
+    const ExprId t = mul(g, sub(g, y, num(g, y0)), num(g, 1.0 / o.height));
+    ExprId u = x, v = z;
+    if (o.twist != 0.0) {
+        // The profile at t is turned about +y by θ = twist·t; undo it: (u, v) = R(−θ)(x, z).
+        const ExprId theta = mul(g, t, num(g, o.twist * kPi / 180.0));
+        const ExprId c = g.unary(Op::Cos, theta), s = g.unary(Op::Sin, theta);
+        u = sub(g, mul(g, x, c), mul(g, z, s));
+        v = add(g, mul(g, x, s), mul(g, z, c));
+    }
+    ExprId d;
+    if (o.scale != 1.0) {
+        // The profile at t is scaled by k = 1 + (s − 1)t about the axis: d2(u/k, v/k) is its
+        // distance divided by k, so min(1, s)·d2(u/k, v/k) has the right sign and is never
+        // more than the in-plane distance (k ≥ min(1, s) over the height).
+        const ExprId k = add(g, num(g, 1.0), mul(g, t, num(g, o.scale - 1.0)));
+        const ExprId inv = g.binary(Op::Div, num(g, 1.0), k);
+        d = mul(g, num(g, std::min(1.0, o.scale)), profile.distance(g, mul(g, u, inv), mul(g, v, inv)));
+    } else {
+        d = profile.distance(g, u, v);
+    }
+    const double yc = y0 + 0.5 * o.height;
+    const ExprId slab = sub(g, g.unary(Op::Abs, sub(g, y, num(g, yc))), num(g, 0.5 * o.height));
+    const ExprId f = g.binary(Op::Max, d, slab);
+
+    Bounds2 b = profile.bounds;
+    if (o.scale != 1.0) b = hull(b, {b.lo * o.scale, b.hi * o.scale});
+    if (o.twist != 0.0) {
+        const double r = glm::length(glm::max(glm::abs(b.lo), glm::abs(b.hi)));
+        b = {Vec2(-r), Vec2(r)};
+    }
+    const Bounds3 bound{Vec3(b.lo.x, y0, b.lo.y), Vec3(b.hi.x, y0 + o.height, b.hi.y)};
+    return makeImplicit(Tape::compile(g, f), padded(bound));
+}
+
+NodePtr makeRevolve(const Profile& profile, double degrees) {
+    ExprGraph g;
+    const ExprId x = g.x(), y = g.y(), z = g.z();
+    const ExprId r = g.unary(Op::Sqrt, add(g, g.unary(Op::Square, x), g.unary(Op::Square, z)));
+    ExprId f = profile.distance(g, r, y);
+    if (degrees < 360.0) {
+        // The wedge from +x toward +z: z ≥ 0, and the side of the ray at `degrees` facing back.
+        const double a = degrees * kPi / 180.0;
+        const double ca = degrees == 180.0 ? -1.0 : degrees == 90.0 || degrees == 270.0 ? 0.0 : std::cos(a);
+        const double sa = degrees == 180.0 ? 0.0 : degrees == 90.0 ? 1.0 : degrees == 270.0 ? -1.0 : std::sin(a);
+        const ExprId first = g.unary(Op::Neg, z);
+        const ExprId second = sub(g, mul(g, num(g, ca), z), mul(g, num(g, sa), x));
+        const ExprId wedge = g.binary(degrees <= 180.0 ? Op::Max : Op::Min, first, second);
+        f = g.binary(Op::Max, f, wedge);
+    }
+    const double reach = std::max(profile.bounds.hi.x, 0.0);  // only u ≥ 0 is turned
+    const Bounds3 bound{Vec3(-reach, profile.bounds.lo.y, -reach), Vec3(reach, profile.bounds.hi.y, reach)};
+    return makeImplicit(Tape::compile(g, f), padded(bound));
+}
+
+}  // namespace kerf

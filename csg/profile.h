@@ -1,0 +1,60 @@
+/// @file csg/profile.h
+/// @brief 2-D profiles and the solids made from them: the API that `circle`, `rect`,
+/// `polygon`, `path`, `offset`, `extrude` and `revolve` (lang/lower_profiles.cpp), text glyphs
+/// and OpenSCAD's linear_extrude / rotate_extrude all use.
+///
+/// A Profile is a function d(u, v) written into an ExprGraph, negative inside, with a box
+/// holding the region d ≤ 0. Circles, rectangles and paths (polygons, glyphs) give their exact
+/// signed distance; Booleans are min / max of their operands (a bound of the distance, exact
+/// in sign); offset(r) is d − r (exactly the rounded offset when d is a distance).
+/// Extrude and revolve substitute (u, v) by functions of x, y, z and make an implicit leaf
+/// (makeImplicit) with a tight bound, so they take part in CSG, slices, the octree and
+/// `kerf check` like any implicit form.
+#pragma once
+
+#include "csg/expr.h"
+#include "csg/node.h"
+#include "csg/profile_field.h"
+
+#include <functional>
+#include <vector>
+
+namespace kerf {
+
+struct Profile {
+    /// Writes d(u, v) into the graph and returns its node.
+    std::function<ExprId(ExprGraph&, ExprId u, ExprId v)> distance;
+    /// Holds every point with d ≤ 0.
+    Bounds2 bounds;
+};
+
+/// The disc of the given centre and radius (radius > 0).
+Profile profileCircle(Vec2 center, double radius);
+/// The rectangle lo..hi (lo < hi on both axes).
+Profile profileRect(Vec2 lo, Vec2 hi);
+/// A filled path (even-odd), by csg/profile_field.h. An empty shape has no inside.
+Profile profilePath(PathShape shape);
+/// A closed polygon with holes, as a path of lines (each list at least three points).
+Profile profilePolygon(const std::vector<Vec2>& outline, const std::vector<std::vector<Vec2>>& holes);
+/// min / max of the operands (at least one).
+Profile profileUnion(std::vector<Profile> parts);
+Profile profileIntersection(std::vector<Profile> parts);
+/// The first minus all the others.
+Profile profileDifference(std::vector<Profile> parts);
+/// d − r: grown by r (r > 0, corners rounded) or shrunk by −r.
+Profile profileOffset(Profile p, double r);
+
+struct ExtrudeOptions {
+    double height = 1.0;  ///< along y, > 0
+    double twist = 0.0;   ///< degrees turned (counter-clockwise seen from +y) from bottom to top
+    double scale = 1.0;   ///< the profile's size at the top relative to the bottom, > 0
+    bool center = false;  ///< y from −h/2 to h/2, else from 0 to h
+};
+
+/// The profile drawn in the (x, z) plane (u = x, v = z) swept along y.
+NodePtr makeExtrude(const Profile& profile, const ExtrudeOptions& options);
+/// The profile drawn in the (r, y) plane (u = distance from the y axis, v = y), turned about
+/// the y axis by `degrees` in (0, 360], starting at +x toward +z. Only the part at u ≥ 0 counts.
+NodePtr makeRevolve(const Profile& profile, double degrees = 360.0);
+
+}  // namespace kerf

@@ -1,0 +1,524 @@
+// A PathShape's signed distance: nearest point by segment (a small BVH over the segments'
+// boxes), sign by crossing parity over y-monotone pieces.
+#include "csg/profile_field.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace kerf {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+/// Béziers are refined until bound and found point agree to this fraction of their size.
+constexpr double kCurveTolerance = 0x1p-34;
+
+/// [0, 2π)
+double wrapAngle(double a) {
+    a = std::fmod(a, kTwoPi);
+    return a < 0.0 ? a + kTwoPi : a;
+}
+
+/// The point of segment [a, b] nearest to p, and its parameter in [0, 1].
+Vec2 nearestOnSegment(Vec2 a, Vec2 b, Vec2 p, double& s) {
+    const Vec2 ab = b - a;
+    const double len2 = glm::dot(ab, ab);
+    s = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+    return a + s * ab;
+}
+
+double distanceToSegment(Vec2 a, Vec2 b, Vec2 p) {
+    double s;
+    return glm::length(p - nearestOnSegment(a, b, p, s));
+}
+
+struct Cubic {
+    std::array<Vec2, 4> p;
+    Vec2 at(double t) const {
+        const double u = 1.0 - t;
+        return u * u * u * p[0] + 3.0 * u * u * t * p[1] + 3.0 * u * t * t * p[2] + t * t * t * p[3];
+    }
+    /// The direction of travel at t (the chord where the derivative vanishes).
+    Vec2 tangent(double t) const {
+        const double u = 1.0 - t;
+        const Vec2 d = u * u * (p[1] - p[0]) + 2.0 * u * t * (p[2] - p[1]) + t * t * (p[3] - p[2]);
+        return d != Vec2(0.0) ? d : p[3] - p[0];
+    }
+    /// de Casteljau at t: the part before t and after it.
+    std::pair<Cubic, Cubic> split(double t) const {
+        const Vec2 a = glm::mix(p[0], p[1], t), b = glm::mix(p[1], p[2], t), c = glm::mix(p[2], p[3], t);
+        const Vec2 d = glm::mix(a, b, t), e = glm::mix(b, c, t);
+        const Vec2 m = glm::mix(d, e, t);
+        return {Cubic{{p[0], a, d, m}}, Cubic{{m, e, c, p[3]}}};
+    }
+    /// The part over [t0, t1].
+    Cubic part(double t0, double t1) const {
+        Cubic right = t0 > 0.0 ? split(t0).second : *this;
+        if (t1 >= 1.0) return right;
+        return right.split((t1 - t0) / (1.0 - t0)).first;
+    }
+};
+
+/// A circular arc by centre, radius, start angle and signed sweep (positive counter-clockwise).
+struct Arc {
+    Vec2 c;
+    double r = 0.0;
+    double theta0 = 0.0;
+    double sweep = 0.0;
+    bool covers(double phi) const {
+        const double s = sweep > 0.0 ? wrapAngle(phi - theta0) : wrapAngle(theta0 - phi);
+        return s <= std::abs(sweep);
+    }
+    Vec2 at(double theta) const { return c + r * Vec2(std::cos(theta), std::sin(theta)); }
+};
+
+struct Segment {
+    PathSegment::Kind kind = PathSegment::Kind::Line;
+    Vec2 a, b;  ///< the end points as written (joins compare equal)
+    Arc arc;
+    Cubic cubic;  ///< quadratics are raised to cubics
+    Bounds2 box;
+    double tolerance = 0.0;  ///< absolute, for Béziers
+};
+
+/// A y-monotone piece of a segment, for crossing counts.
+struct Piece {
+    const Segment* seg = nullptr;
+    Vec2 a, b;        ///< end points (the written ones at the segment's ends)
+    double xMin, xMax;
+    Cubic cubic;      ///< the Bézier piece
+    bool rightHalf = true;  ///< the arc piece lies at x ≥ centre
+};
+
+/// The nearest point found so far, with the unit normal of its segment there (either side)
+/// and the segment's size: near the outline p − q is rounding noise, the normal is not.
+struct Segment;
+struct Nearest {
+    double d = kInf;
+    Vec2 q{0.0};
+    Vec2 normal{0.0};
+    double size = 0.0;
+    const Segment* segment = nullptr;
+    void offer(Vec2 p, Vec2 point, Vec2 tangent, double segmentSize) {
+        const double dist = glm::length(p - point);
+        if (dist < d) {
+            d = dist;
+            q = point;
+            const double len = glm::length(tangent);
+            normal = len > 0.0 ? Vec2(-tangent.y, tangent.x) / len : Vec2(0.0);
+            size = segmentSize;
+        }
+    }
+};
+
+double boxDistance(const Bounds2& b, Vec2 p) {
+    const Vec2 d = glm::max(glm::max(b.lo - p, p - b.hi), Vec2(0.0));
+    return glm::length(d);
+}
+
+void nearestOnCubic(const Cubic& c, Vec2 p, double tolerance, double size, int depth, Nearest& n) {
+    // The control polygon lies within h of the chord, so the curve does too.
+    const double h = std::max(distanceToSegment(c.p[0], c.p[3], c.p[1]),
+                              distanceToSegment(c.p[0], c.p[3], c.p[2]));
+    double s;
+    const double chord = glm::length(p - nearestOnSegment(c.p[0], c.p[3], p, s));
+    const double lower = chord - h;
+    if (lower >= n.d) return;
+    const Vec2 q = c.at(s);
+    n.offer(p, q, c.tangent(s), size);
+    n.offer(p, c.p[0], c.tangent(0.0), size);
+    n.offer(p, c.p[3], c.tangent(1.0), size);
+    if (depth >= 52 || glm::length(p - q) - lower <= tolerance) return;
+    const auto [left, right] = c.split(0.5);
+    // Nearer half first, so the bound prunes the other.
+    const double dl = distanceToSegment(left.p[0], left.p[3], p);
+    const double dr = distanceToSegment(right.p[0], right.p[3], p);
+    if (dl <= dr) {
+        nearestOnCubic(left, p, tolerance, size, depth + 1, n);
+        nearestOnCubic(right, p, tolerance, size, depth + 1, n);
+    } else {
+        nearestOnCubic(right, p, tolerance, size, depth + 1, n);
+        nearestOnCubic(left, p, tolerance, size, depth + 1, n);
+    }
+}
+
+void nearestOnAny(const Segment& s, Vec2 p, Nearest& n);
+
+void nearestOn(const Segment& s, Vec2 p, Nearest& n) {
+    const double before = n.d;
+    nearestOnAny(s, p, n);
+    if (n.d < before) n.segment = &s;
+}
+
+void nearestOnAny(const Segment& s, Vec2 p, Nearest& n) {
+    const double size = glm::length(s.box.hi - s.box.lo);
+    switch (s.kind) {
+        case PathSegment::Kind::Line: {
+            double t;
+            n.offer(p, nearestOnSegment(s.a, s.b, p, t), s.b - s.a, size);
+            return;
+        }
+        case PathSegment::Kind::Arc: {
+            const Vec2 d = p - s.arc.c;
+            const double len = glm::length(d);
+            const auto tangentAt = [&](Vec2 q) { const Vec2 r = q - s.arc.c; return Vec2(-r.y, r.x); };
+            if (len > 0.0 && s.arc.covers(std::atan2(d.y, d.x))) {
+                const Vec2 q = s.arc.c + d * (s.arc.r / len);
+                n.offer(p, q, tangentAt(q), size);
+            }
+            n.offer(p, s.a, tangentAt(s.a), size);
+            n.offer(p, s.b, tangentAt(s.b), size);
+            return;
+        }
+        default: nearestOnCubic(s.cubic, p, s.tolerance, size, 0, n);
+    }
+}
+
+/// Does the ray from p toward +x cross the piece? Half-open in y: a piece counts when
+/// a.y ≤ p.y < b.y or b.y ≤ p.y < a.y, so a join between two pieces counts once.
+bool crosses(const Piece& piece, Vec2 p) {
+    const bool up = piece.a.y <= p.y && p.y < piece.b.y;
+    const bool down = piece.b.y <= p.y && p.y < piece.a.y;
+    if (!up && !down) return false;
+    if (piece.xMax <= p.x) return false;
+    if (piece.xMin > p.x && piece.seg->kind != PathSegment::Kind::Arc) return true;
+    switch (piece.seg->kind) {
+        case PathSegment::Kind::Line: {
+            const double t = (p.y - piece.a.y) / (piece.b.y - piece.a.y);
+            return piece.a.x + t * (piece.b.x - piece.a.x) > p.x;
+        }
+        case PathSegment::Kind::Arc: {
+            const Arc& arc = piece.seg->arc;
+            const double dy = p.y - arc.c.y;
+            const double half = std::sqrt(std::max(0.0, arc.r * arc.r - dy * dy));
+            return (piece.rightHalf ? arc.c.x + half : arc.c.x - half) > p.x;
+        }
+        default: {  // bisection on the monotone y(t)
+            double lo = 0.0, hi = 1.0;
+            const bool rising = piece.b.y > piece.a.y;
+            for (int i = 0; i < 60 && hi - lo > 0.0; ++i) {
+                const double mid = 0.5 * (lo + hi);
+                if ((piece.cubic.at(mid).y < p.y) == rising) lo = mid;
+                else hi = mid;
+            }
+            return piece.cubic.at(0.5 * (lo + hi)).x > p.x;
+        }
+    }
+}
+
+/// Roots of a t² + b t + c in (0, 1), ascending.
+std::vector<double> unitRoots(double a, double b, double c) {
+    std::vector<double> roots;
+    const double scale = std::max({std::abs(a), std::abs(b), std::abs(c)});
+    if (scale == 0.0) return roots;
+    if (std::abs(a) <= 0x1p-40 * scale) {
+        if (b != 0.0) roots.push_back(-c / b);
+    } else {
+        const double disc = b * b - 4.0 * a * c;
+        if (disc >= 0.0) {
+            const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+            roots.push_back(q / a);
+            if (q != 0.0) roots.push_back(c / q);
+        }
+    }
+    std::vector<double> inside;
+    for (double t : roots)
+        if (t > 0.0 && t < 1.0) inside.push_back(t);
+    std::sort(inside.begin(), inside.end());
+    return inside;
+}
+
+class PathField final : public ScalarField {
+public:
+    PathField(const PathField&) = delete;  // pieces point into mSegments
+    PathField& operator=(const PathField&) = delete;
+    explicit PathField(const PathShape& shape) {
+        for (const PathLoop& loop : shape.loops)
+            for (const PathSegment& s : loop.segments) mSegments.push_back(makeSegment(s));
+        for (const Segment& s : mSegments) addPieces(s);
+        std::vector<int> order(mSegments.size());
+        std::iota(order.begin(), order.end(), 0);
+        if (!order.empty()) build(order, 0, static_cast<int>(order.size()));
+        mOrder = std::move(order);
+        for (const Segment& s : mSegments)
+            mScale = std::max({mScale, std::abs(s.box.lo.x), std::abs(s.box.lo.y), std::abs(s.box.hi.x),
+                               std::abs(s.box.hi.y)});
+    }
+
+    double value(const Vec3& p) const override {
+        const Nearest n = nearest(Vec2(p.x, p.y));
+        return inside(Vec2(p.x, p.y)) ? -n.d : n.d;
+    }
+    long double valueExtended(const glm::tvec3<long double>& p) const override {
+        return value(Vec3(static_cast<double>(p.x), static_cast<double>(p.y), static_cast<double>(p.z)));
+    }
+    double valueGradient(const Vec3& p, Vec3& gradient) const override {
+        const Vec2 p2(p.x, p.y);
+        const Nearest n = nearest(p2);
+        const double sign = inside(p2) ? -1.0 : 1.0;
+        const Vec2 away = p2 - n.q;
+        const double scale = n.size + std::max(std::abs(n.q.x), std::abs(n.q.y));
+        if (n.d > 0x1p-30 * scale) {  // p − q is accurate: the distance's own gradient
+            gradient = Vec3(sign * away / n.d, 0.0);
+        } else {  // on the outline: the segment's normal, turned to point out of the shape
+            const Vec2 probe = n.q + 0x1p-24 * n.size * n.normal;
+            gradient = Vec3(inside(probe) ? -n.normal : n.normal, 0.0);
+        }
+        return sign * n.d;
+    }
+    Interval range(const Interval& x, const Interval& y, const Interval&) const override {
+        if (mSegments.empty()) return Interval(kInf, kInf);
+        for (const Interval* a : {&x, &y})
+            if (!std::isfinite(a->lo) || !std::isfinite(a->hi) || a->maybeNan) return Interval(-kInf, kInf);
+        const Vec2 center(x.mid(), y.mid());
+        const Vec2 half(std::max(x.hi - center.x, center.x - x.lo), std::max(y.hi - center.y, center.y - y.lo));
+        const double d = nearest(center).d;
+        // 1-Lipschitz: every point of the box is within r of the centre. `err` covers the
+        // Bézier refinement tolerance and rounding in d and r (a few operations on numbers no
+        // larger than `scale`).
+        const double r = glm::length(half) * (1.0 + 0x1p-50);
+        const double scale = std::max({mScale, std::abs(center.x), std::abs(center.y)}) + std::max(half.x, half.y);
+        const double err = (kCurveTolerance + 0x1p-40) * scale;
+        const double hi = d + r + err;
+        const double lo = d - r - err;
+        if (lo > 0.0) return inside(center) ? Interval(-hi, -lo) : Interval(lo, hi);
+        return Interval(-hi, hi);
+    }
+
+    Interval rangeGradient(const Interval& x, const Interval& y, const Interval& z, Interval g[3]) const override {
+        g[0] = g[1] = Interval(-1.0, 1.0);
+        g[2] = Interval(0.0);  // z is ignored
+        const Interval r = range(x, y, z);
+        if (!std::isfinite(r.lo) || !std::isfinite(r.hi)) return r;
+        // When one straight edge is the nearest feature for every point of the box, at an
+        // interior point of it, the box holds no other outline: the sign flips only across
+        // that edge and the field is the signed distance to its line — affine, its gradient
+        // the edge's outward normal. Proven here with the 1-Lipschitz bounds used by range().
+        const Vec2 center(x.mid(), y.mid());
+        const Vec2 half(std::max(x.hi - center.x, center.x - x.lo), std::max(y.hi - center.y, center.y - y.lo));
+        const double rad = glm::length(half) * (1.0 + 0x1p-50);
+        const double scale = std::max({mScale, std::abs(center.x), std::abs(center.y)}) + std::max(half.x, half.y);
+        const double err = 0x1p-40 * scale;
+        if (!(rad > 0x1p-30 * scale)) return r;  // too small for the side probe below
+        const Nearest n = nearest(center);
+        if (!n.segment || n.segment->kind != PathSegment::Kind::Line) return r;
+        const Segment& s = *n.segment;
+        // Every other segment stays farther than this one from every point of the box.
+        if (!(nearest(center, &s).d - rad - err > n.d + rad + err)) return r;
+        // The foot of every point of the box lies strictly inside the edge.
+        const Vec2 ab = s.b - s.a;
+        const double len2 = glm::dot(ab, ab);
+        if (!(len2 > 0.0)) return r;
+        const double sc = glm::dot(center - s.a, ab) / len2;
+        const double sr = (std::abs(ab.x) * half.x + std::abs(ab.y) * half.y) / len2;
+        if (!(sc - sr > 0x1p-30 && sc + sr < 1.0 - 0x1p-30)) return r;
+        // The outward side: a probe off the edge by rad/2 meets no other outline (the others
+        // are more than 2·rad from the box).
+        Vec2 normal = Vec2(-ab.y, ab.x) / std::sqrt(len2);
+        if (inside(s.a + sc * ab + 0.5 * rad * normal)) normal = -normal;
+        constexpr double kUlps = 0x1p-50;  // rounding in the normal's components
+        g[0] = Interval(normal.x - kUlps, normal.x + kUlps);
+        g[1] = Interval(normal.y - kUlps, normal.y + kUlps);
+        return r;
+    }
+
+private:
+    struct BvhNode {
+        Bounds2 box;
+        int first = 0, count = 0;  ///< a leaf's range in mOrder
+        int left = -1, right = -1;
+    };
+
+    static Segment makeSegment(const PathSegment& in) {
+        Segment s;
+        s.kind = in.kind;
+        s.a = in.start();
+        s.b = in.end();
+        switch (in.kind) {
+            case PathSegment::Kind::Line: s.box = {glm::min(s.a, s.b), glm::max(s.a, s.b)}; break;
+            case PathSegment::Kind::Arc: {
+                Arc& arc = s.arc;
+                arc.c = in.p[2];
+                arc.r = 0.5 * (glm::length(s.a - arc.c) + glm::length(s.b - arc.c));
+                arc.theta0 = std::atan2(s.a.y - arc.c.y, s.a.x - arc.c.x);
+                const double theta1 = std::atan2(s.b.y - arc.c.y, s.b.x - arc.c.x);
+                double sweep = in.ccw ? wrapAngle(theta1 - arc.theta0) : wrapAngle(arc.theta0 - theta1);
+                if (sweep == 0.0) sweep = kTwoPi;  // start = end: a full turn
+                arc.sweep = in.ccw ? sweep : -sweep;
+                s.box = {arc.c - Vec2(arc.r), arc.c + Vec2(arc.r)};
+                break;
+            }
+            case PathSegment::Kind::Quadratic:
+            case PathSegment::Kind::Cubic: {
+                if (in.kind == PathSegment::Kind::Quadratic)
+                    s.cubic = Cubic{{in.p[0], in.p[0] + (2.0 / 3.0) * (in.p[1] - in.p[0]),
+                                     in.p[2] + (2.0 / 3.0) * (in.p[1] - in.p[2]), in.p[2]}};
+                else
+                    s.cubic = Cubic{{in.p[0], in.p[1], in.p[2], in.p[3]}};
+                s.box = {s.cubic.p[0], s.cubic.p[0]};
+                for (const Vec2& q : s.cubic.p) {
+                    s.box.lo = glm::min(s.box.lo, q);
+                    s.box.hi = glm::max(s.box.hi, q);
+                }
+                s.tolerance = kCurveTolerance * glm::length(s.box.hi - s.box.lo);
+                break;
+            }
+        }
+        return s;
+    }
+
+    void addPieces(const Segment& s) {
+        if (s.kind == PathSegment::Kind::Line) {
+            mPieces.push_back({&s, s.a, s.b, std::min(s.a.x, s.b.x), std::max(s.a.x, s.b.x), {}, true});
+            return;
+        }
+        if (s.kind == PathSegment::Kind::Arc) {
+            // Split where the tangent is horizontal: angles π/2 + kπ inside the sweep.
+            const Arc& arc = s.arc;
+            std::vector<double> cuts = {0.0};
+            const double step = arc.sweep > 0.0 ? 1.0 : -1.0;
+            for (int k = -4; k <= 4; ++k) {
+                const double theta = kTwoPi / 4.0 + k * (kTwoPi / 2.0);
+                const double along = step > 0 ? wrapAngle(theta - arc.theta0) : wrapAngle(arc.theta0 - theta);
+                if (along > 0.0 && along < std::abs(arc.sweep) &&
+                    std::find(cuts.begin(), cuts.end(), along) == cuts.end())
+                    cuts.push_back(along);
+            }
+            std::sort(cuts.begin(), cuts.end());
+            cuts.push_back(std::abs(arc.sweep));
+            for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+                const double t0 = arc.theta0 + step * cuts[i], t1 = arc.theta0 + step * cuts[i + 1];
+                const Vec2 a = i == 0 ? s.a : arc.at(t0);
+                const Vec2 b = i + 2 == cuts.size() ? s.b : arc.at(t1);
+                const bool right = std::cos(0.5 * (t0 + t1)) >= 0.0;
+                mPieces.push_back({&s, a, b, right ? arc.c.x : arc.c.x - arc.r, right ? arc.c.x + arc.r : arc.c.x,
+                                   {}, right});
+            }
+            return;
+        }
+        const auto& p = s.cubic.p;
+        const double a = 3.0 * (-p[0].y + 3.0 * p[1].y - 3.0 * p[2].y + p[3].y);
+        const double b = 6.0 * (p[0].y - 2.0 * p[1].y + p[2].y);
+        const double c = 3.0 * (p[1].y - p[0].y);
+        std::vector<double> cuts = unitRoots(a, b, c);
+        cuts.insert(cuts.begin(), 0.0);
+        cuts.push_back(1.0);
+        for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+            if (cuts[i + 1] <= cuts[i]) continue;
+            Piece piece;
+            piece.seg = &s;
+            piece.cubic = s.cubic.part(cuts[i], cuts[i + 1]);
+            piece.a = i == 0 ? s.a : piece.cubic.p[0];
+            piece.b = i + 2 == cuts.size() ? s.b : piece.cubic.p[3];
+            piece.cubic.p[0] = piece.a;
+            piece.cubic.p[3] = piece.b;
+            piece.xMin = piece.xMax = piece.a.x;
+            for (const Vec2& q : piece.cubic.p) {
+                piece.xMin = std::min(piece.xMin, q.x);
+                piece.xMax = std::max(piece.xMax, q.x);
+            }
+            mPieces.push_back(piece);
+        }
+    }
+
+    int build(std::vector<int>& order, int first, int last) {
+        BvhNode node;
+        node.box = mSegments[order[first]].box;
+        for (int i = first; i < last; ++i) {
+            node.box.lo = glm::min(node.box.lo, mSegments[order[i]].box.lo);
+            node.box.hi = glm::max(node.box.hi, mSegments[order[i]].box.hi);
+        }
+        const int index = static_cast<int>(mNodes.size());
+        mNodes.push_back(node);
+        if (last - first <= 4) {
+            mNodes[index].first = first;
+            mNodes[index].count = last - first;
+            return index;
+        }
+        const Vec2 size = node.box.hi - node.box.lo;
+        const int axis = size.x >= size.y ? 0 : 1;
+        const int mid = (first + last) / 2;
+        std::nth_element(order.begin() + first, order.begin() + mid, order.begin() + last, [&](int i, int j) {
+            return mSegments[i].box.lo[axis] + mSegments[i].box.hi[axis] <
+                   mSegments[j].box.lo[axis] + mSegments[j].box.hi[axis];
+        });
+        const int left = build(order, first, mid);
+        const int right = build(order, mid, last);
+        mNodes[index].left = left;
+        mNodes[index].right = right;
+        return index;
+    }
+
+    Nearest nearest(Vec2 p, const Segment* skip = nullptr) const {
+        Nearest n;
+        if (mNodes.empty()) return n;
+        int stack[64];
+        int top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            const BvhNode& node = mNodes[stack[--top]];
+            if (boxDistance(node.box, p) >= n.d) continue;
+            if (node.left < 0) {
+                for (int i = 0; i < node.count; ++i) {
+                    const Segment& seg = mSegments[mOrder[node.first + i]];
+                    if (&seg != skip) nearestOn(seg, p, n);
+                }
+                continue;
+            }
+            const double dl = boxDistance(mNodes[node.left].box, p);
+            const double dr = boxDistance(mNodes[node.right].box, p);
+            // Push the farther child first so the nearer is visited first.
+            stack[top++] = dl <= dr ? node.right : node.left;
+            stack[top++] = dl <= dr ? node.left : node.right;
+        }
+        return n;
+    }
+
+    bool inside(Vec2 p) const {
+        bool odd = false;
+        for (const Piece& piece : mPieces) odd ^= crosses(piece, p);
+        return odd;
+    }
+
+    std::vector<Segment> mSegments;  // not resized after construction: pieces point into it
+    std::vector<Piece> mPieces;
+    std::vector<BvhNode> mNodes;
+    std::vector<int> mOrder;
+    double mScale = 0.0;
+};
+
+}  // namespace
+
+Bounds2 pathBounds(const PathShape& shape) {
+    bool first = true;
+    Bounds2 box;
+    for (const PathLoop& loop : shape.loops) {
+        for (const PathSegment& in : loop.segments) {
+            std::vector<Vec2> points;
+            if (in.kind == PathSegment::Kind::Arc) {
+                const double r = glm::length(in.p[0] - in.p[2]);
+                points = {in.p[2] - Vec2(r), in.p[2] + Vec2(r)};
+            } else {
+                const int n = in.kind == PathSegment::Kind::Line ? 2 : in.kind == PathSegment::Kind::Quadratic ? 3 : 4;
+                points.assign(in.p.begin(), in.p.begin() + n);
+            }
+            for (const Vec2& q : points) {
+                box.lo = first ? q : glm::min(box.lo, q);
+                box.hi = first ? q : glm::max(box.hi, q);
+                first = false;
+            }
+        }
+    }
+    return box;
+}
+
+std::shared_ptr<const ScalarField> pathField(PathShape shape) {
+    return std::make_shared<const PathField>(shape);
+}
+
+}  // namespace kerf
