@@ -192,6 +192,8 @@ private:
     /// an error at the property at fault (a missing font at `font`, a missing glyph at
     /// `string`). The caller takes the union of `glyphs` when `glyphsOverlap`.
     std::optional<TextOutline> lowerText(const Solid& s);
+    /// lowerText as a profile: one path, or the union of the glyphs when they overlap.
+    std::optional<Profile> textProfile(const Solid& s);
 
     /// The box of a `box { min max }` block; `what` is "box" or "bound" (for the message).
     std::optional<Bounds3> boxBounds(const Solid& s, const char* what);

@@ -3,6 +3,7 @@
 // font is looked up now, so a missing font or character is an error at its property.
 #include <filesystem>
 
+#include "csg/profile.h"
 #include "lang/lower.h"
 
 namespace kerf {
@@ -81,6 +82,17 @@ std::optional<TextOutline> Lowering::lowerText(const Solid& s) {
               e.message, e.hint);
         return std::nullopt;
     }
+}
+
+std::optional<Profile> Lowering::textProfile(const Solid& s) {
+    std::optional<TextOutline> text = lowerText(s);
+    if (!text) return std::nullopt;
+    // One even-odd path is the text exactly when no two glyphs share a point; else the
+    // overlap would be a hole, so the glyphs are joined by a union.
+    if (!text->glyphsOverlap) return profilePath(std::move(text->shape));
+    std::vector<Profile> parts;
+    for (PathShape& glyph : text->glyphs) parts.push_back(profilePath(std::move(glyph)));
+    return profileUnion(std::move(parts));
 }
 
 }  // namespace kerf
