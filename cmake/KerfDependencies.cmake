@@ -13,3 +13,6 @@ find_package(OpenVDB REQUIRED)
 # Assimp reads mesh files (OBJ, PLY, STL, glTF) for mesh/ only; Debian's libassimp-dev ships a
 # CMake config with the imported target assimp::assimp.
 find_package(assimp REQUIRED)
+# Text outlines (io/font_outline.cpp): FreeType reads the glyphs, fontconfig finds the files.
+find_package(Freetype REQUIRED)
+pkg_check_modules(FONTCONFIG REQUIRED IMPORTED_TARGET fontconfig)

@@ -47,7 +47,6 @@ const ForeignSolid kForeignSolids[] = {
     {"mesh2", "", "kerf reads meshes from files: write mesh \"file.stl\" (OBJ, PLY, STL, glTF)"},
     {"polyhedron", "", "polyhedra are not supported yet"},
     {"height_field", "", "height fields are not supported yet"},
-    {"text", "", "text is not supported"},
     {"linear_extrude", "extrude", "write extrude { profile circle { radius 1 } height 2 twist 0 scale 1 }"},
     {"rotate_extrude", "revolve", "write revolve { profile circle { center [2, 0] radius 1 } angle 360 }"},
     {"hull", "", "hulls are not supported"},
@@ -128,7 +127,8 @@ const std::vector<std::string>& primitiveKinds() {
 }
 
 bool isProfileKind(const std::string& name) {
-    return name == "circle" || name == "rect" || name == "polygon" || name == "path" || name == "offset";
+    return name == "circle" || name == "rect" || name == "polygon" || name == "path" || name == "offset" ||
+           name == "text";
 }
 
 const std::vector<std::string>& booleanKinds() {

@@ -19,6 +19,7 @@
 
 #include "csg/expr.h"
 #include "csg/profile.h"
+#include "io/font_outline.h"
 #include "scene/scene.h"
 #include "lang/ast.h"
 #include "lang/eval_limits.h"
@@ -186,6 +187,13 @@ private:
     bool checkSurfaceOperands(const std::vector<NodePtr>& operands, const std::string& use, SourcePos at);
     /// `interior MATERIAL`: makeInterior below any material modifiers (the innermost wins).
     NodePtr interiorOf(const NodePtr& node, int32_t material);
+    // lower_text.cpp
+    /// A `text { string … font … size … }` profile laid out (io/font_outline.h); nullopt with
+    /// an error at the property at fault (a missing font at `font`, a missing glyph at
+    /// `string`). The caller takes the union of `glyphs` when `glyphsOverlap`.
+    std::optional<TextOutline> lowerText(const Solid& s);
+    /// lowerText as a profile: one path, or the union of the glyphs when they overlap.
+    std::optional<Profile> textProfile(const Solid& s);
 
     /// The box of a `box { min max }` block; `what` is "box" or "bound" (for the message).
     std::optional<Bounds3> boxBounds(const Solid& s, const char* what);

@@ -150,6 +150,7 @@ std::optional<Profile> Lowering::lowerProfile(const Solid& s) {
         return profilePolygon(outline, holes);
     }
     if (s.name == "path") return lowerPath(s);
+    if (s.name == "text") return textProfile(s);  // lower_text.cpp
     if (s.name == "offset") {
         const PropertyBlock b(s.properties,
                               {{"distance", PropertyType::Number, true}, {"profile", PropertyType::Solid, true}},
