@@ -89,7 +89,7 @@ std::optional<Profile> Lowering::lowerProfile(const Solid& s) {
         return profileDifference(std::move(parts));
     }
     if (s.kind != Solid::Kind::Primitive) {
-        error(s.loc, "expected a 2-D profile (circle, rect, polygon, path, offset, or a union, intersection "
+        error(s.loc, "expected a 2-D profile (circle, rect, polygon, path, text, offset, or a union, intersection "
                      "or difference of them), found '" + s.name + "'",
               "profiles are written in place: they cannot be named or made by functions yet");
         return std::nullopt;
@@ -161,7 +161,7 @@ std::optional<Profile> Lowering::lowerProfile(const Solid& s) {
         if (!inner) return std::nullopt;
         return profileOffset(std::move(*inner), r);
     }
-    error(s.loc, "expected a 2-D profile (circle, rect, polygon, path, offset, or a union, intersection or "
+    error(s.loc, "expected a 2-D profile (circle, rect, polygon, path, text, offset, or a union, intersection or "
                  "difference of them), found '" + s.name + "'");
     return std::nullopt;
 }

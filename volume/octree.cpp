@@ -302,6 +302,18 @@ private:
             const bool wasOpen = openAtCut;  // the previous run ended inside, at its cut
             bool first = true;
             for (const Span& sp : *runSpans) {
+                // Inside from the search's start through full cells, leaving in the margin
+                // before the first run (a face on the line between a full cell and this
+                // boundary cell): no earlier run holds that span, so this one gives it.
+                if (firstRun && first && sp.in.t <= tmin && sp.out.t > tmin &&
+                    !(sp.out.t > runStart)) {
+                    Span piece = sp;
+                    if (!sp.in.isSurface()) piece.in = cutAt(sp.in, tmin);
+                    out->push_back(piece);
+                    first = false;
+                    realEnd = sp.out;
+                    continue;
+                }
                 if (!(sp.out.t > runStart) || !(sp.in.t < runEnd)) continue;  // the neighbours'
                 Span piece = sp;
                 const bool startsBefore = sp.in.t <= runStart;
