@@ -22,6 +22,15 @@ inline Compiled compileText(const std::string& text, const std::string& name = "
     return c;
 }
 
+/// The first object of a model that must compile.
+inline NodePtr firstObject(const std::string& text) {
+    const Compiled c = compileText(text);
+    INFO(c.sink.format());
+    REQUIRE(c.scene.has_value());
+    REQUIRE(!c.scene->objects.empty());
+    return c.scene->objects[0];
+}
+
 /// The text compiles with exactly one error, at line:col, whose message contains `message`.
 inline void requireOneError(const std::string& text, int line, int col, const std::string& message) {
     const Compiled c = compileText(text);

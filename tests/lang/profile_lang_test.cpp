@@ -9,20 +9,9 @@
 
 using namespace kerf;
 using kerf::test::compileText;
+using kerf::test::firstObject;
 using kerf::test::requireOneError;
 
-namespace {
-
-/// The first object of a model that must compile.
-NodePtr firstObject(const std::string& text) {
-    const test::Compiled c = compileText(text);
-    INFO(c.sink.format());
-    REQUIRE(c.scene.has_value());
-    REQUIRE(!c.scene->objects.empty());
-    return c.scene->objects[0];
-}
-
-}  // namespace
 
 TEST_CASE("profiles: an extruded circle has the cylinder's distance on its side") {
     const NodePtr n = firstObject("object extrude { profile circle { center [0.5, 0] radius 1 } height 4 };");

@@ -10,19 +10,9 @@
 
 using namespace kerf;
 using kerf::test::compileText;
+using kerf::test::firstObject;
 using kerf::test::requireOneError;
 
-namespace {
-
-NodePtr firstObject(const std::string& text) {
-    const test::Compiled c = compileText(text);
-    INFO(c.sink.format());
-    REQUIRE(c.scene.has_value());
-    REQUIRE(!c.scene->objects.empty());
-    return c.scene->objects[0];
-}
-
-}  // namespace
 
 TEST_CASE("text: an extruded text is inside exactly where its outline is") {
     const NodePtr n = firstObject(
