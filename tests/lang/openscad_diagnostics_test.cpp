@@ -64,19 +64,17 @@ TEST_CASE("openscad/every unsupported node is listed with its line and column") 
                       {5, 3, "import is not supported"},
                       {6, 3, "surface is not supported"},
                       {7, 3, "projection is not supported"},
-                      {8, 3, "linear_extrude is not supported yet"},
                       {8, 32, "offset is not supported"},
                       {8, 46, "text is not supported"},
-                      {9, 3, "rotate_extrude is not supported yet"},
                       {10, 3, "unknown OpenSCAD module 'frobnicate'"}});
 }
 
-TEST_CASE("openscad/2-D nodes are not read yet") {
+TEST_CASE("openscad/2-D shapes are read only under an extrusion") {
     const Read r = readCsg(
         "circle(r = 1);\nsquare(size = [1, 2]);\npolygon(points = [[0, 0], [1, 0], [0, 1]]);\n");
-    requireErrors(r, {{1, 1, "circle is not supported yet"},
-                      {2, 1, "square is not supported yet"},
-                      {3, 1, "polygon is not supported yet"}});
+    requireErrors(r, {{1, 1, "circle is a 2-D shape outside linear_extrude"},
+                      {2, 1, "square is a 2-D shape outside linear_extrude"},
+                      {3, 1, "polygon is a 2-D shape outside linear_extrude"}});
 }
 
 TEST_CASE("openscad/syntax errors point at the token") {
