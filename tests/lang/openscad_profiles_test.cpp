@@ -6,7 +6,9 @@
 // 90° fills x, y ≥ 0, by −90° x ≥ 0, y ≤ 0).
 #include "lang/openscad_csg.h"
 
+#include "csg/profile.h"
 #include "csg/span.h"
+#include "csg/tape.h"
 #include "csg/trace_context.h"
 
 #include <catch2/catch.hpp>
@@ -228,4 +230,34 @@ TEST_CASE("openscad/2-D errors") {
                                  "multmatrix([[1, 0, 0, 0], [0, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, "
                                  "1]]) square(1);")),
                  2, 14, "singular");
+}
+
+TEST_CASE("openscad/profileTransform: exact when rigid, a lower bound with the same sign when not") {
+    // Oracle: the image of the square [0, 1]² under each map is a rectangle whose exact
+    // distance profileRect gives (the rotation's in the turned frame).
+    auto field = [](const Profile& p) {
+        ExprGraph g;
+        return Tape::compile(g, p.distance(g, g.x(), g.y()));
+    };
+    const Profile unit = profileRect(Vec2(0), Vec2(1));
+    const double c = std::cos(0.5), s = std::sin(0.5);
+    const double turn[6] = {c, -s, 3, s, c, -1};     // rotate by 0.5 rad, then move
+    const double stretch[6] = {-4, 0, 1, 0, 0.5, 2};  // mirror and scale by 4 in x, 0.5 in y
+    const auto turned = field(profileTransform(unit, turn));
+    const auto stretched = field(profileTransform(unit, stretch));
+    const auto exactStretched = field(profileRect(Vec2(-3, 2), Vec2(1, 2.5)));
+    const auto exactUnit = field(unit);
+    for (int i = 0; i < 41; ++i) {
+        for (int j = 0; j < 41; ++j) {
+            const Vec2 p(-5 + 0.25 * i, -3 + 0.25 * j);
+            // The turned square's distance at p is the unit square's at the point turned back.
+            const Vec2 q = p - Vec2(3, -1);
+            const Vec2 back(c * q.x + s * q.y, -s * q.x + c * q.y);
+            CHECK(turned->eval(Vec3(p, 0)) == Approx(exactUnit->eval(Vec3(back, 0))).margin(1e-12));
+            const double f = stretched->eval(Vec3(p, 0)), d = exactStretched->eval(Vec3(p, 0));
+            CHECK((f > 0) == (d > 0));
+            CHECK(std::abs(f) <= std::abs(d) + 1e-12);
+            CHECK(std::abs(f) >= 0.5 / 4 * std::abs(d) - 1e-12);  // within σ_min/σ_max of it
+        }
+    }
 }
