@@ -156,6 +156,20 @@ TEST_CASE("openscad/rotate_extrude of a translated circle is a torus") {
     requireEnds(spansOf(r, {-10, 0.5, 0}, {1, 0, 0}), {7 - s, 7 + s, 13 - s, 13 + s});
     requireEnds(spansOf(r, {0, 0.5, -10}, {0, 0, 1}), {7 - s, 7 + s, 13 - s, 13 + s});
     requireEnds(spansOf(r, {3, -10, 0}, {0, 1, 0}), {9, 11});
+    SECTION("a profile left of the axis is turned as its mirror image, as in OpenSCAD") {
+        const Read left = readCsg(
+            "rotate_extrude() multmatrix([[1, 0, 0, -3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, "
+            "1]]) circle(r = 1);\n");
+        requireEnds(spansOf(left, {-10, 0.5, 0}, {1, 0, 0}), {7 - s, 7 + s, 13 - s, 13 + s});
+    }
+    SECTION("a profile across the axis: its part at x ≥ 0, with a warning") {
+        const Read across = readCsg("rotate_extrude() square(size = [4, 2], center = true);\n");
+        requireEnds(spansOf(across, {-10, 0.5, 0}, {1, 0, 0}), {8, 12});
+        bool warned = false;
+        for (const Diagnostic& d : across.sink.diagnostics())
+            warned |= d.severity == Severity::Warning && d.message.find("x < 0") != std::string::npos;
+        CHECK(warned);
+    }
 }
 
 TEST_CASE("openscad/a partial rotate_extrude turns from +x toward +y") {
