@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """OpenSCAD's own slice against `kerf slice` of the same .csg (issue 13 §5; docs/BENCHMARKS.md).
 
-For three of OpenSCAD's examples, exported to .csg (tests/data/openscad/), both tools cut the
+For three of OpenSCAD's examples, exported to .csg (tests/data/openscad/), and one torus made by
+rotate_extrude (bench/openscad_torus.csg), both tools cut the
 model by OpenSCAD's plane z = 0 (kerf's y = 0: kerf is y-up) and the section's area is compared
 with its closed form:
   openscad  the .csg wrapped in `projection(cut = true) { … }`, run as `openscad -o cut.svg`;
@@ -45,6 +46,10 @@ CASES = {
             "15-squares ∪, ∩, − radius-10 discs"),
     "example001": ("example001.csg", 4.0 * quadrant_corner(25.0, 12.5),
                    "radius-25 disc minus a cross of half-width 12.5"),
+    # An extrusion: rotate_extrude of the radius-1 circle at x = 3 (bench/openscad_torus.csg),
+    # cut through its equator: the annulus 2 ≤ ρ ≤ 4.
+    "torus": (os.path.join(HERE, "openscad_torus.csg"), 12.0 * math.pi,
+              "rotate_extrude torus: the annulus 2..4"),
 }
 
 

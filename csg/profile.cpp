@@ -130,6 +130,38 @@ Profile profileOffset(Profile p, double r) {
     return out;
 }
 
+Profile profileTransform(Profile p, const double m[6]) {
+    const double a = m[0], b = m[1], tx = m[2], c = m[3], d = m[4], ty = m[5];
+    const double det = a * d - b * c;
+    // A⁻¹ = [[d, −b], [−c, a]] / det.
+    const double ia = d / det, ib = -b / det, ic = -c / det, id = a / det;
+    // σ_min of a 2×2 matrix: the smaller root of σ² from its trace of AᵀA and |det|.
+    const double f = a * a + b * b + c * c + d * d;
+    const double disc = std::sqrt(std::max(0.0, f * f - 4.0 * det * det));
+    const double smax = std::sqrt(0.5 * (f + disc));
+    const double smin = std::fabs(det) / smax;  // σ_min·σ_max = |det|
+    Profile out;
+    Vec2 lo(kInf), hi(-kInf);
+    for (int i = 0; i < 4; ++i) {
+        const Vec2 q((i & 1) ? p.bounds.hi.x : p.bounds.lo.x, (i & 2) ? p.bounds.hi.y : p.bounds.lo.y);
+        const Vec2 r(a * q.x + b * q.y + tx, c * q.x + d * q.y + ty);
+        lo = glm::min(lo, r);
+        hi = glm::max(hi, r);
+    }
+    // The corners' images are rounded: grow the box a little so it still holds the region.
+    const Vec2 pad = 0x1p-40 * (hi - lo) + 0x1p-50 * glm::max(glm::abs(lo), glm::abs(hi));
+    out.bounds = {lo - pad, hi + pad};
+    out.distance = [inner = std::move(p.distance), ia, ib, ic, id, tx, ty, smin](ExprGraph& g, ExprId u,
+                                                                                   ExprId v) {
+        const ExprId du = sub(g, u, num(g, tx)), dv = sub(g, v, num(g, ty));
+        const ExprId pu = add(g, mul(g, num(g, ia), du), mul(g, num(g, ib), dv));
+        const ExprId pv = add(g, mul(g, num(g, ic), du), mul(g, num(g, id), dv));
+        const ExprId e = inner(g, pu, pv);
+        return smin == 1.0 ? e : mul(g, num(g, smin), e);
+    };
+    return out;
+}
+
 NodePtr makeExtrude(const Profile& profile, const ExtrudeOptions& o) {
     ExprGraph g;
     const double y0 = o.center ? -0.5 * o.height : 0.0;

@@ -44,6 +44,13 @@ Profile profileDifference(std::vector<Profile> parts);
 /// d − r: grown by r (r > 0, corners rounded) or shrunk by −r.
 Profile profileOffset(Profile p, double r);
 
+/// The affine map p ↦ A·p + t of the plane, A = [[m[0], m[1]], [m[3], m[4]]], t = (m[2], m[5])
+/// (row-major 2×3), A invertible. The profile becomes σ_min(A)·d(A⁻¹(p − t)): the same zero set
+/// and sign, and exactly the distance when A is rigid; otherwise a lower bound of it in
+/// magnitude (|A·q − A·s| ≥ σ_min|q − s| for every point s), so it stays 1-Lipschitz and sound
+/// to trace. Mirrors (det A < 0) are allowed.
+Profile profileTransform(Profile p, const double m[6]);
+
 struct ExtrudeOptions {
     double height = 1.0;  ///< along y, > 0
     double twist = 0.0;   ///< degrees turned (counter-clockwise seen from +y) from bottom to top

@@ -236,7 +236,10 @@ NodePtr ScadLowering::lowerMultmatrix(const ScadCall& c) {
 }
 
 NodePtr ScadLowering::lowerColor(const ScadCall& c) {
-    NodePtr child = lowerBoolean("union", c.children);
+    return applyColor(c, lowerBoolean("union", c.children));
+}
+
+NodePtr ScadLowering::applyColor(const ScadCall& c, NodePtr child) {
     const ScadArg* a = c.arg("c", 0);
     if (!a || a->value.kind == ScadValue::Kind::Undef) return child;
     const ScadValue& v = a->value;

@@ -47,6 +47,9 @@ public:
     /// The summary of unsupported nodes past the first kMaxUnsupportedReports.
     void finish();
 
+    /// `child` in the material of color call `c` (the colour checked first, an error at it
+    /// when wrong); null when child is null or on error.
+    NodePtr applyColor(const ScadCall& c, NodePtr child);
     /// Counts a circle of radius r for the facet note, from the call's $fn, $fa, $fs.
     void countFacets(const ScadCall& c, double r);
 
