@@ -2,6 +2,7 @@
 // colours worked out by hand. kerf's (x, y, z) is OpenSCAD's (x, z, −y): a point OpenSCAD puts
 // at height z is at kerf y = z.
 #include "lang/openscad_csg.h"
+#include "openscad_test_util.h"
 
 #include "csg/span.h"
 #include "csg/trace_context.h"
@@ -10,29 +11,9 @@
 #include <cmath>
 
 using namespace kerf;
+using namespace kerf::test;
 
 namespace {
-
-struct Read {
-    DiagnosticSink sink;
-    std::optional<Scene> scene;
-};
-
-Read readCsg(const std::string& text) {
-    Read r;
-    r.scene = compileOpenScadString(text, "test.csg", r.sink);
-    return r;
-}
-
-/// The spans of the scene's one object along a ray given in kerf's coordinates.
-SpanList spansOf(const Read& r, const Vec3& origin, const Vec3& dir) {
-    REQUIRE(r.scene.has_value());
-    REQUIRE(r.scene->objects.size() == 1);
-    TraceContext ctx;
-    SpanList spans;
-    r.scene->objects[0]->spans(Ray{origin, dir}, 0, kInf, ctx, spans);
-    return spans;
-}
 
 /// The span ends as a flat list t0, t1, t2, ….
 std::vector<double> ends(const SpanList& s) {

@@ -2,6 +2,7 @@
 // column, all of them in one run; and OpenSCAD's example files, which load when they use only
 // the nodes read (tests/data/openscad/ holds those, exported by OpenSCAD 2021.01).
 #include "lang/openscad_csg.h"
+#include "openscad_test_util.h"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -9,19 +10,9 @@
 #include <map>
 
 using namespace kerf;
+using namespace kerf::test;
 
 namespace {
-
-struct Read {
-    DiagnosticSink sink;
-    std::optional<Scene> scene;
-};
-
-Read readCsg(const std::string& text) {
-    Read r;
-    r.scene = compileOpenScadString(text, "test.csg", r.sink);
-    return r;
-}
 
 struct Where {
     int line;

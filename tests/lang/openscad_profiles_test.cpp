@@ -5,6 +5,7 @@
 // two 4×4 squares overlapping in a 2×2 one extrude to a volume of 24, not 28; rotate_extrude by
 // 90° fills x, y ≥ 0, by −90° x ≥ 0, y ≤ 0).
 #include "lang/openscad_csg.h"
+#include "openscad_test_util.h"
 
 #include "csg/profile.h"
 #include "csg/span.h"
@@ -15,29 +16,9 @@
 #include <cmath>
 
 using namespace kerf;
+using namespace kerf::test;
 
 namespace {
-
-struct Read {
-    DiagnosticSink sink;
-    std::optional<Scene> scene;
-};
-
-Read readCsg(const std::string& text) {
-    Read r;
-    r.scene = compileOpenScadString(text, "test.csg", r.sink);
-    return r;
-}
-
-SpanList spansOf(const Read& r, const Vec3& origin, const Vec3& dir) {
-    INFO(r.sink.format());
-    REQUIRE(r.scene.has_value());
-    REQUIRE(r.scene->objects.size() == 1);
-    TraceContext ctx;
-    SpanList spans;
-    r.scene->objects[0]->spans(Ray{origin, dir}, 0, kInf, ctx, spans);
-    return spans;
-}
 
 /// Implicit surfaces are found by root isolation to within its tolerance; 1e-6 is far above
 /// it and far below any feature here.
