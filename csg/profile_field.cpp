@@ -3,6 +3,7 @@
 #include "csg/profile_field.h"
 
 #include "csg/path_geometry.h"
+#include "csg/path_normals.h"
 
 #include <algorithm>
 #include <cmath>
@@ -90,7 +91,11 @@ public:
         const double err = 0x1p-40 * scale;
         if (!(rad > 0x1p-30 * scale)) return r;  // too small for the side probe below
         const Nearest n = nearest(center);
-        if (!n.segment || n.segment->kind != PathSegment::Kind::Line) return r;
+        if (!n.segment) return r;
+        if (n.segment->kind != PathSegment::Kind::Line) {
+            curvedGradient(n, center, half, rad, err + kCurveTolerance * scale, g);
+            return r;
+        }
         const Segment& s = *n.segment;
         // Every other segment stays farther than this one from every point of the box.
         if (!(nearest(center, &s).d - rad - err > n.d + rad + err)) return r;
@@ -112,6 +117,35 @@ public:
     }
 
 private:
+    /// rangeGradient where a Bézier or an arc is nearest to the box's centre: when it is the
+    /// only outline within reach of the box, the field there is the signed distance to it,
+    /// whose gradient is its outward normal at the feet (csg/path_normals.h bounds those).
+    void curvedGradient(const Nearest& n, Vec2 center, Vec2 half, double rad, double err, Interval g[3]) const {
+        const Segment& s = *n.segment;
+        // The foot of every point p of the box is within d(p) + rad ≤ d(center) + 2·rad.
+        const double reach = n.d + 2.0 * rad + 2.0 * err;
+        NormalSector sector;
+        double clear = 0.0;
+        if (!nearNormalSector(s, center, reach, sector, clear)) return;
+        // No other segment within reach (the feet are on s) nor in the disc that holds the
+        // part of s in reach (nothing crosses it, so the inside stays on one side of it).
+        if (!(nearest(center, &s).d - err > std::max(clear, reach))) return;
+        // Which side is out: from the point of the box farthest from the outline, whose
+        // direction to its foot is accurate.
+        Vec2 probe = center;
+        Nearest m = n;
+        for (const Vec2 corner : {Vec2(-1, -1), Vec2(1, -1), Vec2(-1, 1), Vec2(1, 1)}) {
+            const Vec2 q = center + corner * half;
+            const Nearest k = nearest(q);
+            if (k.d > m.d) probe = q, m = k;
+        }
+        if (m.segment != &s || !(m.d > 0x1p-30 * (m.size + std::max(std::abs(m.q.x), std::abs(m.q.y))))) return;
+        const double out = (inside(probe) ? -1.0 : 1.0) * glm::dot(probe - m.q, m.normal) / m.d;
+        if (!(std::abs(out) > 0.5)) return;
+        const double turn = out > 0.0 ? 0.0 : 0.5 * kTwoPi;
+        sectorBox(sector.lo + turn, sector.hi + turn, g[0], g[1]);
+    }
+
     struct BvhNode {
         Bounds2 box;
         int first = 0, count = 0;  ///< a leaf's range in mOrder
