@@ -177,13 +177,16 @@ NodePtr makeExtrude(const Profile& profile, const ExtrudeOptions& o) {
         v = add(g, mul(g, x, s), mul(g, z, c));
     }
     ExprId d;
-    if (o.scale != 1.0) {
-        // The profile at t is scaled by k = 1 + (s − 1)t about the axis: d2(u/k, v/k) is its
-        // distance divided by k, so min(1, s)·d2(u/k, v/k) has the right sign and is never
-        // more than the in-plane distance (k ≥ min(1, s) over the height).
-        const ExprId k = add(g, num(g, 1.0), mul(g, t, num(g, o.scale - 1.0)));
-        const ExprId inv = g.binary(Op::Div, num(g, 1.0), k);
-        d = mul(g, num(g, std::min(1.0, o.scale)), profile.distance(g, mul(g, u, inv), mul(g, v, inv)));
+    if (o.scale != Vec2(1.0)) {
+        // The profile at t is scaled about the axis by kx = 1 + (sx − 1)t along u and ky along
+        // v: d2(u/kx, v/ky) has the scaled profile's sign, and min(kx, ky)·d2(u/kx, v/ky) is
+        // never more than its in-plane distance in magnitude (and is it when kx = ky).
+        const ExprId kx = add(g, num(g, 1.0), mul(g, t, num(g, o.scale.x - 1.0)));
+        const ExprId ky = o.scale.y == o.scale.x ? kx : add(g, num(g, 1.0), mul(g, t, num(g, o.scale.y - 1.0)));
+        const ExprId one = num(g, 1.0);
+        const ExprId su = mul(g, u, g.binary(Op::Div, one, kx)), sv = mul(g, v, g.binary(Op::Div, one, ky));
+        const ExprId k = kx == ky ? kx : g.binary(Op::Min, kx, ky);
+        d = mul(g, k, profile.distance(g, su, sv));
     } else {
         d = profile.distance(g, u, v);
     }
@@ -192,7 +195,7 @@ NodePtr makeExtrude(const Profile& profile, const ExtrudeOptions& o) {
     const ExprId f = g.binary(Op::Max, d, slab);
 
     Bounds2 b = profile.bounds;
-    if (o.scale != 1.0) b = hull(b, {b.lo * o.scale, b.hi * o.scale});
+    if (o.scale != Vec2(1.0)) b = hull(b, {b.lo * o.scale, b.hi * o.scale});
     if (o.twist != 0.0) {
         const double r = glm::length(glm::max(glm::abs(b.lo), glm::abs(b.hi)));
         b = {Vec2(-r), Vec2(r)};

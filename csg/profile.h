@@ -54,7 +54,8 @@ Profile profileTransform(Profile p, const double m[6]);
 struct ExtrudeOptions {
     double height = 1.0;  ///< along y, > 0
     double twist = 0.0;   ///< degrees turned (counter-clockwise seen from +y) from bottom to top
-    double scale = 1.0;   ///< the profile's size at the top relative to the bottom, > 0
+    /// The profile's size at the top relative to the bottom along its u and v axes, > 0.
+    Vec2 scale{1.0, 1.0};
     bool center = false;  ///< y from −h/2 to h/2, else from 0 to h
 };
 

@@ -49,7 +49,7 @@ const char* const kListHint = "list the installed fonts with `fc-list : family s
 
 }  // namespace
 
-FontLocation findFont(const std::string& font) {
+FontLocation findFont(const std::string& font, bool acceptSubstitute) {
     if (font.empty())
         throw FontError(FontError::Subject::Font, "the font name is empty", kListHint);
     if (isFontPath(font)) {
@@ -58,7 +58,7 @@ FontLocation findFont(const std::string& font) {
             throw FontError(FontError::Subject::Font,
                             "font file '" + font + "' does not exist or is not a regular file");
         }
-        return {font, 0};
+        return {font, 0, {}};
     }
 
     // fontconfig's default configuration is shared process state: one lookup at a time.
@@ -104,6 +104,11 @@ FontLocation findFont(const std::string& font) {
             if (i == 0) got = n;
             if (familyKey(n) == familyKey(wanted)) same = true;
         }
+        if (!same && acceptSubstitute) {
+            int index = 0;
+            FcPatternGetInteger(match.get(), FC_INDEX, 0, &index);
+            return {reinterpret_cast<const char*>(file), index, got};
+        }
         if (!same) {
             throw FontError(FontError::Subject::Font,
                             "font '" + wanted +
@@ -133,7 +138,7 @@ FontLocation findFont(const std::string& font) {
     }
     int index = 0;
     FcPatternGetInteger(match.get(), FC_INDEX, 0, &index);
-    return {reinterpret_cast<const char*>(file), index};
+    return {reinterpret_cast<const char*>(file), index, {}};
 }
 
 std::string findFontFile(const std::string& font) { return findFont(font).file; }

@@ -229,8 +229,9 @@ TextOutline layoutText(const TextSpec& spec) {
     }
 
     TextOutline out;
-    const FontLocation location = findFont(spec.font);
+    const FontLocation location = findFont(spec.font, spec.acceptSubstitute);
     out.fontFile = location.file;
+    out.substitutedFamily = location.substitutedFamily;
     FreeTypeFace ft;
     if (FT_Init_FreeType(&ft.library) != 0)
         throw FontError(FontError::Subject::Font, "cannot initialise FreeType");
@@ -326,6 +327,9 @@ TextOutline layoutText(const TextSpec& spec) {
             break;
         case TextSpec::HAlign::Center:
             if (ink) shift.x = -0.5 * (out.ink.lo.x + out.ink.hi.x);
+            break;
+        case TextSpec::HAlign::AdvanceCenter:
+            shift.x = -0.5 * out.advance;
             break;
     }
     switch (spec.valign) {

@@ -33,19 +33,23 @@ struct FontError : std::runtime_error {
 };
 
 struct TextSpec {
-    enum class HAlign { Left, Center, Right };
+    enum class HAlign { Left, Center, Right, AdvanceCenter };
     enum class VAlign { Baseline, Top, Center, Bottom };
 
     std::string text;                  ///< one line of UTF-8 (a newline is an error)
     std::string font = "DejaVu Sans";  ///< fontconfig pattern ("DejaVu Sans:bold") or a file path
     double size = 1.0;                 ///< the em height in model units (finite, > 0)
     /// Left: the pen starts at x = 0. Right: the pen ends at x = 0 (the kerned advance).
-    /// Center: the ink bounds' centre at x = 0.
+    /// Center: the ink bounds' centre at x = 0. AdvanceCenter: the middle of the kerned
+    /// advance at x = 0 (OpenSCAD's `halign = "center"`).
     HAlign halign = HAlign::Left;
     /// Baseline: the baseline at y = 0. Top / Center / Bottom: the ink bounds' top, centre or
     /// bottom at y = 0.
     VAlign valign = VAlign::Baseline;
     double spacing = 1.0;  ///< multiplies every advance (and kerning): 1 sets the font as drawn
+    /// Take the family fontconfig substitutes for one that is not installed (as OpenSCAD
+    /// does) instead of refusing it; TextOutline::substitutedFamily then names it.
+    bool acceptSubstitute = false;
 };
 
 /// Axis-aligned bounds in the plane; empty (lo > hi) when there is no ink.
@@ -70,6 +74,7 @@ struct TextOutline {
     /// hole, and a caller should take the union of `glyphs` instead.
     bool glyphsOverlap = false;
     std::string fontFile;         ///< the file the font came from
+    std::string substitutedFamily;  ///< the family used instead of the one asked for, if any
     bool fontHasKerning = false;  ///< the font has a 'kern' table FreeType reads
 };
 
@@ -90,12 +95,15 @@ PathShape textOutline(const TextSpec& spec);
 struct FontLocation {
     std::string file;
     int index = 0;
+    std::string substitutedFamily;  ///< set when a substitute was accepted
 };
 
 /// The face fontconfig picks for `pattern` (or face 0 of `pattern` itself when it names a
 /// file), the lookup layoutText does. Throws FontError as layoutText does, also for a style
 /// the family lacks ("DejaVu Serif:light": fontconfig would give the Book face).
-FontLocation findFont(const std::string& pattern);
+/// With `acceptSubstitute`, another family fontconfig picks is taken (and named in the
+/// result) instead of being an error.
+FontLocation findFont(const std::string& pattern, bool acceptSubstitute = false);
 /// `findFont(pattern).file`.
 std::string findFontFile(const std::string& pattern);
 

@@ -224,6 +224,8 @@ private:
     NodePtr lowerRevolve(const Solid& s);
     /// A 2-D point written [x, y]; `what` names it in messages.
     bool point2(const Expr& e, const std::string& what, Vec2& out);
+    /// extrude's `scale`: a number, or [sx, sy] per profile axis; both positive.
+    bool extrudeScale(const Expr& e, Vec2& out);
     /// A list of at least three 2-D points.
     bool points2(const Value& v, SourcePos at, const std::string& what, std::vector<Vec2>& out);
 

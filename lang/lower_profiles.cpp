@@ -31,6 +31,21 @@ bool Lowering::point2(const Expr& e, const std::string& what, Vec2& out) {
     return false;
 }
 
+bool Lowering::extrudeScale(const Expr& e, Vec2& out) {
+    const auto v = evaluate(e, nullptr);
+    if (!v) return false;
+    if (v->type == Value::Type::Number) {
+        out = Vec2(v->number);
+    } else if (!point2(e, "extrude scale", out)) {
+        return false;
+    }
+    if (out.x > 0 && out.y > 0 && std::isfinite(out.x) && std::isfinite(out.y)) return true;
+    error(e.start, "extrude scale must be positive, got " +
+                       (out.x == out.y ? formatNumber(out.x) : "[" + formatNumber(out.x) + ", " + formatNumber(out.y) + "]"),
+          "a scale of 0 would narrow the profile to a point or a line");
+    return false;
+}
+
 bool Lowering::points2(const Value& v, SourcePos at, const std::string& what, std::vector<Vec2>& out) {
     if (v.type != Value::Type::List) {
         error(at, what + " expects a list of 2-D points [[x, y], …], got " + typeName(v.type));
@@ -278,23 +293,19 @@ NodePtr Lowering::lowerExtrude(const Solid& s) {
                           {{"profile", PropertyType::Solid, true},
                            {"height", PropertyType::Number, true},
                            {"twist", PropertyType::Number},
-                           {"scale", PropertyType::Number},
+                           {"scale", PropertyType::Function},
                            {"center", PropertyType::Bool}},
                           "extrude", s.loc, mSink);
     ExtrudeOptions o;
     bool ok = b.ok();
     ok &= readNumber(b, "height", o.height);
     ok &= readNumber(b, "twist", o.twist);
-    ok &= readNumber(b, "scale", o.scale);
     ok &= readBool(b, "center", o.center);
     if (ok && !(o.height > 0)) {
         error(b.find("height")->valueLoc(), "extrude height must be positive, got " + formatNumber(o.height));
         ok = false;
     }
-    if (ok && !(o.scale > 0)) {
-        error(b.find("scale")->valueLoc(), "extrude scale must be positive, got " + formatNumber(o.scale));
-        ok = false;
-    }
+    if (const auto* scale = b.find("scale"); ok && scale) ok = extrudeScale(*scale->expr, o.scale);
     if (!ok) return nullptr;
     const auto profile = profileProperty(b);
     return profile ? makeExtrude(*profile, o) : nullptr;

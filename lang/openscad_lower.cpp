@@ -39,10 +39,8 @@ const std::map<std::string, std::string>& unsupportedReasons() {
         {"minkowski", "kerf traces exact primitives and has no Minkowski sum"},
         {"projection", "kerf has no projection of a solid onto a plane (kerf slice cuts one)"},
         {"resize", "resize depends on OpenSCAD's polygonal bounding box"},
-        {"offset", "kerf has no 2-D offset"},
         {"import", "imported files are not read inside a .csg"},
         {"surface", "height maps are not read"},
-        {"text", "text needs OpenSCAD's fonts"},
         {"roof", "roof is not read"},
         {"fill", "fill is not read"},
     };

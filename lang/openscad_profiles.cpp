@@ -11,16 +11,20 @@
 // toward +z becomes OpenSCAD's turn from +x toward +y.
 #include "csg/profile.h"
 #include "csg/solids.h"
+#include "io/font_outline.h"
 #include "lang/openscad_lower.h"
 
 #include <cmath>
+#include <map>
 #include <optional>
 
 namespace kerf {
 
 namespace {
 
-bool isFlatShape(const std::string& n) { return n == "circle" || n == "square" || n == "polygon"; }
+bool isFlatShape(const std::string& n) {
+    return n == "circle" || n == "square" || n == "polygon" || n == "text" || n == "offset";
+}
 bool isSolidNode(const std::string& n) {
     return n == "cube" || n == "sphere" || n == "cylinder" || n == "polyhedron" ||
            n == "linear_extrude" || n == "rotate_extrude";
@@ -79,6 +83,8 @@ private:
         if (c.name == "square") return square(c);
         if (c.name == "polygon") return polygon(c);
         if (c.name == "multmatrix") return multmatrix(c);
+        if (c.name == "text") return text(c);
+        if (c.name == "offset") return offset(c);
         if (c.name == "color") {
             if (!color) color = &c;
             else if (!sameColor(*color, c))
@@ -241,6 +247,85 @@ private:
         return profileTransform(std::move(*child), m);
     }
 
+    /// A string argument; false (with an error) when it is not one.
+    bool string(const ScadCall& c, const std::string& name, int position, std::string& out) {
+        const ScadArg* a = c.arg(name, position);
+        if (!a || a->value.kind == ScadValue::Kind::Undef) return true;
+        if (a->value.kind != ScadValue::Kind::String) {
+            mL.error(a->value.pos, c.name + " " + name + " must be a string");
+            return false;
+        }
+        out = a->value.text;
+        return true;
+    }
+
+    /// text(text, size, font, halign, valign, spacing, direction, …): the font's outlines,
+    /// exact. OpenSCAD draws `size` points at 100 dpi against 72, so its em is size / 0.72
+    /// ('H' of DejaVu Sans at size 10 is 10.125 high there: 0.729 em).
+    std::optional<Profile> text(const ScadCall& c) {
+        TextSpec spec;
+        spec.font = "Liberation Sans";  // OpenSCAD's default
+        spec.acceptSubstitute = true;   // fontconfig's substitute, as OpenSCAD takes it
+        double size = 10.0;
+        std::string halign = "left", valign = "baseline", direction = "ltr";
+        if (!string(c, "text", 0, spec.text) || !mL.number(c, "size", 1, size) || !string(c, "font", 2, spec.font) ||
+            !string(c, "halign", 3, halign) || !string(c, "valign", 4, valign) ||
+            !mL.number(c, "spacing", 5, spec.spacing) || !string(c, "direction", 6, direction))
+            return fail();
+        if (!(size > 0) || !(spec.spacing > 0)) {
+            mL.error(c.pos, "text size and spacing must be positive");
+            return fail();
+        }
+        if (direction != "ltr") {
+            mL.error(c.pos, "text direction '" + direction + "' is not supported (only \"ltr\")");
+            return fail();
+        }
+        spec.size = size / 0.72;
+        if (spec.font.empty()) spec.font = "Liberation Sans";  // OpenSCAD's default, too
+        const std::map<std::string, TextSpec::HAlign> h = {
+            {"left", TextSpec::HAlign::Left}, {"center", TextSpec::HAlign::AdvanceCenter}, {"right", TextSpec::HAlign::Right}};
+        const std::map<std::string, TextSpec::VAlign> v = {{"baseline", TextSpec::VAlign::Baseline},
+                                                           {"top", TextSpec::VAlign::Top},
+                                                           {"center", TextSpec::VAlign::Center},
+                                                           {"bottom", TextSpec::VAlign::Bottom}};
+        if (!h.count(halign) || !v.count(valign)) {
+            mL.error(c.pos, "text halign must be left, center or right and valign baseline, top, center or bottom");
+            return fail();
+        }
+        spec.halign = h.at(halign);
+        spec.valign = v.at(valign);
+        try {
+            TextOutline outline = layoutText(spec);
+            if (!outline.substitutedFamily.empty())
+                mL.warning(c.pos, "font '" + spec.font + "' is not installed: using '" + outline.substitutedFamily +
+                                      "', the font fontconfig (and so OpenSCAD) substitutes");
+            if (outline.shape.loops.empty()) return std::nullopt;  // spaces only: empty, as in OpenSCAD
+            if (!outline.glyphsOverlap) return profilePath(std::move(outline.shape));
+            std::vector<Profile> parts;
+            for (PathShape& glyph : outline.glyphs) parts.push_back(profilePath(std::move(glyph)));
+            return profileUnion(std::move(parts));
+        } catch (const FontError& e) {
+            mL.error(c.pos, e.message, e.hint);
+            return fail();
+        }
+    }
+
+    /// offset(r): the exact rounded offset (the distance's level set). offset(delta), with
+    /// its mitred or chamfered corners, is not a distance level set: an error.
+    std::optional<Profile> offset(const ScadCall& c) {
+        if (const ScadArg* d = c.arg("delta"); d && d->value.kind != ScadValue::Kind::Undef) {
+            mL.unsupported(c, "offset(delta) is not supported: its mitred or chamfered corners are not a rounded "
+                              "offset; offset(r) is exact in kerf");
+            return fail();
+        }
+        double r = 1.0;  // OpenSCAD's default
+        if (!mL.number(c, "r", 0, r)) return fail();
+        std::optional<Profile> child = boolean("union", c.children);
+        if (!child) return std::nullopt;
+        if (r == 0.0) return child;
+        return profileOffset(std::move(*child), r);
+    }
+
     std::optional<Profile> fail() {
         failed = true;
         return std::nullopt;
@@ -271,17 +356,12 @@ NodePtr linearExtrude(const ScadCall& c, ScadLowering& l, const Profile& p) {
             l.error(a->value.pos, "linear_extrude scale must be a number or a vector [sx, sy]");
             return nullptr;
         }
-        if (s.x != s.y) {
-            l.error(a->value.pos, "linear_extrude scale [sx, sy] with sx ≠ sy is not supported",
-                    "kerf's extrusion scales both axes alike");
-            return nullptr;
-        }
-        if (!(s.x > 0)) {
+        if (!(s.x > 0 && s.y > 0)) {
             l.error(a->value.pos, "linear_extrude scale must be > 0",
-                    "kerf's extrusion does not narrow to a point (scale 0)");
+                    "kerf's extrusion does not narrow to a point or a line (scale 0)");
             return nullptr;
         }
-        o.scale = s.x;
+        o.scale = s;
     }
     if (o.height < 0) {
         l.error(c.pos, "linear_extrude height must not be negative");

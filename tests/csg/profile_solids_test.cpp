@@ -91,7 +91,7 @@ TEST_CASE("makeExtrude of a circle is a cylinder") {
 TEST_CASE("makeExtrude with scale tapers linearly and center puts it about y = 0") {
     ExtrudeOptions o;
     o.height = 2.0;
-    o.scale = 0.5;
+    o.scale = Vec2(0.5);
     o.center = true;
     const NodePtr cone = makeExtrude(profileCircle({0, 0}, 1.0), o);
     for (double y : {-0.9, -0.3, 0.4, 0.95}) {

@@ -120,8 +120,12 @@ TEST_CASE("openscad/linear_extrude scale") {
     requireEnds(spansOf(r, {-10, 5, 0}, {1, 0, 0}), {8.5, 11.5});
     const Read number = readCsg(extrude("height = 10, scale = 2", "circle(r = 2);"));
     requireEnds(spansOf(number, {-10, 5, 0}, {1, 0, 0}), {7, 13});
-    requireError(readCsg(extrude("height = 10, scale = [1, 2]", "circle(r = 2);")), 1, 37,
-                 "sx ≠ sy");
+    // Per axis: at height 5 the circle is an ellipse of half-axes 2 (along x) and 3 (along y,
+    // kerf's z).
+    const Read ellipse = readCsg(extrude("height = 10, scale = [1, 2]", "circle(r = 2);"));
+    requireEnds(spansOf(ellipse, {-10, 5, 0}, {1, 0, 0}), {8, 12});
+    requireEnds(spansOf(ellipse, {0, 5, -10}, {0, 0, 1}), {7, 13});
+    requireEnds(spansOf(ellipse, {0, 9.5, -10}, {0, 0, 1}), {10 - 3.9, 10 + 3.9});
     requireError(readCsg(extrude("height = 10, scale = [0, 0]", "circle(r = 2);")), 1, 37,
                  "must be > 0");
 }
@@ -214,11 +218,46 @@ TEST_CASE("openscad/color on a 2-D shape colours the extrusion") {
     CHECK(r.scene->materials.at(s[0].in.material).color == Vec3(1, 0, 0));
 }
 
+TEST_CASE("openscad/text is the font's exact outline at OpenSCAD's size") {
+    // 'H' of DejaVu Sans has only straight edges, so OpenSCAD's own export of it is exact up
+    // to its own rounding (within 1e-4 of the size): linear_extrude(1) text("H", size = 10) spans x
+    // 1.36299 … 9.08009 and y 0 … 10.1248 in its STL. kerf takes the font's units exactly:
+    // 201, 1339 and 1493 of 2048 per em, the em being size / 0.72. OpenSCAD's y is kerf's −z.
+    const Read r = readCsg(extrude("height = 1", "text(text = \"H\", size = 10, font = \"DejaVu Sans\");"));
+    const double em = 10 / 0.72 / 2048;
+    const SpanList across = spansOf(r, {-10, 0.5, -2}, {1, 0, 0});
+    REQUIRE(across.size() == 2);  // the two stems
+    CHECK(across[0].in.t - 10 == Approx(201 * em).margin(1e-9));
+    CHECK(across[1].out.t - 10 == Approx(1339 * em).margin(1e-9));
+    CHECK(across[0].in.t - 10 == Approx(1.36299).margin(1e-3));
+    CHECK(across[1].out.t - 10 == Approx(9.08009).margin(1e-3));
+    const SpanList up = spansOf(r, {2, 0.5, 10}, {0, 0, -1});
+    REQUIRE(up.size() == 1);
+    CHECK(up[0].in.t == Approx(10).margin(1e-9));
+    CHECK(up[0].out.t - 10 == Approx(1493 * em).margin(1e-9));
+    CHECK(up[0].out.t - 10 == Approx(10.1248).margin(1e-3));
+}
+
+TEST_CASE("openscad/offset(r) rounds a square exactly") {
+    // square(2) grown by 1: x from −1 to 3 along the middle, and the corner a quarter circle
+    // of radius 1 about (2, 2): along the diagonal it ends at 2 + 1/√2.
+    const Read r = readCsg(extrude("height = 1", "offset(r = 1) square(2);"));
+    requireEnds(spansOf(r, {-10, 0.5, -1}, {1, 0, 0}), {9, 13});
+    const SpanList diagonal = spansOf(r, {0, 0.5, 0}, {std::sqrt(0.5), 0, -std::sqrt(0.5)});
+    REQUIRE(diagonal.size() == 1);
+    CHECK(diagonal[0].out.t == Approx(2 * std::sqrt(2.0) + 1).epsilon(1e-9));
+    const Read inset = readCsg(extrude("height = 1", "offset(r = -0.5) square(2);"));
+    requireEnds(spansOf(inset, {-10, 0.5, -1}, {1, 0, 0}), {10.5, 11.5});
+}
+
 TEST_CASE("openscad/2-D errors") {
     requireError(readCsg("circle(r = 1);\n"), 1, 1, "2-D shape outside linear_extrude");
     requireError(readCsg(extrude("height = 1", "cube(1);")), 2, 3, "cube is a solid under an extrusion");
-    requireError(readCsg(extrude("height = 1", "offset(r = 1) square(1);")), 2, 3,
-                 "offset is not supported");
+    requireError(readCsg(extrude("height = 1", "offset(delta = 1, chamfer = false) square(1);")), 2, 3,
+                 "offset(delta) is not supported");
+    requireError(readCsg(extrude("height = 1", "text(text = \"A\", direction = \"ttb\");")), 2, 3,
+                 "text direction 'ttb' is not supported");
+
     requireError(readCsg(extrude("height = 1", "polygon(points = [[0, 0], [1, 0], [0, 1]], paths = [[0, 1, 3]]);")),
                  2, 55, "indices into points");
     requireError(readCsg(extrude("height = 1",

@@ -67,6 +67,22 @@ TEST_CASE("profiles: a circle drawn as a path of arcs and a revolved circle (tor
     }
 }
 
+TEST_CASE("profiles: extrude scale [sx, sy] tapers each profile axis on its own") {
+    // A unit circle, 2 high, scaled by 0.5 along u (x) and 3 along v (z) at the top: at height
+    // y it is an ellipse of half-axes 1 − 0.25·y and 1 + y, the field's sign its inside test.
+    const NodePtr e = firstObject("object extrude { profile circle { radius 1 } height 2 scale [0.5, 3] };");
+    for (double y : {0.2, 1.0, 1.7}) {
+        const double a = 1.0 - 0.25 * y, b = 1.0 + y;
+        INFO("y=" << y);
+        CHECK(e->value(Vec3(0.999 * a, y, 0.0)) < 0.0);
+        CHECK(e->value(Vec3(1.001 * a, y, 0.0)) > 0.0);
+        CHECK(e->value(Vec3(0.0, y, 0.999 * b)) < 0.0);
+        CHECK(e->value(Vec3(0.0, y, -1.001 * b)) > 0.0);
+        CHECK(e->value(Vec3(0.7 * a, y, 0.7 * b)) < 0.0);   // 0.98 of the way out
+        CHECK(e->value(Vec3(0.72 * a, y, 0.72 * b)) > 0.0);  // 1.04
+    }
+}
+
 TEST_CASE("profiles: a self-touching polygon is filled even-odd") {
     // A bow tie: two triangles meeting at the origin.
     const NodePtr tie = firstObject(
@@ -87,6 +103,10 @@ TEST_CASE("profiles: errors") {
     requireOneError("object extrude { profile circle { radius 1 } height 0 };", 1, 53, "extrude height must be positive");
     requireOneError("object extrude { profile circle { radius 1 } height 1 scale 0 };", 1, 61,
                     "extrude scale must be positive");
+    requireOneError("object extrude { profile circle { radius 1 } height 1 scale [1, 0] };", 1, 61,
+                    "extrude scale must be positive, got [1, 0]");
+    requireOneError("object extrude { profile circle { radius 1 } height 1 scale [1, 2, 3] };", 1, 61,
+                    "expects a 2-D point [x, y], got a list of 3 values");
     requireOneError("object revolve { profile circle { center [2, 0] } angle 400 };", 1, 57,
                     "revolve angle must be in (0, 360]");
     requireOneError("object revolve { profile circle { center [-2, 0] } };", 1, 26, "the profile lies at u ≤ 0");
