@@ -74,3 +74,39 @@ TEST_CASE("kerf check: shared subtrees are counted once, their uses in 64 bits")
     // A union and a transform per level over the sphere.
     CHECK(summaryNumber(run.out, "csg depth") == 1 + 2 * 32);
 }
+
+TEST_CASE("kerf check: text, a profile and an extrusion are counted and bounded") {
+    // Text "HI" in DejaVu Sans, size 1 (the em), extruded 0.5 along y. The glyphs' ink spans
+    // x from H's left bearing (201/2048 em) to I's right edge (its stem, like H's, is 201 to 403
+    // of 2048 from its origin), and z (the profile's y) from the
+    // baseline to the cap height (1493/2048 em). The bounds must hold the ink, padded by at
+    // most a small fraction of the size (they come from the outline's control boxes).
+    TempDir dir;
+    dir.write("text.kerf",
+              "object extrude { profile text { string \"HI\" font \"DejaVu Sans\" size 1 } height 0.5 };\n");
+    const KerfRun run = runKerf(dir, {"check", "text.kerf"});
+    INFO("stdout:\n" << run.out << "\nstderr:\n" << run.err);
+    REQUIRE(run.exitCode == 0);
+    CHECK(summaryNumber(run.out, "objects") == 1);
+    CHECK(summaryNumber(run.out, "primitives") == 1);
+    std::smatch m;
+    const std::string number = "(-?[0-9.e+-]+)";
+    REQUIRE(std::regex_search(run.out, m,
+                              std::regex("bounds:\\s+x \\[" + number + ", " + number + "\\]\\s+y \\[" + number +
+                                         ", " + number + "\\]\\s+z \\[" + number + ", " + number + "\\]")));
+    const double x0 = std::stod(m[1]), x1 = std::stod(m[2]), y0 = std::stod(m[3]), y1 = std::stod(m[4]),
+                 z0 = std::stod(m[5]), z1 = std::stod(m[6]);
+    const double em = 1.0 / 2048;
+    CHECK(x0 <= 201 * em);
+    CHECK(x0 >= 201 * em - 0.05);
+    CHECK(x1 >= (1540 + 403) * em);  // H's advance, then I's stem from 201 to 403
+    CHECK(x1 <= (1540 + 403) * em + 0.05);
+    CHECK(y0 <= 0.0);
+    CHECK(y0 >= -0.05);
+    CHECK(y1 >= 0.5);
+    CHECK(y1 <= 0.55);
+    CHECK(z0 <= 0.0);
+    CHECK(z0 >= -0.05);
+    CHECK(z1 >= 1493 * em);
+    CHECK(z1 <= 1493 * em + 0.05);
+}
