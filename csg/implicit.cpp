@@ -247,7 +247,8 @@ NodePtr makeImplicit(std::shared_ptr<const Tape> f, const Bounds3& bound) {
 }
 
 NodePtr withImplicitFunction(const Node& original, std::shared_ptr<const Tape> f) {
-    const auto& o = dynamic_cast<const Implicit&>(original);
+    // An implicit, or a primitive that takes its implicit form from one (csg/prism.h).
+    const auto& o = dynamic_cast<const Primitive&>(original);
     return std::make_shared<Implicit>(std::move(f), o.bounds(), o.id());
 }
 

@@ -1,6 +1,7 @@
 // 2-D profiles as expressions, and the extrude / revolve solids built on them.
 #include "csg/profile.h"
 
+#include "csg/prism.h"
 #include "csg/solids.h"
 #include "csg/tape.h"
 
@@ -47,11 +48,74 @@ Profile combine(std::vector<Profile> parts, Op op, Bounds2 bounds) {
     return r;
 }
 
+/// The path as a plain polygon when every segment is a line (and every loop closes), else null.
+std::shared_ptr<const PlainOutline> polygonOutline(const PathShape& shape) {
+    auto plain = std::make_shared<PlainOutline>();
+    plain->kind = PlainOutline::Kind::Polygon;
+    for (const PathLoop& loop : shape.loops) {
+        if (loop.segments.size() < 3) return nullptr;
+        std::vector<Vec2> points;
+        for (const PathSegment& s : loop.segments) {
+            if (s.kind != PathSegment::Kind::Line) return nullptr;
+            points.push_back(s.p[0]);
+        }
+        plain->loops.push_back(std::move(points));
+    }
+    return plain->loops.empty() ? nullptr : plain;
+}
+
+/// The plain outline mapped by p ↦ A·p + t, when its image is one: any polygon (or
+/// rectangle, as a polygon unless A keeps it axis-aligned), a circle when A is a similarity.
+std::shared_ptr<const PlainOutline> mappedOutline(const PlainOutline& in, const double m[6]) {
+    const auto map = [m](Vec2 q) { return Vec2(m[0] * q.x + m[1] * q.y + m[2], m[3] * q.x + m[4] * q.y + m[5]); };
+    auto out = std::make_shared<PlainOutline>();
+    switch (in.kind) {
+        case PlainOutline::Kind::None: return nullptr;
+        case PlainOutline::Kind::Circle: {
+            // A similarity: both columns of A of one length and orthogonal (exactly, as
+            // rotations by multiples of 90°, mirrors and uniform scales give them).
+            const double c0 = m[0] * m[0] + m[3] * m[3], c1 = m[1] * m[1] + m[4] * m[4];
+            // Within rounding: cos² + sin² of a computed rotation need not be 1 to the bit.
+            const double slack = 0x1p-50 * std::max(c0, c1);
+            if (!(std::abs(c0 - c1) <= slack && std::abs(m[0] * m[1] + m[3] * m[4]) <= slack)) return nullptr;
+            out->kind = PlainOutline::Kind::Circle;
+            out->a = map(in.a);
+            out->radius = in.radius * std::sqrt(c0);
+            return out;
+        }
+        case PlainOutline::Kind::Rect:
+            if (m[1] == 0.0 && m[3] == 0.0) {
+                const Vec2 p = map(in.a), q = map(in.b);
+                out->kind = PlainOutline::Kind::Rect;
+                out->a = glm::min(p, q);
+                out->b = glm::max(p, q);
+                return out;
+            }
+            out->kind = PlainOutline::Kind::Polygon;
+            out->loops = {{map(in.a), map(Vec2(in.b.x, in.a.y)), map(in.b), map(Vec2(in.a.x, in.b.y))}};
+            return out;
+        case PlainOutline::Kind::Polygon:
+            out->kind = PlainOutline::Kind::Polygon;
+            for (const auto& loop : in.loops) {
+                std::vector<Vec2> points;
+                for (const Vec2& q : loop) points.push_back(map(q));
+                out->loops.push_back(std::move(points));
+            }
+            return out;
+    }
+    return nullptr;
+}
+
 }  // namespace
 
 Profile profileCircle(Vec2 center, double radius) {
     Profile p;
     p.bounds = {center - Vec2(radius), center + Vec2(radius)};
+    auto plain = std::make_shared<PlainOutline>();
+    plain->kind = PlainOutline::Kind::Circle;
+    plain->a = center;
+    plain->radius = radius;
+    p.plain = std::move(plain);
     p.distance = [center, radius](ExprGraph& g, ExprId u, ExprId v) {
         const ExprId du = sub(g, u, num(g, center.x)), dv = sub(g, v, num(g, center.y));
         return sub(g, g.unary(Op::Sqrt, add(g, g.unary(Op::Square, du), g.unary(Op::Square, dv))), num(g, radius));
@@ -62,6 +126,11 @@ Profile profileCircle(Vec2 center, double radius) {
 Profile profileRect(Vec2 lo, Vec2 hi) {
     Profile p;
     p.bounds = {lo, hi};
+    auto plain = std::make_shared<PlainOutline>();
+    plain->kind = PlainOutline::Kind::Rect;
+    plain->a = lo;
+    plain->b = hi;
+    p.plain = std::move(plain);
     const Vec2 c = 0.5 * (lo + hi), h = 0.5 * (hi - lo);
     p.distance = [c, h](ExprGraph& g, ExprId u, ExprId v) {
         // q = |p − c| − h. The distance is max(qx, qy) except beyond a corner (qx, qy > 0), where
@@ -80,6 +149,7 @@ Profile profileRect(Vec2 lo, Vec2 hi) {
 Profile profilePath(PathShape shape) {
     Profile p;
     p.bounds = pathBounds(shape);
+    p.plain = polygonOutline(shape);
     auto field = pathField(std::move(shape));
     p.distance = [field](ExprGraph& g, ExprId u, ExprId v) { return g.field(u, v, num(g, 0.0), field); };
     return p;
@@ -159,8 +229,25 @@ Profile profileTransform(Profile p, const double m[6]) {
         const ExprId e = inner(g, pu, pv);
         return smin == 1.0 ? e : mul(g, num(g, smin), e);
     };
+    if (p.plain) out.plain = mappedOutline(*p.plain, m);
     return out;
 }
+
+namespace {
+
+/// A straight extrusion of a plain outline as a closed-form solid, or null.
+NodePtr plainExtrusion(const PlainOutline& plain, double y0, double y1, const NodePtr& implicitForm) {
+    switch (plain.kind) {
+        case PlainOutline::Kind::Circle:
+            return makeCylinder(Vec3(plain.a.x, y0, plain.a.y), Vec3(plain.a.x, y1, plain.a.y), plain.radius);
+        case PlainOutline::Kind::Rect: return makeBox(Vec3(plain.a.x, y0, plain.a.y), Vec3(plain.b.x, y1, plain.b.y));
+        case PlainOutline::Kind::Polygon: return makePrism(plain.loops, y0, y1, implicitForm);
+        case PlainOutline::Kind::None: break;
+    }
+    return nullptr;
+}
+
+}  // namespace
 
 NodePtr makeExtrude(const Profile& profile, const ExtrudeOptions& o) {
     ExprGraph g;
@@ -201,7 +288,11 @@ NodePtr makeExtrude(const Profile& profile, const ExtrudeOptions& o) {
         b = {Vec2(-r), Vec2(r)};
     }
     const Bounds3 bound{Vec3(b.lo.x, y0, b.lo.y), Vec3(b.hi.x, y0 + o.height, b.hi.y)};
-    return makeImplicit(Tape::compile(g, f), padded(bound));
+    NodePtr implicitForm = makeImplicit(Tape::compile(g, f), padded(bound));
+    // A straight extrusion of a circle, a rectangle or a polygon has closed-form spans.
+    if (o.twist == 0.0 && o.scale == Vec2(1.0) && profile.plain)
+        if (NodePtr exact = plainExtrusion(*profile.plain, y0, y0 + o.height, implicitForm)) return exact;
+    return implicitForm;
 }
 
 NodePtr makeRevolve(const Profile& profile, double degrees) {

@@ -17,15 +17,28 @@
 #include "csg/profile_field.h"
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace kerf {
+
+/// A profile that is one plain outline: a straight extrusion of it is a closed-form solid
+/// (a cylinder, a box, a prism: csg/prism.h) rather than an implicit one.
+struct PlainOutline {
+    enum class Kind : uint8_t { None, Circle, Rect, Polygon };
+    Kind kind = Kind::None;
+    Vec2 a{0.0}, b{0.0};  ///< Circle: the centre in a; Rect: lo in a, hi in b
+    double radius = 0.0;
+    std::vector<std::vector<Vec2>> loops;  ///< Polygon: closed loops, filled even-odd
+};
 
 struct Profile {
     /// Writes d(u, v) into the graph and returns its node.
     std::function<ExprId(ExprGraph&, ExprId u, ExprId v)> distance;
     /// Holds every point with d ≤ 0.
     Bounds2 bounds;
+    /// What the profile is, when it is one plain outline (Booleans and offsets are not).
+    std::shared_ptr<const PlainOutline> plain;
 };
 
 /// The disc of the given centre and radius (radius > 0).
