@@ -35,15 +35,15 @@ struct RenderCommandLine {
     std::string filter;   ///< empty: the model's render settings
     double noise = -1.0;  ///< < 0: the model's render settings
     std::vector<std::string> aovs;
-    std::vector<std::string> sections;  ///< section planes added to the model's (x=V, …)
-    std::string sectionColor;           ///< their caps' colour R,G,B; empty: the default
-    bool stats = false;
-    bool quiet = false;
     std::string frames;    ///< --frames A-B or N: a sequence (app/frame_sequence.h); empty: one image
     std::string sequence;  ///< --sequence A-B: the frames `time` runs across; empty: --frames
     /// Set by the frame loop for each frame it hands to runRender: the model's `frame` and
     /// `time`, with `output` and `aovs` already that frame's file names.
     std::optional<SequenceFrame> frame;
+    std::vector<std::string> sections;  ///< section planes added to the model's (x=V, …)
+    std::string sectionColor;           ///< their caps' colour R,G,B; empty: the default
+    bool stats = false;
+    bool quiet = false;
 
     CLI::Option* outputOption = nullptr;
     CLI::Option* noiseOption = nullptr;
