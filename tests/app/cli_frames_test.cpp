@@ -67,6 +67,12 @@ TEST_CASE("kerf render --frames names every frame's AOV files and the default na
     REQUIRE(run.exitCode == 0);
     CHECK(dir.listing() ==
           std::vector<std::string>{"d_07.exr", "d_08.exr", "seq.kerf", "seq_0007.png", "seq_0008.png"});
+    // %% is a literal percent sign; %0Nd pads to N digits, and a longer number is not cut.
+    dir.write("tiny.kerf", kTinySphereModel);
+    REQUIRE(runKerf(dir, {"render", "tiny.kerf", "--frames", "1", "-o", "p%%_%02d.png", "-q"}).exitCode == 0);
+    REQUIRE(runKerf(dir, {"render", "tiny.kerf", "--frames", "123", "-o", "q_%02d.png", "-q"}).exitCode == 0);
+    CHECK(fs::exists(dir.file("p%_01.png")));
+    CHECK(fs::exists(dir.file("q_123.png")));
 }
 
 TEST_CASE("kerf render --frames refuses bad ranges and names with exit code 2, writing nothing") {
