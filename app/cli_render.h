@@ -46,14 +46,14 @@ struct RenderCommandLine {
     bool quiet = false;
 
     CLI::Option* outputOption = nullptr;
+    CLI::Option* framesOption = nullptr;
+    CLI::Option* sequenceOption = nullptr;
     CLI::Option* noiseOption = nullptr;
     CLI::Option* widthOption = nullptr;
     CLI::Option* heightOption = nullptr;
     CLI::Option* sppOption = nullptr;
     CLI::Option* threadsOption = nullptr;
     CLI::Option* toleranceOption = nullptr;
-    CLI::Option* framesOption = nullptr;
-    CLI::Option* sequenceOption = nullptr;
 };
 
 /// Adds the `render` subcommand to `parent`, parsing into `line` (which must outlive parsing).
