@@ -2,6 +2,7 @@
 #include "app/cli_render.h"
 
 #include "app/exit_codes.h"
+#include "app/frame_sequence.h"
 #include "app/model_loader.h"
 #include "app/option_text.h"
 #include "app/output_paths.h"
@@ -110,7 +111,8 @@ std::vector<SectionPlane> sectionPlanes(const RenderCommandLine& line) {
 
 OutputPlan planOutputs(const RenderCommandLine& line) {
     OutputPlan plan;
-    plan.color = line.outputOption->count() > 0 ? line.output : defaultOutputPath(line.model);
+    // One frame of a sequence comes with its own name (app/frame_sequence.h).
+    plan.color = line.outputOption->count() > 0 || line.frame ? line.output : defaultOutputPath(line.model);
     if (plan.color.empty()) throw UsageError("-o: the output file name is empty");
     for (const std::string& spec : line.aovs) plan.aovs.push_back(parseAovSpec(spec));
     checkOutputPlan(plan, line.model);
@@ -231,16 +233,19 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
         ->type_name("R,G,B");
     cmd->add_flag("--stats", line.stats, "Print statistics to stderr");
     cmd->add_flag("-q,--quiet", line.quiet, "No progress bar and no echo lines from the model");
+    addFrameOptions(*cmd, line);
     return cmd;
 }
 
 int runRender(const RenderCommandLine& line) {
+    // A sequence renders each frame through this same function (app/frame_sequence.h).
+    if (wantsFrameSequence(line)) return renderFrames(line, runRender);
     checkNumbers(line);
     const std::vector<SectionPlane> sections = sectionPlanes(line);
     const OutputPlan plan = planOutputs(line);
 
     const auto compileStart = Clock::now();
-    std::optional<Scene> scene = loadModel(line.model, std::cerr, line.quiet);
+    std::optional<Scene> scene = loadModel(line.model, std::cerr, line.quiet, line.frame.value_or(SequenceFrame{}));
     if (!scene) return kExitUsage;
     if (scene->sections.size() + sections.size() > size_t(kMaxSections))
         throw UsageError("--section: the model's " + std::to_string(scene->sections.size()) +

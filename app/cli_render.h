@@ -1,8 +1,12 @@
 /// @file app/cli_render.h
 /// @brief `kerf render FILE [-o OUT] [--width W] [--height H] [--spp N] [--threads T]
-/// [--tolerance E] [--method M] [--aov KIND=FILE]… [--section PLANE]… [--stats] [--quiet]`.
+/// [--tolerance E] [--method M] [--aov KIND=FILE]… [--section PLANE]… [--stats] [--quiet]
+/// [--frames A-B [--sequence F-L]]`.
 #pragma once
 
+#include "lang/sequence_frame.h"
+
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,12 +35,19 @@ struct RenderCommandLine {
     std::string filter;   ///< empty: the model's render settings
     double noise = -1.0;  ///< < 0: the model's render settings
     std::vector<std::string> aovs;
+    std::string frames;    ///< --frames A-B or N: a sequence (app/frame_sequence.h); empty: one image
+    std::string sequence;  ///< --sequence A-B: the frames `time` runs across; empty: --frames
+    /// Set by the frame loop for each frame it hands to runRender: the model's `frame` and
+    /// `time`, with `output` and `aovs` already that frame's file names.
+    std::optional<SequenceFrame> frame;
     std::vector<std::string> sections;  ///< section planes added to the model's (x=V, …)
     std::string sectionColor;           ///< their caps' colour R,G,B; empty: the default
     bool stats = false;
     bool quiet = false;
 
     CLI::Option* outputOption = nullptr;
+    CLI::Option* framesOption = nullptr;
+    CLI::Option* sequenceOption = nullptr;
     CLI::Option* noiseOption = nullptr;
     CLI::Option* widthOption = nullptr;
     CLI::Option* heightOption = nullptr;

@@ -3,6 +3,7 @@
 
 #include "app/exit_codes.h"
 #include "app/model_loader.h"
+#include "app/numbered_names.h"
 #include "app/option_text.h"
 #include "io/atomic_file.h"
 #include "io/image.h"
@@ -144,6 +145,10 @@ CLI::App* addSliceCommand(CLI::App& parent, SliceCommandLine& line) {
     cmd->add_option("--point", line.point, "A point of the plane, x,y,z (with --normal)");
     cmd->add_option("--normal", line.normal, "The plane's normal, x,y,z (with --point)");
     cmd->add_option("--stack", line.stack, "Parallel planes A=FROM:TO:STEP, e.g. z=0:2.4:0.05");
+    line.layersOption = cmd->add_option("--layers", line.layers,
+                    "With --stack: only layers A to B (or layer N) of the stack, numbered from 0 and "
+                    "named as in the full stack, so jobs of a farm can each write a part")
+        ->type_name("A-B|N");
     cmd->add_option("--tolerance", line.tolerance,
                     "Distance from vertices and chords to the true section, relative to the model's size (default 1e-7)");
     cmd->add_flag("--outline", line.outline, "SVG: strokes only, no fill");
@@ -171,8 +176,11 @@ int runSlice(const SliceCommandLine& line) {
     if (line.pixelOption->count() && !(line.pixel > 0.0 && std::isfinite(line.pixel)))
         throw UsageError("--pixel must be a positive size");
 
+    const bool someLayers = line.layersOption && line.layersOption->count() > 0;
+    if (someLayers && line.stack.empty()) throw UsageError("--layers goes with --stack");
     SlicePlane family;
     std::vector<double> offsets;
+    std::vector<int> layerNumbers;  // with --stack: each offset's layer number in the full stack
     if (!line.plane.empty()) {
         std::string rest;
         const int axis = parseAxis(line.plane, "--plane", rest);
@@ -191,7 +199,18 @@ int runSlice(const SliceCommandLine& line) {
             throw UsageError("--stack: the step must be positive and FROM ≤ TO, got '" + line.stack + "'");
         const double count = std::floor((to - from) / step * (1.0 + 1e-12)) + 1.0;
         if (count > 100000) throw UsageError("--stack: more than 100000 layers");
-        for (int i = 0; i < static_cast<int>(count); ++i) offsets.push_back(from + i * step);
+        // The range picks layers of the full stack: the same offsets and numbers as without it.
+        NumberRange kept{0, int64_t(count) - 1};
+        if (someLayers) {
+            kept = parseNumberRange(line.layers, "--layers");
+            if (kept.last >= int64_t(count))
+                throw UsageError("--layers " + line.layers + ": the stack " + line.stack + " has layers 0 to " +
+                                 std::to_string(int64_t(count) - 1));
+        }
+        for (int64_t i = kept.first; i <= kept.last; ++i) {
+            offsets.push_back(from + double(i) * step);
+            layerNumbers.push_back(int(i));
+        }
     } else {
         if (line.point.empty() || line.normal.empty()) throw UsageError("--point and --normal go together");
         const Vec3 n = parseVector(line.normal, "--normal");
@@ -204,7 +223,7 @@ int runSlice(const SliceCommandLine& line) {
     std::vector<std::string> paths;
     if (!line.stack.empty()) {
         checkLayerPattern(line.output);
-        for (size_t i = 0; i < offsets.size(); ++i) paths.push_back(layerPath(line.output, int(i)));
+        for (size_t i = 0; i < offsets.size(); ++i) paths.push_back(layerPath(line.output, layerNumbers[i]));
     } else {
         paths.push_back(line.output);
     }
@@ -254,7 +273,7 @@ int runSlice(const SliceCommandLine& line) {
             printStats(results[0], "", std::cerr);
         } else {
             for (size_t i = 0; i < results.size(); ++i)
-                printStats(results[i], "layer " + std::to_string(i) + " (" + paths[i] + "): ", std::cerr);
+                printStats(results[i], "layer " + std::to_string(layerNumbers[i]) + " (" + paths[i] + "): ", std::cerr);
         }
         char buf[256];
         std::snprintf(buf, sizeof buf,

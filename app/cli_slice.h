@@ -1,5 +1,5 @@
 /// @file app/cli_slice.h
-/// @brief `kerf slice FILE (--plane A=V | --point P --normal N | --stack A=FROM:TO:STEP)
+/// @brief `kerf slice FILE (--plane A=V | --point P --normal N | --stack A=FROM:TO:STEP [--layers A-B])
 /// -o OUT.{svg,dxf,png} [--tolerance E] [--outline] [--width W | --pixel H] [--stats] [-q]`:
 /// the section of a model's solids by a plane (slice/), written by the output's extension.
 #pragma once
@@ -20,6 +20,7 @@ struct SliceCommandLine {
     std::string point;    ///< "x,y,z" with --normal
     std::string normal;
     std::string stack;    ///< "z=0:2.4:0.05"
+    std::string layers;   ///< with --stack: "A-B" or "N", the layers kept (numbered from 0); empty: all
     double tolerance = 1e-7;  ///< relative to the model's size
     bool outline = false;     ///< SVG: strokes only
     int width = 0;            ///< PNG: pixels across the section (default 1024 for the longer side)
@@ -28,6 +29,7 @@ struct SliceCommandLine {
     bool quiet = false;
     CLI::Option* widthOption = nullptr;
     CLI::Option* pixelOption = nullptr;
+    CLI::Option* layersOption = nullptr;
 };
 
 /// Adds the `slice` subcommand to `parent`, parsing into `line`.

@@ -3,6 +3,7 @@
 /// the diagnostics, so `render` and `check` report problems the same way.
 #pragma once
 
+#include "lang/sequence_frame.h"
 #include "scene/scene.h"
 
 #include <iosfwd>
@@ -16,6 +17,8 @@ namespace kerf::app {
 /// model file …` or the compiler's diagnostics, and returns nullopt (the caller exits with
 /// kExitUsage). Warnings are printed too when the model compiles.
 /// `quiet` leaves out the model's echo lines (errors and warnings are always printed).
-std::optional<Scene> loadModel(const std::string& path, std::ostream& err, bool quiet = false);
+/// `frame` sets the predefined `frame` and `time` of a .kerf model (`kerf render --frames`).
+std::optional<Scene> loadModel(const std::string& path, std::ostream& err, bool quiet = false,
+                               SequenceFrame frame = {});
 
 }  // namespace kerf::app

@@ -90,14 +90,17 @@ private:
     std::vector<std::pair<std::string, std::string>> mStack;  // identity, name as shown
 };
 
-std::optional<Scene> compileSource(const SourceText& source, DiagnosticSink& sink, EvalLimits limits) {
+std::optional<Scene> compileSource(const SourceText& source, DiagnosticSink& sink, EvalLimits limits,
+                                   SequenceFrame frame) {
     const int errorsBefore = sink.errorCount();
     const size_t diagnosticsBefore = sink.diagnostics().size();
     Program program;
     Loader(sink).addText(source, program);
     // Lowering runs even after syntax errors: broken definitions keep their names, so the
     // semantic errors found are real ones, not echoes of the syntax error.
-    std::optional<Scene> scene = Lowering(sink, limits).lower(program);
+    Lowering lowering(sink, limits);
+    lowering.setSequenceFrame(frame);
+    std::optional<Scene> scene = lowering.lower(program);
     sink.sortByLocation(diagnosticsBefore);
     if (sink.errorCount() > errorsBefore) return std::nullopt;
     return scene;
@@ -105,7 +108,8 @@ std::optional<Scene> compileSource(const SourceText& source, DiagnosticSink& sin
 
 }  // namespace
 
-std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink, EvalLimits limits) {
+std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink, EvalLimits limits,
+                                 SequenceFrame frame) {
     std::string why;
     auto bytes = readFileBytes(path, why);
     if (!bytes) {
@@ -114,14 +118,14 @@ std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink, 
     }
     return compileSource(SourceText{std::make_shared<const std::string>(path),
                                     std::make_shared<const std::string>(std::move(*bytes))},
-                         sink, limits);
+                         sink, limits, frame);
 }
 
 std::optional<Scene> compileString(const std::string& text, const std::string& name, DiagnosticSink& sink,
-                                   EvalLimits limits) {
+                                   EvalLimits limits, SequenceFrame frame) {
     return compileSource(
         SourceText{std::make_shared<const std::string>(name), std::make_shared<const std::string>(text)}, sink,
-        limits);
+        limits, frame);
 }
 
 }  // namespace kerf

@@ -24,6 +24,7 @@
 #include "lang/ast.h"
 #include "lang/eval_limits.h"
 #include "lang/properties.h"
+#include "lang/sequence_frame.h"
 #include "lang/value.h"
 #include "scene/limits.h"
 
@@ -46,6 +47,10 @@ public:
     /// definition and `object` is freed once it is lowered (Statement::releaseTree), so the
     /// memory held follows the compiled scene, not the text.
     std::optional<Scene> lower(Program& program);
+
+    /// The values of the predefined names `frame` and `time` (both 0 unless set). Any
+    /// definition of the same name in the model hides them, so older models keep their meaning.
+    void setSequenceFrame(SequenceFrame frame) { mSequenceFrame = frame; }
 
     /// After lower(): the tree of a `solid` definition, shared by all its uses (null if the
     /// name is undefined or its definition had errors).
@@ -246,6 +251,7 @@ private:
 
     DiagnosticSink& mSink;
     EvalLimits mLimits;
+    SequenceFrame mSequenceFrame;
     std::map<std::string, const Statement*> mFunctions;
     /// Locals, innermost last; a function call hides those below mFrameBase.
     std::vector<std::pair<std::string, Value>> mLocals;

@@ -235,7 +235,10 @@ std::optional<Value> Lowering::evaluateName(const Expr& e, ExprGraph* field) {
         error(e.loc, "'" + e.name() + "' is a material, not a number or vector");
         return std::nullopt;
     }
-    std::vector<std::string> candidates{"pi"};
+    // The sequence's frame and time come last: any name the model defines hides them.
+    if (e.name() == "frame") return Value::ofNumber(double(mSequenceFrame.frame));
+    if (e.name() == "time") return Value::ofNumber(mSequenceFrame.time);
+    std::vector<std::string> candidates{"pi", "frame", "time"};
     for (const auto& [name, entry] : mLets) candidates.push_back(name);
     for (size_t i = mFrameBase; i < mLocals.size(); ++i) candidates.push_back(mLocals[i].first);
     std::string hint = didYouMean(e.name(), candidates);
