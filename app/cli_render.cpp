@@ -6,6 +6,7 @@
 #include "app/option_text.h"
 #include "app/output_paths.h"
 #include "app/progress_bar.h"
+#include "app/region_option.h"
 #include "app/stats_report.h"
 #include "io/image.h"
 #include "csg/normalize.h"
@@ -229,6 +230,13 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
     cmd->add_option("--section-color", line.sectionColor,
                     "The colour of the caps of --section planes (default 0.85,0.2,0.15)")
         ->type_name("R,G,B");
+    cmd->add_option("--region", line.region,
+                    "Render only the pixels [X0, X1) x [Y0, Y1) of the full image, each equal bit "
+                    "for bit to the same pixel of a full render. An .exr or .tif output keeps "
+                    "the region's place (its data window inside the full display window) and "
+                    "'kerf assemble' stitches such parts; a .png or .jpg holds the region alone "
+                    "and loses its place (assemble refuses it)")
+        ->type_name("X0,Y0,X1,Y1");
     cmd->add_flag("--stats", line.stats, "Print statistics to stderr");
     cmd->add_flag("-q,--quiet", line.quiet, "No progress bar and no echo lines from the model");
     return cmd;
@@ -236,6 +244,7 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
 
 int runRender(const RenderCommandLine& line) {
     checkNumbers(line);
+    const std::optional<PixelRect> region = parseRegion(line.region);
     const std::vector<SectionPlane> sections = sectionPlanes(line);
     const OutputPlan plan = planOutputs(line);
 
@@ -250,6 +259,11 @@ int runRender(const RenderCommandLine& line) {
     const double secondsCompile = secondsSince(compileStart);
 
     RenderOptions options = renderOptions(line, plan);
+    if (region) {
+        checkRegionInside(*region, options.width > 0 ? options.width : scene->settings.width,
+                          options.height > 0 ? options.height : scene->settings.height);
+        options.region = region;
+    }
     std::unique_ptr<ProgressBar> bar;
     if (!line.quiet && stderrIsTerminal()) {
         bar = std::make_unique<ProgressBar>(stderr);
@@ -259,9 +273,10 @@ int runRender(const RenderCommandLine& line) {
     if (bar) bar->finish();
 
     const auto writeStart = Clock::now();
-    writeImage(result.color, plan.color);
+    writeImage(result.color, plan.color, windowOf(result));
     for (const AovRequest& aov : plan.aovs) {
-        writeImage(aov.kind == AovRequest::Kind::Depth ? result.depth : result.normal, aov.path);
+        writeImage(aov.kind == AovRequest::Kind::Depth ? result.depth : result.normal, aov.path,
+                   windowOf(result));
     }
     const double secondsWrite = secondsSince(writeStart);
 

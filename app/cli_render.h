@@ -35,6 +35,7 @@ struct RenderCommandLine {
     std::string sectionColor;           ///< their caps' colour R,G,B; empty: the default
     bool stats = false;
     bool quiet = false;
+    std::string region;  ///< --region X0,Y0,X1,Y1; empty: the whole image
 
     CLI::Option* outputOption = nullptr;
     CLI::Option* noiseOption = nullptr;
