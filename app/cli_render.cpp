@@ -7,6 +7,7 @@
 #include "app/output_paths.h"
 #include "app/progress_bar.h"
 #include "app/region_option.h"
+#include "app/render_setup.h"
 #include "app/stats_report.h"
 #include "io/image.h"
 #include "csg/normalize.h"
@@ -293,6 +294,47 @@ int runRender(const RenderCommandLine& line) {
         printStats(report, std::cerr);
     }
     return kExitSuccess;
+}
+
+}  // namespace kerf::app
+
+// The same steps for the MPI driver (app/render_setup.h).
+namespace kerf::app {
+
+RenderSetup setUpRender(const RenderCommandLine& line, bool probeOutputs) {
+    RenderSetup setup;
+    checkNumbers(line);
+    setup.region = parseRegion(line.region);
+    setup.sections = sectionPlanes(line);
+    if (probeOutputs) {
+        setup.plan = planOutputs(line);
+    } else {
+        setup.plan.color = line.outputOption->count() > 0 ? line.output : defaultOutputPath(line.model);
+        for (const std::string& spec : line.aovs) setup.plan.aovs.push_back(parseAovSpec(spec));
+    }
+    setup.options = renderOptions(line, setup.plan);
+    return setup;
+}
+
+void applySetup(RenderSetup& setup, Scene& scene) {
+    if (scene.sections.size() + setup.sections.size() > size_t(kMaxSections))
+        throw UsageError("--section: the model's " + std::to_string(scene.sections.size()) +
+                         " section planes and " + std::to_string(setup.sections.size()) +
+                         " more are over the limit of " + std::to_string(kMaxSections));
+    scene.sections.insert(scene.sections.end(), setup.sections.begin(), setup.sections.end());
+    if (setup.region) {
+        const RenderOptions& o = setup.options;
+        checkRegionInside(*setup.region, o.width > 0 ? o.width : scene.settings.width,
+                          o.height > 0 ? o.height : scene.settings.height);
+        setup.options.region = setup.region;
+    }
+}
+
+void writeRenderOutputs(const RenderResult& result, const OutputPlan& plan) {
+    writeImage(result.color, plan.color, windowOf(result));
+    for (const AovRequest& aov : plan.aovs)
+        writeImage(aov.kind == AovRequest::Kind::Depth ? result.depth : result.normal, aov.path,
+                   windowOf(result));
 }
 
 }  // namespace kerf::app
