@@ -231,7 +231,7 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
     cmd->add_option("--section-color", line.sectionColor,
                     "The colour of the caps of --section planes (default 0.85,0.2,0.15)")
         ->type_name("R,G,B");
-    cmd->add_option("--region", line.region,
+    line.regionOption = cmd->add_option("--region", line.region,
                     "Render only the pixels [X0, X1) x [Y0, Y1) of the full image, each equal bit "
                     "for bit to the same pixel of a full render. An .exr or .tif output keeps "
                     "the region's place (its data window inside the full display window) and "
@@ -245,7 +245,7 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
 
 int runRender(const RenderCommandLine& line) {
     checkNumbers(line);
-    const std::optional<PixelRect> region = parseRegion(line.region);
+    const std::optional<PixelRect> region = parseRegion(line.regionOption, line.region);
     const std::vector<SectionPlane> sections = sectionPlanes(line);
     const OutputPlan plan = planOutputs(line);
 
@@ -304,7 +304,7 @@ namespace kerf::app {
 RenderSetup setUpRender(const RenderCommandLine& line, bool probeOutputs) {
     RenderSetup setup;
     checkNumbers(line);
-    setup.region = parseRegion(line.region);
+    setup.region = parseRegion(line.regionOption, line.region);
     setup.sections = sectionPlanes(line);
     if (probeOutputs) {
         setup.plan = planOutputs(line);

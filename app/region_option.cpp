@@ -3,6 +3,8 @@
 
 #include "app/exit_codes.h"
 
+#include <CLI/CLI.hpp>
+
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
@@ -24,8 +26,8 @@ std::optional<int> parseCount(const std::string& text) {
 
 }  // namespace
 
-std::optional<PixelRect> parseRegion(const std::string& text) {
-    if (text.empty()) return std::nullopt;
+std::optional<PixelRect> parseRegion(const CLI::Option* option, const std::string& text) {
+    if (option == nullptr || option->count() == 0) return std::nullopt;
     const std::string usage =
         "--region expects X0,Y0,X1,Y1: whole pixel numbers, the half-open rectangle "
         "[X0, X1) x [Y0, Y1) (got '" + text + "')";

@@ -9,11 +9,15 @@
 #include <optional>
 #include <string>
 
+namespace CLI {
+class Option;
+}  // namespace CLI
+
 namespace kerf::app {
 
 /// The rectangle of `--region X0,Y0,X1,Y1` (whole numbers, X0 < X1, Y0 < Y1, none negative),
-/// or nothing for an empty text. Throws UsageError naming --region otherwise.
-std::optional<PixelRect> parseRegion(const std::string& text);
+/// or nothing when the option was not given. Throws UsageError naming --region otherwise.
+std::optional<PixelRect> parseRegion(const CLI::Option* option, const std::string& text);
 
 /// Throws UsageError unless `region` lies inside the width × height image.
 void checkRegionInside(const PixelRect& region, int width, int height);

@@ -190,46 +190,6 @@ private:
 
 }  // namespace
 
-PixelRect intersect(const PixelRect& a, const PixelRect& b) {
-    PixelRect r{std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1),
-                std::min(a.y1, b.y1)};
-    if (r.empty()) r = PixelRect{};
-    return r;
-}
-
-PixelRect tileRect(int tile, int width, int height) {
-    const int tilesAcross = (width + kTileSize - 1) / kTileSize;
-    const int x0 = (tile % tilesAcross) * kTileSize;
-    const int y0 = (tile / tilesAcross) * kTileSize;
-    return {x0, y0, std::min(x0 + kTileSize, width), std::min(y0 + kTileSize, height)};
-}
-
-std::vector<int> regionTiles(int width, int height, const PixelRect& region, int margin) {
-    const int tilesAcross = (width + kTileSize - 1) / kTileSize;
-    const PixelRect reach = intersect(
-        {region.x0 - margin, region.y0 - margin, region.x1 + margin, region.y1 + margin},
-        {0, 0, width, height});
-    std::vector<int> tiles;
-    if (reach.empty()) return tiles;
-    for (int ty = reach.y0 / kTileSize; ty <= (reach.y1 - 1) / kTileSize; ++ty)
-        for (int tx = reach.x0 / kTileSize; tx <= (reach.x1 - 1) / kTileSize; ++tx)
-            tiles.push_back(ty * tilesAcross + tx);
-    return tiles;
-}
-
-int filterMargin(FilterKind kind) {
-    return kind == FilterKind::Box ? 0 : int(std::ceil(ReconstructionFilter::of(kind).radius));
-}
-
-void resolveTileFilms(const std::vector<const TileFilm*>& films, const PixelRect& region,
-                      Image& color) {
-    // Tile by tile in a fixed order: the same sums whatever the threads or processes did.
-    std::vector<double> sums(size_t(region.width()) * size_t(region.height()) * 4, 0.0);
-    for (const TileFilm* f : films)
-        f->addInto(sums, region.x0, region.y0, region.width(), region.height());
-    resolveFilm(sums, color);
-}
-
 /// An eighth of the angle one pixel spans: the image plane at distance 1 is 2·tan(fov/2)
 /// high, so one pixel spans 2·tan(fov/2)/height there. A hit distance within this relative
 /// tolerance moves the hit along its ray by under an eighth of the pixel footprint at that
@@ -399,7 +359,8 @@ RenderResult render(const Scene& input, const RenderOptions& options) {
     for (uint64_t n : samples) result.stats.samplesTaken += n;
     if (options.nextTile) {
         // The driver gathers the tiles: hand them over in increasing order.
-        for (const std::vector<int>& t : taken) result.tiles.insert(result.tiles.end(), t.begin(), t.end());
+        for (const std::vector<int>& t : taken)
+            result.tiles.insert(result.tiles.end(), t.begin(), t.end());
         std::sort(result.tiles.begin(), result.tiles.end());
         if (!films.empty())
             for (int tile : result.tiles) result.films.push_back(std::move(films[size_t(tile)]));
