@@ -20,6 +20,7 @@ ARGS="${ARGS:---width 480 --height 360 --spp 4}"
 RUNS="${RUNS:-3}"
 OUT="$(absolute "${OUT:-$(mktemp -d /tmp/kerf-mpi-bench.XXXXXX)}")"
 MPIRUN="${MPIRUN:-mpirun}"
+mkdir -p "$OUT"
 for tool in "$MPIRUN" oiiotool python3; do
     command -v "$tool" >/dev/null || { echo "run_mpi_bench: '$tool' is missing" >&2; exit 1; }
 done
@@ -36,7 +37,7 @@ seconds() {
     for _ in $(seq "$RUNS"); do
         local t0 t1
         t0=$(date +%s.%N)
-        "$@" >"$OUT/$name.log" 2>&1
+        "$@" >"$OUT/$name.log" 2>&1 || { echo "run_mpi_bench: $name failed, see $OUT/$name.log" >&2; exit 1; }
         t1=$(date +%s.%N)
         times+=("$(python3 -c "print($t1 - $t0)")")
     done
@@ -45,8 +46,9 @@ seconds() {
 
 # maxdiff A B: the largest absolute difference of two images' values (0: identical).
 maxdiff() {
+    [[ -f "$1" && -f "$2" ]] || { echo "no image"; return; }
     oiiotool "$1" "$2" --diff --fail 0 --failpercent 0 --hardfail 0 2>&1 |
-        awk '/Max error/ {print $3; found=1} END {if (!found) print 0}'
+        awk '/Max error/ {print $4; found=1} /^PASS/ {pass=1} END {if (!found) print (pass ? 0 : "?")}'
 }
 
 # shellcheck disable=SC2086

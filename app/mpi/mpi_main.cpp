@@ -193,11 +193,14 @@ int run(const Ranks& r, int argc, char** argv) {
     const std::string text = broadcastModel(r, line.model, code);
     if (code != kExitSuccess) return code;
     std::optional<Scene> scene;
+    const auto compileStart = std::chrono::steady_clock::now();
     code = agreed(r, [&] {
         scene = compileModel(r, line.model, text, line.quiet || r.rank != 0);
         applySetup(setup, *scene);
     });
     if (code != kExitSuccess) return code;
+    const double secondsCompile =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - compileStart).count();
 
     RenderResult local;
     {
@@ -210,6 +213,17 @@ int run(const Ranks& r, int argc, char** argv) {
     const int64_t tileCount = int64_t(local.tiles.size());
     std::vector<int64_t> tilesByRank(size_t(r.size), 0);
     MPI_Gather(&tileCount, 1, MPI_INT64_T, tilesByRank.data(), 1, MPI_INT64_T, 0, MPI_COMM_WORLD);
+    // The ray and sample counts of all ranks (the other statistics are rank 0's own).
+    RenderStats& st = local.stats;
+    uint64_t counts[5] = {st.cameraRays, st.shadowRays, st.reflectionRays, st.refractionRays,
+                          st.samplesTaken};
+    uint64_t sums[5] = {0, 0, 0, 0, 0};
+    MPI_Reduce(counts, sums, 5, MPI_UINT64_T, MPI_SUM, 0, MPI_COMM_WORLD);
+    st.cameraRays = sums[0];
+    st.shadowRays = sums[1];
+    st.reflectionRays = sums[2];
+    st.refractionRays = sums[3];
+    st.samplesTaken = sums[4];
 
     code = agreed(r, [&] {
         if (r.rank != 0) return;
@@ -223,7 +237,8 @@ int run(const Ranks& r, int argc, char** argv) {
             report.threads = setup.options.threads > 0
                                  ? setup.options.threads
                                  : int(std::max(1u, std::thread::hardware_concurrency()));
-            report.render = full.stats;  // rank 0's own counts and times
+            report.render = full.stats;  // rays and samples of all ranks; the rest rank 0's
+            report.secondsCompile = secondsCompile;
             printStats(report, std::cerr);
             // What the distribution cost: tiles per rank and the bytes gathered.
             int64_t bytes = 0, tiles = 0;
