@@ -7,6 +7,8 @@
 #include "app/option_text.h"
 #include "app/output_paths.h"
 #include "app/progress_bar.h"
+#include "app/region_option.h"
+#include "app/render_setup.h"
 #include "app/stats_report.h"
 #include "io/image.h"
 #include "csg/normalize.h"
@@ -231,6 +233,13 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
     cmd->add_option("--section-color", line.sectionColor,
                     "The colour of the caps of --section planes (default 0.85,0.2,0.15)")
         ->type_name("R,G,B");
+    line.regionOption = cmd->add_option("--region", line.region,
+                    "Render only the pixels [X0, X1) x [Y0, Y1) of the full image, each equal bit "
+                    "for bit to the same pixel of a full render. An .exr or .tif output keeps "
+                    "the region's place (its data window inside the full display window) and "
+                    "'kerf assemble' stitches such parts; a .png or .jpg holds the region alone "
+                    "and loses its place (assemble refuses it)")
+        ->type_name("X0,Y0,X1,Y1");
     cmd->add_flag("--stats", line.stats, "Print statistics to stderr");
     cmd->add_flag("-q,--quiet", line.quiet, "No progress bar and no echo lines from the model");
     addFrameOptions(*cmd, line);
@@ -241,6 +250,7 @@ int runRender(const RenderCommandLine& line) {
     // A sequence renders each frame through this same function (app/frame_sequence.h).
     if (wantsFrameSequence(line)) return renderFrames(line, runRender);
     checkNumbers(line);
+    const std::optional<PixelRect> region = parseRegion(line.regionOption, line.region);
     const std::vector<SectionPlane> sections = sectionPlanes(line);
     const OutputPlan plan = planOutputs(line);
 
@@ -255,6 +265,11 @@ int runRender(const RenderCommandLine& line) {
     const double secondsCompile = secondsSince(compileStart);
 
     RenderOptions options = renderOptions(line, plan);
+    if (region) {
+        checkRegionInside(*region, options.width > 0 ? options.width : scene->settings.width,
+                          options.height > 0 ? options.height : scene->settings.height);
+        options.region = region;
+    }
     std::unique_ptr<ProgressBar> bar;
     if (!line.quiet && stderrIsTerminal()) {
         bar = std::make_unique<ProgressBar>(stderr);
@@ -264,9 +279,10 @@ int runRender(const RenderCommandLine& line) {
     if (bar) bar->finish();
 
     const auto writeStart = Clock::now();
-    writeImage(result.color, plan.color);
+    writeImage(result.color, plan.color, windowOf(result));
     for (const AovRequest& aov : plan.aovs) {
-        writeImage(aov.kind == AovRequest::Kind::Depth ? result.depth : result.normal, aov.path);
+        writeImage(aov.kind == AovRequest::Kind::Depth ? result.depth : result.normal, aov.path,
+                   windowOf(result));
     }
     const double secondsWrite = secondsSince(writeStart);
 
@@ -283,6 +299,47 @@ int runRender(const RenderCommandLine& line) {
         printStats(report, std::cerr);
     }
     return kExitSuccess;
+}
+
+}  // namespace kerf::app
+
+// The same steps for the MPI driver (app/render_setup.h).
+namespace kerf::app {
+
+RenderSetup setUpRender(const RenderCommandLine& line, bool probeOutputs) {
+    RenderSetup setup;
+    checkNumbers(line);
+    setup.region = parseRegion(line.regionOption, line.region);
+    setup.sections = sectionPlanes(line);
+    if (probeOutputs) {
+        setup.plan = planOutputs(line);
+    } else {
+        setup.plan.color = line.outputOption->count() > 0 ? line.output : defaultOutputPath(line.model);
+        for (const std::string& spec : line.aovs) setup.plan.aovs.push_back(parseAovSpec(spec));
+    }
+    setup.options = renderOptions(line, setup.plan);
+    return setup;
+}
+
+void applySetup(RenderSetup& setup, Scene& scene) {
+    if (scene.sections.size() + setup.sections.size() > size_t(kMaxSections))
+        throw UsageError("--section: the model's " + std::to_string(scene.sections.size()) +
+                         " section planes and " + std::to_string(setup.sections.size()) +
+                         " more are over the limit of " + std::to_string(kMaxSections));
+    scene.sections.insert(scene.sections.end(), setup.sections.begin(), setup.sections.end());
+    if (setup.region) {
+        const RenderOptions& o = setup.options;
+        checkRegionInside(*setup.region, o.width > 0 ? o.width : scene.settings.width,
+                          o.height > 0 ? o.height : scene.settings.height);
+        setup.options.region = setup.region;
+    }
+}
+
+void writeRenderOutputs(const RenderResult& result, const OutputPlan& plan) {
+    writeImage(result.color, plan.color, windowOf(result));
+    for (const AovRequest& aov : plan.aovs)
+        writeImage(aov.kind == AovRequest::Kind::Depth ? result.depth : result.normal, aov.path,
+                   windowOf(result));
 }
 
 }  // namespace kerf::app

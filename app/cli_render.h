@@ -44,6 +44,7 @@ struct RenderCommandLine {
     std::string sectionColor;           ///< their caps' colour R,G,B; empty: the default
     bool stats = false;
     bool quiet = false;
+    std::string region;  ///< --region X0,Y0,X1,Y1 (when regionOption was given)
 
     CLI::Option* outputOption = nullptr;
     CLI::Option* framesOption = nullptr;
@@ -54,6 +55,7 @@ struct RenderCommandLine {
     CLI::Option* sppOption = nullptr;
     CLI::Option* threadsOption = nullptr;
     CLI::Option* toleranceOption = nullptr;
+    CLI::Option* regionOption = nullptr;
 };
 
 /// Adds the `render` subcommand to `parent`, parsing into `line` (which must outlive parsing).

@@ -1,6 +1,7 @@
 /// @file app/main.cpp
 /// @brief The `kerf` executable: parses the command line, runs one subcommand and turns its
 /// outcome into an exit code. The only place in kerf that exits; every exception stops here.
+#include "app/cli_assemble.h"
 #include "app/cli_bench.h"
 #include "app/cli_check.h"
 #include "app/cli_mesh.h"
@@ -39,6 +40,8 @@ int run(int argc, char** argv) {
     CLI::App* meshCmd = addMeshCommand(cli, meshLine);
     SliceCommandLine sliceLine;
     CLI::App* sliceCmd = addSliceCommand(cli, sliceLine);
+    AssembleCommandLine assembleLine;
+    CLI::App* assembleCmd = addAssembleCommand(cli, assembleLine);
 
     try {
         cli.parse(argc, argv);
@@ -56,6 +59,7 @@ int run(int argc, char** argv) {
         if (benchCmd->parsed()) return runBench(benchLine);
         if (meshCmd->parsed()) return runMesh(meshLine);
         if (sliceCmd->parsed()) return runSlice(sliceLine);
+        if (assembleCmd->parsed()) return runAssemble(assembleLine);
     } catch (const UsageError& e) {
         std::cerr << "kerf: error: " << e.what() << "\n";
         return kExitUsage;

@@ -42,6 +42,21 @@ struct ImageSupportError : std::runtime_error {
 /// ImageSupportError when the plug-in cannot be loaded.
 void writeImage(const Image& image, const std::string& path);
 
+/// Where an image sits inside a larger one: its top-left pixel at (x, y) of a fullWidth ×
+/// fullHeight image (a region render, `kerf render --region`).
+struct ImageWindow {
+    int x = 0, y = 0;
+    int fullWidth = 0, fullHeight = 0;
+};
+
+/// writeImage of a part of a larger image: .exr and .tif files record the window (the data
+/// window inside the display window); .png and .jpg hold the part alone, without its place.
+void writeImage(const Image& image, const std::string& path, const ImageWindow& window);
+
+/// readImage that also gives where the pixels sit (for a file without a data window: at 0, 0
+/// of an image of their own size).
+Image readImage(const std::string& path, ImageWindow& window);
+
 /// Reads any format OpenImageIO knows into float values (8-bit files decoded from sRGB to
 /// linear). Throws std::runtime_error naming the file on failure. Used by tests.
 Image readImage(const std::string& path);

@@ -50,18 +50,19 @@ int keepBytes(void* user, const void* data, size_t size) {
 
 /// Encodes `image` in the format `path`'s extension names into `bytes`; "" or the reason.
 std::string encode(const KerfImagePlugin& plugin, const Image& image, const std::string& path,
-                   Encoding encoding, std::string& bytes) {
+                   Encoding encoding, const ImageWindow& w, std::string& bytes) {
     char error[1024] = "";
     int failed;
     if (encoding == Encoding::Srgb8) {
         std::vector<uint8_t> codes(image.pixels.size());
         std::transform(image.pixels.begin(), image.pixels.end(), codes.begin(), srgbByte);
-        failed = plugin.encode(path.c_str(), image.width, image.height, image.channels, 1,
-                               codes.data(), "sRGB", keepBytes, &bytes, error, sizeof error);
+        failed = plugin.encodeWindow(path.c_str(), image.width, image.height, image.channels,
+                                     1, codes.data(), "sRGB", w.x, w.y, w.fullWidth,
+                                     w.fullHeight, keepBytes, &bytes, error, sizeof error);
     } else {
-        failed = plugin.encode(path.c_str(), image.width, image.height, image.channels, 0,
-                               image.pixels.data(), "Linear", keepBytes, &bytes, error,
-                               sizeof error);
+        failed = plugin.encodeWindow(path.c_str(), image.width, image.height, image.channels,
+                                     0, image.pixels.data(), "Linear", w.x, w.y, w.fullWidth,
+                                     w.fullHeight, keepBytes, &bytes, error, sizeof error);
     }
     if (!failed) return "";
     return error[0] != 0 ? std::string(error) : std::string("the encoder failed");
@@ -84,6 +85,10 @@ float* allocateFor(void* user, int width, int height, int channels, int integerC
 }  // namespace
 
 void writeImage(const Image& image, const std::string& path) {
+    writeImage(image, path, ImageWindow{0, 0, image.width, image.height});
+}
+
+void writeImage(const Image& image, const std::string& path, const ImageWindow& window) {
     const std::string ext = lowercaseExtension(path);
     const Encoding encoding = encodingFor(ext);
     if (encoding == Encoding::Unknown)
@@ -91,6 +96,9 @@ void writeImage(const Image& image, const std::string& path) {
     if (image.width <= 0 || image.height <= 0 || image.channels <= 0 ||
         image.pixels.size() != size_t(image.width) * image.height * image.channels)
         fail(path, "the image is empty or its pixel buffer does not match its size");
+    if (window.x < 0 || window.y < 0 || window.x + image.width > window.fullWidth ||
+        window.y + image.height > window.fullHeight)
+        fail(path, "the image does not fit inside its full image");
 
     // JPEG's own limit, checked here rather than left to libjpeg: its error would be caught (the
     // plug-in turns it into a message), but only by a longjmp past OpenImageIO's cleanup.
@@ -103,7 +111,7 @@ void writeImage(const Image& image, const std::string& path) {
     const std::string problem = outputProblem(path, false);
     if (!problem.empty()) fail(path, problem);
     std::string bytes;
-    const std::string error = encode(imagePlugin(), image, path, encoding, bytes);
+    const std::string error = encode(imagePlugin(), image, path, encoding, window, bytes);
     if (!error.empty()) fail(path, error);
     // The temporary keeps the real extension, so a tool looking at it sees what it is.
     const std::string writeError = replaceFile(path, ext, bytes.data(), bytes.size());
@@ -111,11 +119,18 @@ void writeImage(const Image& image, const std::string& path) {
 }
 
 Image readImage(const std::string& path) {
+    ImageWindow window;
+    return readImage(path, window);
+}
+
+Image readImage(const std::string& path, ImageWindow& window) {
     const KerfImagePlugin& plugin = imagePlugin();
     ReadTarget target;
     char error[1024] = "";
-    if (plugin.read(path.c_str(), allocateFor, &target, error, sizeof error) != 0)
+    int w[4] = {0, 0, 0, 0};
+    if (plugin.readWindow(path.c_str(), allocateFor, &target, w, error, sizeof error) != 0)
         throw std::runtime_error("cannot read '" + path + "': " + error);
+    window = ImageWindow{w[0], w[1], w[2], w[3]};
     // Integer files hold sRGB codes (that is how writeImage stores them): back to linear.
     if (target.integerCoded)
         for (float& v : target.image.pixels) v = float(srgbDecode(v));

@@ -12,7 +12,8 @@ extern "C" {
 /// Bumped whenever KerfImagePlugin changes; the loader refuses a plug-in of another version.
 /// 2: images are encoded in memory (`encode`), no longer written to disk by the plug-in.
 /// 3: image textures (`textureOpen`, `textureLookup`) through OpenImageIO's TextureSystem.
-#define KERF_IMAGE_PLUGIN_ABI 3
+/// 4: images placed in a larger one (`encodeWindow`, `readWindow`: EXR data windows).
+#define KERF_IMAGE_PLUGIN_ABI 4
 
 /// A texture opened by `textureOpen`; owned by the plug-in and valid until the process ends.
 typedef struct KerfTexture KerfTexture;
@@ -59,6 +60,17 @@ struct KerfImagePlugin {
     /// `wrapS` and `wrapT` are KERF_TEXTURE_WRAP_*.
     void (*textureLookup)(const KerfTexture* texture, float s, float t, float dsdx, float dtdx,
                           float dsdy, float dtdy, int wrapS, int wrapT, float rgb[3]);
+    /// `encode` of an image that is the part at (x, y) of a fullWidth × fullHeight image: the
+    /// file's data window inside its display window, where the format has them (OpenEXR,
+    /// TIFF); other formats store the part alone.
+    int (*encodeWindow)(const char* fileName, int width, int height, int channels, int bytes,
+                        const void* pixels, const char* colorSpace, int x, int y, int fullWidth,
+                        int fullHeight, KerfImageBytes sink, void* user, char* error,
+                        size_t errorSize);
+    /// `read`, also giving where the pixels sit: window = {x, y, fullWidth, fullHeight} (the
+    /// data window's corner and the display window's size; the display window starts at 0).
+    int (*readWindow)(const char* path, KerfImageAllocate allocate, void* user, int window[4],
+                      char* error, size_t errorSize);
 };
 
 /// The plug-in's one exported symbol.

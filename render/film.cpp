@@ -2,7 +2,9 @@
 /// @brief Filtered splatting of samples into tile films, and their sum.
 #include "render/film.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace kerf {
 
@@ -57,12 +59,27 @@ void TileFilm::add(double fx, double fy, const Vec3& radiance, const Reconstruct
 }
 
 void TileFilm::addInto(std::vector<double>& sums, int width, int height) const {
-    for (int y = std::max(mY0, 0); y < std::min(mY0 + mHeight, height); ++y)
-        for (int x = std::max(mX0, 0); x < std::min(mX0 + mWidth, width); ++x) {
+    addInto(sums, 0, 0, width, height);
+}
+
+void TileFilm::addInto(std::vector<double>& sums, int x0, int y0, int width, int height) const {
+    for (int y = std::max(mY0, y0); y < std::min(mY0 + mHeight, y0 + height); ++y)
+        for (int x = std::max(mX0, x0); x < std::min(mX0 + mWidth, x0 + width); ++x) {
             const double* s = &mSums[(size_t(y - mY0) * size_t(mWidth) + size_t(x - mX0)) * 4];
-            double* d = &sums[(size_t(y) * size_t(width) + size_t(x)) * 4];
+            double* d = &sums[(size_t(y - y0) * size_t(width) + size_t(x - x0)) * 4];
             for (int k = 0; k < 4; ++k) d[k] += s[k];
         }
+}
+
+TileFilm TileFilm::fromParts(int filmX0, int filmY0, int filmWidth, int filmHeight,
+                             std::vector<double> sums) {
+    TileFilm film;
+    film.mX0 = filmX0;
+    film.mY0 = filmY0;
+    film.mWidth = filmWidth;
+    film.mHeight = filmHeight;
+    film.mSums = std::move(sums);
+    return film;
 }
 
 void resolveFilm(const std::vector<double>& sums, Image& color) {

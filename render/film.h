@@ -39,6 +39,18 @@ public:
     void add(double fx, double fy, const Vec3& radiance, const ReconstructionFilter& filter);
     /// Adds this tile's sums into the image-wide sums (width × height, 4 per pixel).
     void addInto(std::vector<double>& sums, int width, int height) const;
+    /// The same for sums that cover only the pixels [x0, x0 + width) × [y0, y0 + height).
+    void addInto(std::vector<double>& sums, int x0, int y0, int width, int height) const;
+
+    /// The film's extent (margin included) and sums, to send it to another process.
+    int filmX0() const { return mX0; }
+    int filmY0() const { return mY0; }
+    int filmWidth() const { return mWidth; }
+    int filmHeight() const { return mHeight; }
+    const std::vector<double>& sums() const { return mSums; }
+    /// A film received from another process (`sums`: filmWidth × filmHeight × 4 values).
+    static TileFilm fromParts(int filmX0, int filmY0, int filmWidth, int filmHeight,
+                              std::vector<double> sums);
 
 private:
     int mX0 = 0, mY0 = 0, mWidth = 0, mHeight = 0;  ///< the film's own extent, margin included

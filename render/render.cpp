@@ -30,7 +30,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr int kTileSize = 16;
 /// Progress is reported at most this often (about 20 times a second).
 constexpr auto kProgressInterval = std::chrono::milliseconds(50);
 
@@ -46,7 +45,10 @@ struct FrameJob {
     const SceneGeometry& geometry;
     const WhittedIntegrator& integrator;
     const PrimaryBeams* beams;  ///< null when camera rays start at the eye
-    RenderResult& result;
+    RenderResult& result;  ///< images of the region's size
+    int width, height;     ///< the full image
+    PixelRect region;      ///< the pixels kept
+    PixelRect traced;      ///< the region and the pixels whose samples the filter spreads into it
     bool wantDepth;
     bool wantNormal;
     ReconstructionFilter filter;  ///< box: each pixel averages its own samples
@@ -62,7 +64,10 @@ double luminance(const Vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * 
 void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContext& ctx,
                  TileFilm* film, uint64_t& samplesTaken) {
     RenderResult& out = job.result;
-    const uint64_t pixel = uint64_t(j) * uint64_t(out.color.width) + uint64_t(i);
+    // Seeds follow the pixel's place in the full image, so a region sees the same samples.
+    const uint64_t pixel = uint64_t(j) * uint64_t(job.width) + uint64_t(i);
+    const bool kept = job.region.contains(i, j);  // else traced only for its filtered samples
+    const int oi = i - job.region.x0, oj = j - job.region.y0;
     const bool wantAov = job.wantDepth || job.wantNormal;
     const int count = job.sampler.sampleCount();
 
@@ -116,9 +121,10 @@ void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContex
         }
     }
     samplesTaken += uint64_t(taken);
+    if (!kept) return;
     if (!film) {
         const Vec3 c = sum / double(taken);
-        for (int k = 0; k < 3; ++k) out.color.at(i, j, k) = float(c[k]);
+        for (int k = 0; k < 3; ++k) out.color.at(oi, oj, k) = float(c[k]);
     }
 
     if (!wantAov) return;
@@ -128,21 +134,17 @@ void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContex
         centreHit = job.geometry.nearestHit(centreRay, tStart, kInf, ctx.trace);
     }
     if (job.wantDepth)
-        out.depth.at(i, j, 0) =
+        out.depth.at(oi, oj, 0) =
             centreHit ? float(glm::length(centreRay.dir) * centreHit->t) : float(kInf);
     if (job.wantNormal && centreHit)
-        for (int k = 0; k < 3; ++k) out.normal.at(i, j, k) = float(centreHit->normal[k]);
+        for (int k = 0; k < 3; ++k) out.normal.at(oi, oj, k) = float(centreHit->normal[k]);
 }
 
 void renderTile(const FrameJob& job, int tile, ShadingContext& ctx, BeamStats& beamStats,
                 uint64_t& samplesTaken) {
-    const int width = job.result.color.width;
-    const int height = job.result.color.height;
-    const int tilesAcross = (width + kTileSize - 1) / kTileSize;
-    const int x0 = (tile % tilesAcross) * kTileSize;
-    const int y0 = (tile / tilesAcross) * kTileSize;
-    const int x1 = std::min(x0 + kTileSize, width);
-    const int y1 = std::min(y0 + kTileSize, height);
+    const PixelRect t = tileRect(tile, job.width, job.height);
+    const int x0 = t.x0, y0 = t.y0, x1 = t.x1, y1 = t.y1;
+    // Beams over the whole tile even when part of it is traced: the same start distances.
     double starts[kTileSize * kTileSize];
     std::fill(starts, starts + kTileSize * kTileSize, 0.0);
     if (job.beams) job.beams->tileStarts(x0, y0, x1, y1, starts, beamStats);
@@ -151,8 +153,9 @@ void renderTile(const FrameJob& job, int tile, ShadingContext& ctx, BeamStats& b
         (*job.films)[size_t(tile)] = TileFilm(x0, y0, x1, y1, int(std::ceil(job.filter.radius)));
         film = &(*job.films)[size_t(tile)];
     }
-    for (int j = y0; j < y1; ++j)
-        for (int i = x0; i < x1; ++i)
+    const PixelRect part = intersect(t, job.traced);
+    for (int j = part.y0; j < part.y1; ++j)
+        for (int i = part.x0; i < part.x1; ++i)
             renderPixel(job, i, j, starts[(j - y0) * (x1 - x0) + (i - x0)], ctx, film, samplesTaken);
 }
 
@@ -208,13 +211,23 @@ RenderResult render(const Scene& input, const RenderOptions& options) {
         throw std::invalid_argument("render: image size must be positive, got " +
                                     std::to_string(width) + "x" + std::to_string(height));
 
+    const PixelRect full{0, 0, width, height};
+    const PixelRect region = options.region.value_or(full);
+    if (region.empty() || !(intersect(region, full) == region))
+        throw std::invalid_argument("render: the region must be a non-empty part of the " +
+                                    std::to_string(width) + "x" + std::to_string(height) +
+                                    " image");
+
     RenderResult result;
+    result.region = region;
+    result.fullWidth = width;
+    result.fullHeight = height;
     result.stats.tolerance = options.tolerance > 0
                                  ? options.tolerance
                                  : defaultTolerance(height, scene.camera.fovDegrees);
-    result.color = Image(width, height, 3);
-    if (options.wantDepth) result.depth = Image(width, height, 1);
-    if (options.wantNormal) result.normal = Image(width, height, 3);
+    result.color = Image(region.width(), region.height(), 3);
+    if (options.wantDepth) result.depth = Image(region.width(), region.height(), 1);
+    if (options.wantNormal) result.normal = Image(region.width(), region.height(), 3);
 
     const Camera camera(scene.camera, width, height);
     tbb::task_arena arena(options.threads > 0 ? options.threads
@@ -257,14 +270,22 @@ RenderResult render(const Scene& input, const RenderOptions& options) {
     const FilterKind filterKind = options.filter.value_or(scene.settings.filter);
     const int tileCount = ((width + kTileSize - 1) / kTileSize) *
                           ((height + kTileSize - 1) / kTileSize);
+    const int margin = filterMargin(filterKind);
+    const std::vector<int> tiles = regionTiles(width, height, region, margin);
     std::vector<TileFilm> films;
     if (filterKind != FilterKind::Box) films.resize(size_t(tileCount));
+    const PixelRect traced = intersect(
+        {region.x0 - margin, region.y0 - margin, region.x1 + margin, region.y1 + margin}, full);
     const FrameJob job{camera,
                        sampler,
                        geometry,
                        integrator,
                        useBeams ? &beams : nullptr,
                        result,
+                       width,
+                       height,
+                       region,
+                       traced,
                        options.wantDepth,
                        options.wantNormal,
                        ReconstructionFilter::of(filterKind),
@@ -286,18 +307,40 @@ RenderResult render(const Scene& input, const RenderOptions& options) {
         ctx.trace.method = method;
         return ctx;
     });
-    ProgressReporter progress(options.progress, tileCount);
-    arena.execute([&] {
+    ProgressReporter progress(options.progress, int(tiles.size()));
+    // With a shared tile counter (app/mpi), each thread takes tiles until none is left.
+    tbb::enumerable_thread_specific<std::vector<int>> taken;
+    std::mutex counterMutex;
+    if (options.nextTile) arena.execute([&] {
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, arena.max_concurrency(), 1),
+            [&](const tbb::blocked_range<int>&) {
+                ShadingContext& ctx = contexts.local();
+                for (;;) {
+                    int n;
+                    {
+                        std::lock_guard<std::mutex> lock(counterMutex);
+                        n = options.nextTile();
+                    }
+                    if (n < 0 || size_t(n) >= tiles.size()) break;
+                    renderTile(job, tiles[size_t(n)], ctx, beamStats.local(), samples.local());
+                    taken.local().push_back(tiles[size_t(n)]);
+                    progress.tileDone();
+                }
+            },
+            tbb::simple_partitioner());
+    });
+    else arena.execute([&] {
         // One tile per task: tiles are already coarse, and the simple partitioner keeps the
         // split independent of timing (the image never depends on it, the load balance does).
         tbb::parallel_for(
-            tbb::blocked_range<int>(0, tileCount, 1),
+            tbb::blocked_range<int>(0, int(tiles.size()), 1),
             [&](const tbb::blocked_range<int>& range) {
                 ShadingContext& ctx = contexts.local();
                 BeamStats& beamCounts = beamStats.local();
                 uint64_t& samplesTaken = samples.local();
-                for (int tile = range.begin(); tile != range.end(); ++tile) {
-                    renderTile(job, tile, ctx, beamCounts, samplesTaken);
+                for (int k = range.begin(); k != range.end(); ++k) {
+                    renderTile(job, tiles[size_t(k)], ctx, beamCounts, samplesTaken);
                     progress.tileDone();
                 }
             },
@@ -314,11 +357,17 @@ RenderResult render(const Scene& input, const RenderOptions& options) {
     }
     for (const BeamStats& b : beamStats) result.stats.beams += b;
     for (uint64_t n : samples) result.stats.samplesTaken += n;
-    if (!films.empty()) {
-        // Tile by tile in a fixed order: the same sums whatever the threads did.
-        std::vector<double> sums(size_t(width) * size_t(height) * 4, 0.0);
-        for (const TileFilm& f : films) f.addInto(sums, width, height);
-        resolveFilm(sums, result.color);
+    if (options.nextTile) {
+        // The driver gathers the tiles: hand them over in increasing order.
+        for (const std::vector<int>& t : taken)
+            result.tiles.insert(result.tiles.end(), t.begin(), t.end());
+        std::sort(result.tiles.begin(), result.tiles.end());
+        if (!films.empty())
+            for (int tile : result.tiles) result.films.push_back(std::move(films[size_t(tile)]));
+    } else if (!films.empty()) {
+        std::vector<const TileFilm*> inOrder;
+        for (int tile : tiles) inOrder.push_back(&films[size_t(tile)]);
+        resolveTileFilms(inOrder, region, result.color);
     }
     result.stats.secondsTrace = secondsSince(traceStart);
     result.stats.octree = octreeStats(geometry.objects());

@@ -28,6 +28,7 @@ struct EncodeCall {
     int width, height, channels, bytes;
     const void* pixels;
     const char* colorSpace;
+    int x, y, fullWidth, fullHeight;  ///< where the image sits in the whole one
     KerfImageBytes sink;
     void* user;
     char* error;
@@ -47,6 +48,12 @@ int encodeUnguarded(void* data) {
         OIIO::Filesystem::IOVecOutput proxy(encoded);
         const OIIO::TypeDesc type = c.bytes ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
         OIIO::ImageSpec spec(c.width, c.height, c.channels, type);
+        spec.x = c.x;
+        spec.y = c.y;
+        spec.full_x = 0;
+        spec.full_y = 0;
+        spec.full_width = c.fullWidth;
+        spec.full_height = c.fullHeight;
         spec.attribute("oiio:ColorSpace", c.colorSpace);
         void* proxyPointer = &proxy;
         spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxyPointer);
@@ -67,11 +74,12 @@ int encodeUnguarded(void* data) {
     }
 }
 
-int encodeImage(const char* fileName, int width, int height, int channels, int bytes,
-                const void* pixels, const char* colorSpace, KerfImageBytes sink, void* user,
-                char* error, size_t errorSize) {
-    EncodeCall call{fileName, width,      height, channels, bytes,    pixels,
-                    colorSpace, sink, user,   error,    errorSize};
+int encodeImageWindow(const char* fileName, int width, int height, int channels, int bytes,
+                      const void* pixels, const char* colorSpace, int x, int y, int fullWidth,
+                      int fullHeight, KerfImageBytes sink, void* user, char* error,
+                      size_t errorSize) {
+    EncodeCall call{fileName, width, height,    channels,   bytes, pixels, colorSpace, x,
+                    y,        fullWidth, fullHeight, sink, user,  error,  errorSize};
     // libjpeg would otherwise print its own message and exit (io/plugin/jpeg_errors.h).
     char jpegMessage[256] = "";
     const int result = kerf_plugin::runCatchingJpegErrors(encodeUnguarded, &call, jpegMessage,
@@ -80,8 +88,15 @@ int encodeImage(const char* fileName, int width, int height, int channels, int b
     return result;
 }
 
-int readImage(const char* path, KerfImageAllocate allocate, void* user, char* error,
-              size_t errorSize) {
+int encodeImage(const char* fileName, int width, int height, int channels, int bytes,
+                const void* pixels, const char* colorSpace, KerfImageBytes sink, void* user,
+                char* error, size_t errorSize) {
+    return encodeImageWindow(fileName, width, height, channels, bytes, pixels, colorSpace, 0, 0,
+                             width, height, sink, user, error, errorSize);
+}
+
+int readImageWindow(const char* path, KerfImageAllocate allocate, void* user, int window[4],
+                    char* error, size_t errorSize) {
     try {
         std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
         if (!in) return fail(OIIO::geterror(), error, errorSize);
@@ -90,6 +105,13 @@ int readImage(const char* path, KerfImageAllocate allocate, void* user, char* er
                                   spec.format.basetype == OIIO::TypeDesc::UINT16;
         float* pixels = allocate(user, spec.width, spec.height, spec.nchannels, integerCoded);
         if (pixels == nullptr) return fail("no room for the pixels", error, errorSize);
+        if (window != nullptr) {
+            // Relative to the display window's corner (kerf writes it at 0, 0).
+            window[0] = spec.x - spec.full_x;
+            window[1] = spec.y - spec.full_y;
+            window[2] = spec.full_width;
+            window[3] = spec.full_height;
+        }
         if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels))
             return fail(in->geterror(), error, errorSize);
         in->close();
@@ -99,8 +121,15 @@ int readImage(const char* path, KerfImageAllocate allocate, void* user, char* er
     }
 }
 
-const KerfImagePlugin kPlugin = {KERF_IMAGE_PLUGIN_ABI, encodeImage, readImage,
-                                 kerf_plugin::textureOpen, kerf_plugin::textureLookup};
+int readImage(const char* path, KerfImageAllocate allocate, void* user, char* error,
+              size_t errorSize) {
+    return readImageWindow(path, allocate, user, nullptr, error, errorSize);
+}
+
+const KerfImagePlugin kPlugin = {KERF_IMAGE_PLUGIN_ABI,       encodeImage,
+                                 readImage,                   kerf_plugin::textureOpen,
+                                 kerf_plugin::textureLookup, encodeImageWindow,
+                                 readImageWindow};
 
 }  // namespace
 
