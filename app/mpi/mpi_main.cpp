@@ -10,6 +10,7 @@
 /// so a bad option or model stops all of them (exit 2) with the message printed once.
 #include "app/cli_render.h"
 #include "app/exit_codes.h"
+#include "app/frame_sequence.h"
 #include "app/mpi/tile_exchange.h"
 #include "app/render_setup.h"
 #include "app/stats_report.h"
@@ -93,10 +94,10 @@ std::string broadcastModel(const Ranks& r, const std::string& path, int& code) {
 
 /// The compiled scene; diagnostics as `kerf render` prints them, on rank 0 only.
 std::optional<Scene> compileModel(const Ranks& r, const std::string& path, const std::string& text,
-                                  bool quiet) {
+                                  bool quiet, const SequenceFrame& frame) {
     DiagnosticSink sink;
     std::optional<Scene> scene = isOpenScadCsgPath(path) ? compileOpenScadString(text, path, sink)
-                                                         : compileString(text, path, sink);
+                                                         : compileString(text, path, sink, EvalLimits{}, frame);
     if (r.rank == 0 && !sink.diagnostics().empty()) std::cerr << sink.format(!quiet);
     if (!scene) {
         if (r.rank == 0 && !sink.hasErrors())
@@ -169,24 +170,9 @@ std::vector<std::vector<char>> gatherPacks(const Ranks& r, const std::vector<cha
     return packs;
 }
 
-int run(const Ranks& r, int argc, char** argv) {
-    CLI::App cli("kerf-mpi: kerf render across MPI processes (mpirun -n N kerf-mpi render "
-                 "FILE …); the image is the same, bit for bit, as kerf render's",
-                 "kerf-mpi");
-    cli.require_subcommand(1);
-    RenderCommandLine line;
-    addRenderCommand(cli, line);
-    try {
-        cli.parse(argc, argv);
-    } catch (const CLI::Success& e) {
-        return r.rank == 0 ? cli.exit(e) : kExitSuccess;
-    } catch (const CLI::ParseError& e) {
-        if (r.rank == 0)
-            std::cerr << "kerf: error: " << e.what() << "\n"
-                      << "Run 'kerf-mpi render --help' for usage.\n";
-        return kExitUsage;  // every rank parsed the same arguments
-    }
-
+/// One image (of a sequence, or alone): its tiles shared out across the ranks, gathered and
+/// written by rank 0.
+int renderImage(const Ranks& r, const RenderCommandLine& line) {
     RenderSetup setup;
     int code = agreed(r, [&] { setup = setUpRender(line, r.rank == 0); });
     if (code != kExitSuccess) return code;
@@ -195,7 +181,7 @@ int run(const Ranks& r, int argc, char** argv) {
     std::optional<Scene> scene;
     const auto compileStart = std::chrono::steady_clock::now();
     code = agreed(r, [&] {
-        scene = compileModel(r, line.model, text, line.quiet || r.rank != 0);
+        scene = compileModel(r, line.model, text, line.quiet || r.rank != 0, line.frame.value_or(SequenceFrame{}));
         applySetup(setup, *scene);
     });
     if (code != kExitSuccess) return code;
@@ -253,6 +239,39 @@ int run(const Ranks& r, int argc, char** argv) {
         }
     });
     return code;
+}
+
+int run(const Ranks& r, int argc, char** argv) {
+    CLI::App cli("kerf-mpi: kerf render across MPI processes (mpirun -n N kerf-mpi render "
+                 "FILE …); the image is the same, bit for bit, as kerf render's",
+                 "kerf-mpi");
+    cli.require_subcommand(1);
+    RenderCommandLine line;
+    addRenderCommand(cli, line);
+    try {
+        cli.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return r.rank == 0 ? cli.exit(e) : kExitSuccess;
+    } catch (const CLI::ParseError& e) {
+        if (r.rank == 0)
+            std::cerr << "kerf: error: " << e.what() << "\n"
+                      << "Run 'kerf-mpi render --help' for usage.\n";
+        return kExitUsage;  // every rank parsed the same arguments
+    }
+
+    if (!wantsFrameSequence(line)) return renderImage(r, line);
+    // A sequence: every rank runs the same frame loop (the same arguments, so the same frames
+    // and checks), and each frame's tiles are shared out as one image's are. Only rank 0 speaks.
+    RenderCommandLine loop = line;
+    if (r.rank != 0) {
+        loop.quiet = true;
+        loop.stats = false;
+    }
+    int code = kExitSuccess;
+    const int checked = agreed(r, [&] {
+        code = renderFrames(loop, [&](const RenderCommandLine& one) { return renderImage(r, one); });
+    });
+    return checked != kExitSuccess ? checked : code;
 }
 
 }  // namespace

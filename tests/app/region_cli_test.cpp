@@ -176,6 +176,24 @@ TEST_CASE("kerf-mpi render on 2 ranks: the same image as kerf render, bit for bi
     }
 }
 
+TEST_CASE("kerf-mpi render --frames: each frame the same as kerf render's, bit for bit") {
+    // A sphere growing with the frame: the two frames differ, and each equals the single-
+    // process render of it.
+    TempDir dir;
+    dir.write("grow.kerf",
+              "object sphere { center <0, 0, 0> radius 1 + 0.1 * frame };\n"
+              "camera { eye <0, 0, -5> look_at <0, 0, 0> fov 40 }\n"
+              "light point { at <-2, 5, -3> power 400 }\n"
+              "render { width 40 height 30 }\n");
+    REQUIRE(runKerf(dir, {"render", "grow.kerf", "-q", "--frames", "1-2", "-o", "one_%d.exr"}).exitCode == 0);
+    const KerfRun run = runMpi(dir, {"render", "grow.kerf", "-q", "--frames", "1-2", "-o", "two_%d.exr"});
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    CHECK(sameBits(readImage(dir.file("one_1.exr")), readImage(dir.file("two_1.exr"))));
+    CHECK(sameBits(readImage(dir.file("one_2.exr")), readImage(dir.file("two_2.exr"))));
+    CHECK_FALSE(sameBits(readImage(dir.file("two_1.exr")), readImage(dir.file("two_2.exr"))));
+}
+
 TEST_CASE("kerf-mpi render: a bad model stops every rank with exit 2, reported once") {
     TempDir dir;
     dir.write("bad.kerf", "object sphere { center <0, 0, 0> radius };\n");
