@@ -208,6 +208,7 @@ int runSlice(const SliceCommandLine& line) {
                                  std::to_string(int64_t(count) - 1));
         }
         for (int64_t i = kept.first; i <= kept.last; ++i) {
+            if ((i - kept.first) % line.parts != line.part) continue;
             offsets.push_back(from + double(i) * step);
             layerNumbers.push_back(int(i));
         }
@@ -219,6 +220,7 @@ int runSlice(const SliceCommandLine& line) {
         family = SlicePlane::throughPoint(parseVector(line.point, "--point"), n);
         offsets.push_back(0.0);
     }
+    if (offsets.empty()) return kExitSuccess;  // a share of a stack with no layer left in it
     const Format format = formatOf(line.output);
     std::vector<std::string> paths;
     if (!line.stack.empty()) {

@@ -27,6 +27,10 @@ struct SliceCommandLine {
     double pixel = 0.0;       ///< PNG: pixel size in model units (instead of --width)
     bool stats = false;
     bool quiet = false;
+    /// With --stack, this process slices only every `parts`-th of the kept layers, starting at
+    /// the `part`-th (kerf-mpi shares a stack out across its ranks this way).
+    int part = 0;
+    int parts = 1;
     CLI::Option* widthOption = nullptr;
     CLI::Option* pixelOption = nullptr;
     CLI::Option* layersOption = nullptr;

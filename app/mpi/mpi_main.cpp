@@ -9,7 +9,9 @@
 /// writes the outputs atomically. Every step ends with all ranks agreeing on an exit code,
 /// so a bad option or model stops all of them (exit 2) with the message printed once.
 #include "app/cli_render.h"
+#include "app/cli_slice.h"
 #include "app/exit_codes.h"
+#include "app/model_loader.h"
 #include "app/frame_sequence.h"
 #include "app/mpi/tile_exchange.h"
 #include "app/render_setup.h"
@@ -241,13 +243,37 @@ int renderImage(const Ranks& r, const RenderCommandLine& line) {
     return code;
 }
 
+/// `kerf-mpi slice`: a stack's layers dealt out across the ranks (every size-th layer from
+/// the rank's own), each rank writing its own layers' files; one plane is sliced by rank 0.
+/// The model is compiled on rank 0 first, so its diagnostics are printed once.
+int sliceStack(const Ranks& r, SliceCommandLine line) {
+    int code = agreed(r, [&] {
+        if (r.rank == 0 && !loadModel(line.model, std::cerr, line.quiet)) throw UsageError("");
+    });
+    if (code != kExitSuccess) return code;
+    if (r.rank != 0) {
+        line.quiet = true;
+        line.stats = false;
+    }
+    line.part = r.rank;
+    line.parts = r.size;
+    int sliced = kExitSuccess;
+    code = agreed(r, [&] {
+        if (r.rank == 0 || !line.stack.empty()) sliced = runSlice(line);
+    });
+    return code != kExitSuccess ? code : sliced;
+}
+
 int run(const Ranks& r, int argc, char** argv) {
-    CLI::App cli("kerf-mpi: kerf render across MPI processes (mpirun -n N kerf-mpi render "
-                 "FILE …); the image is the same, bit for bit, as kerf render's",
+    CLI::App cli("kerf-mpi: kerf render and kerf slice --stack across MPI processes (mpirun -n N "
+                 "kerf-mpi render FILE …); the image is the same, bit for bit, as kerf render's, and a "
+                 "stack's layers are shared out",
                  "kerf-mpi");
     cli.require_subcommand(1);
     RenderCommandLine line;
     addRenderCommand(cli, line);
+    SliceCommandLine sliceLine;
+    CLI::App* sliceCmd = addSliceCommand(cli, sliceLine);
     try {
         cli.parse(argc, argv);
     } catch (const CLI::Success& e) {
@@ -259,6 +285,7 @@ int run(const Ranks& r, int argc, char** argv) {
         return kExitUsage;  // every rank parsed the same arguments
     }
 
+    if (sliceCmd->parsed()) return sliceStack(r, sliceLine);
     if (!wantsFrameSequence(line)) return renderImage(r, line);
     // A sequence: every rank runs the same frame loop (the same arguments, so the same frames
     // and checks), and each frame's tiles are shared out as one image's are. Only rank 0 speaks.

@@ -194,6 +194,26 @@ TEST_CASE("kerf-mpi render --frames: each frame the same as kerf render's, bit f
     CHECK_FALSE(sameBits(readImage(dir.file("two_1.exr")), readImage(dir.file("two_2.exr"))));
 }
 
+TEST_CASE("kerf-mpi slice --stack: the layers shared out, the files those of kerf slice") {
+    TempDir dir;
+    dir.write("m.kerf", kModel);
+    REQUIRE(runKerf(dir, {"slice", "m.kerf", "-q", "--stack", "y=-0.8:0.8:0.2", "-o", "one_%02d.svg"}).exitCode == 0);
+    const KerfRun run = runMpi(dir, {"slice", "m.kerf", "-q", "--stack", "y=-0.8:0.8:0.2", "-o", "two_%02d.svg"});
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    int layers = 0;
+    for (int i = 0; i <= 8; ++i) {
+        char one[32], two[32];
+        std::snprintf(one, sizeof one, "one_%02d.svg", i);
+        std::snprintf(two, sizeof two, "two_%02d.svg", i);
+        REQUIRE(fs::exists(dir.file(two)));
+        CHECK(readFile(dir.file(one)) == readFile(dir.file(two)));
+        ++layers;
+    }
+    CHECK(layers == 9);
+    CHECK(!fs::exists(dir.file("two_09.svg")));
+}
+
 TEST_CASE("kerf-mpi render: a bad model stops every rank with exit 2, reported once") {
     TempDir dir;
     dir.write("bad.kerf", "object sphere { center <0, 0, 0> radius };\n");
