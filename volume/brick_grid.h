@@ -17,6 +17,8 @@
 
 #include "volume/brick_index.h"
 
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -180,13 +182,27 @@ public:
     }
 
     /// Bounds (lo ≤ every voxel ≤ hi) of the voxels of the box [lo, hi] (inclusive, clamped to
-    /// the grid), from the per-brick and per-macrobrick min/max: the bound may be wider than the
-    /// box's own voxels (it covers the whole bricks the box touches).
+    /// the grid): exact for a box of at most n³ voxels, otherwise from the per-brick and
+    /// per-macrobrick min/max (then it may be wider: it covers the whole bricks the box meets).
     std::pair<T, T> rangeOfVoxels(glm::ivec3 lo, glm::ivec3 hi) const {
         const glm::ivec3 s = mIndex.size();
         lo = glm::clamp(lo, glm::ivec3(0), s - 1);
         hi = glm::clamp(hi, glm::ivec3(0), s - 1);
+        // A box of at most one brick's worth of voxels is read directly (exact, and no dearer
+        // than the bricks it may straddle); larger ones from the brick bounds.
+        const glm::ivec3 e = glm::max(hi - lo + 1, glm::ivec3(0));
         const int bn = mIndex.layout().brickLog2;
+        if (std::int64_t(e.x) * e.y * e.z <= (std::int64_t(1) << 3 * bn)) {
+            T a = get(lo.x, lo.y, lo.z), b = a;
+            for (int z = lo.z; z <= hi.z; ++z)
+                for (int y = lo.y; y <= hi.y; ++y)
+                    for (int x = lo.x; x <= hi.x; ++x) {
+                        const T v = get(x, y, z);
+                        a = std::min(a, v);
+                        b = std::max(b, v);
+                    }
+            return {a, b};
+        }
         return brickRange(lo >> bn, hi >> bn);
     }
 
