@@ -248,3 +248,16 @@ TEST_CASE("BrickGrid::rangeOfVoxels") {
     CHECK(r.first == lo);
     CHECK(r.second == hi);
 }
+
+TEST_CASE("BrickGrid::prefetchBrick") {
+    // A hint only: it names the brick holding the (clamped) voxel and changes nothing.
+    const glm::ivec3 s(37, 29, 41);
+    Pair p(s, {2, 1}, 13);
+    const BrickIndex& ix = p.grid.index();
+    CHECK(p.grid.prefetchBrick(5, 6, 7) == ix.brickNumber(1, 1, 1));
+    CHECK(p.grid.prefetchBrick(-3, 28, 100) == ix.brickNumber(0, 7, 10));
+    CHECK(p.grid.prefetchBrick(36, 0, 40) == ix.brickNumber(9, 0, 10));
+    for (int z = 0; z < s.z; ++z)
+        for (int y = 0; y < s.y; ++y)
+            for (int x = 0; x < s.x; ++x) REQUIRE(p.grid.get(x, y, z) == p.at(x, y, z));
+}
