@@ -7,6 +7,8 @@
 //     voxel, summed; and the same with a prefetch ahead along the line (the flat array: the 4
 //     lines of the stencil --ahead-flat voxels ahead; the bricked grid: the whole brick
 //     --ahead-brick voxels ahead, BrickGrid::prefetchBrick, once per brick);
+//   - march, camera: the same on a volume renderer's coherent rays (--camera P: P² parallel
+//     rays one voxel apart along an oblique direction, in 8 × 8 tiles), with and without prefetch;
 //   - points: random voxels, summed;
 //   - samples: trilinear samples at random points, summed;
 //   - slice x / y / z: whole planes normal to x, y, z, every voxel read, summed.
@@ -19,7 +21,7 @@
 // Build: cmake -S bench -B build/bench-reference -DKERF_BRICK_BENCH=ON
 //        cmake --build build/bench-reference --target kerf_brick_bench
 // Run:   kerf_brick_bench [--size N] [--runs R] [--rays K] [--points K] [--slices K] [--brick B]
-//        [--macro M] [--only WORKLOAD] [--ahead-flat V] [--ahead-brick V]
+//        [--macro M] [--only WORKLOAD] [--ahead-flat V] [--ahead-brick V] [--camera P]
 //        (B, M: log2 of the brick side and of the macrobrick side in bricks; V: look-ahead in voxels)
 #include "volume/brick_grid.h"
 
@@ -53,6 +55,7 @@ struct Options {
     std::string only;     ///< run only the workloads whose name starts with this
     int aheadFlat = 8;    ///< march with prefetch: the flat array's look-ahead, in voxels
     int aheadBrick = 8;   ///< and the bricked grid's
+    int cameraPixels = 128; ///< the coherent march: this many² parallel rays, one voxel apart
 };
 
 double thread_seconds() {
@@ -188,6 +191,43 @@ std::vector<Line> makeLines(int rays, int n) {
     return lines;
 }
 
+/// A volume renderer's rays: an orthographic view of the cube along a fixed oblique direction,
+/// `pixels`² parallel rays one voxel apart through the cube's centre, in 8 × 8 pixel tiles, so
+/// that neighbouring rays read neighbouring voxels (the coherence the literature's figures
+/// rely on), clipped to the cube like makeLines'.
+std::vector<Line> makeCameraLines(int pixels, int n) {
+    const double top = double(n - 1), c = 0.5 * top;
+    const double d[3] = {0.48, 0.36, 0.8};  // unit: 0.48² + 0.36² + 0.8² = 1
+    // u ⟂ d in the x-y plane, v = d × u.
+    const double ul = std::hypot(d[0], d[1]);
+    const double u[3] = {-d[1] / ul, d[0] / ul, 0.0};
+    const double v[3] = {d[1] * u[2] - d[2] * u[1], d[2] * u[0] - d[0] * u[2], d[0] * u[1] - d[1] * u[0]};
+    std::vector<Line> lines;
+    for (int ty = 0; ty < pixels; ty += 8)
+        for (int tx = 0; tx < pixels; tx += 8)
+            for (int py = ty; py < std::min(pixels, ty + 8); ++py)
+                for (int px = tx; px < std::min(pixels, tx + 8); ++px) {
+                    const double a = px - 0.5 * pixels + 0.5, b = py - 0.5 * pixels + 0.5;
+                    Line l;
+                    for (int k = 0; k < 3; ++k) {
+                        l.d[k] = d[k];
+                        l.o[k] = c + a * u[k] + b * v[k];
+                    }
+                    double t0 = -1e300, t1 = 1e300;
+                    for (int k = 0; k < 3; ++k) {
+                        double ta = (0.0 - l.o[k]) / l.d[k], tb = (top - l.o[k]) / l.d[k];
+                        if (ta > tb) std::swap(ta, tb);
+                        t0 = std::max(t0, ta);
+                        t1 = std::min(t1, tb);
+                    }
+                    if (!(t0 <= t1)) continue;
+                    l.t0 = t0;
+                    l.count = int(std::floor((t1 - t0) * 2.0)) + 1;
+                    lines.push_back(l);
+                }
+    return lines;
+}
+
 /// The march with a hint ahead(point kAhead voxels further) before each sample.
 template <class S>
 double marchAhead(const S& s, const std::vector<Line>& lines, double kAhead) {
@@ -296,6 +336,7 @@ void parse(int argc, char** argv, Options& o) {
         else if (a == "--only" && i + 1 < argc) o.only = argv[++i];
         else if (a == "--ahead-flat") o.aheadFlat = value("--ahead-flat");
         else if (a == "--ahead-brick") o.aheadBrick = value("--ahead-brick");
+        else if (a == "--camera") o.cameraPixels = value("--camera");
         else {
             std::fprintf(stderr, "kerf_brick_bench: unknown argument %s\n", a.c_str());
             std::exit(2);
@@ -397,6 +438,13 @@ int main(int argc, char** argv) {
     const BrickedAhead brickedAhead{bricked};
     add("march, prefetch ahead", marchSamples, [&] { return marchAhead(flatAhead, lines, o.aheadFlat); },
         [&] { return marchAhead(brickedAhead, lines, o.aheadBrick); }, [&] { return march(vdbAcc, lines); });
+    const std::vector<Line> camera = makeCameraLines(o.cameraPixels, n);
+    double cameraSamples = 0;
+    for (const Line& l : camera) cameraSamples += l.count;
+    add("march, camera", cameraSamples, [&] { return march(flat, camera); }, [&] { return march(bricked, camera); },
+        [&] { return march(vdbAcc, camera); });
+    add("march, camera, prefetch ahead", cameraSamples, [&] { return marchAhead(flatAhead, camera, o.aheadFlat); },
+        [&] { return marchAhead(brickedAhead, camera, o.aheadBrick); }, [&] { return march(vdbAcc, camera); });
     add("points", o.points, [&] { return points(flat, o.points, n); },
         [&] { return points(bricked, o.points, n); }, [&] { return points(vdbAcc, o.points, n); });
     add("samples", o.points, [&] { return samples(flat, o.points, n); },

@@ -11,7 +11,7 @@
 #
 # Environment: BENCH_BUILD=dir is where the benchmark is built (default build/bench-reference).
 # Arguments go to kerf_brick_bench: [--size N] [--runs R] [--rays K] [--points K] [--slices K]
-# [--brick B] [--macro M] [--only WORKLOAD] [--ahead-flat V] [--ahead-brick V].
+# [--brick B] [--macro M] [--only WORKLOAD] [--ahead-flat V] [--ahead-brick V] [--camera P].
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 source "$root/bench/bench_setup.sh"
