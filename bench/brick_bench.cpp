@@ -90,7 +90,7 @@ struct Flat {
     int n;
     float voxel(int x, int y, int z) const { return d[size_t(x) + size_t(n) * (size_t(y) + size_t(n) * size_t(z))]; }
     double sample(double x, double y, double z) const {
-        const CellCoord cx = cellCoord(x, n), cy = cellCoord(y, n), cz = cellCoord(z, n);
+        const SampleCell cx = sampleCell(x, n), cy = sampleCell(y, n), cz = sampleCell(z, n);
         const size_t sy = size_t(n), sz = size_t(n) * size_t(n);
         const float* p = d + size_t(cx.i) + sy * size_t(cy.i) + sz * size_t(cz.i);
         const size_t dx = size_t(cx.i1 - cx.i), dy = sy * size_t(cy.i1 - cy.i), dz = sz * size_t(cz.i1 - cz.i);
@@ -138,7 +138,7 @@ struct Vdb {
     int n;
     float voxel(int x, int y, int z) const { return acc->getValue(openvdb::Coord(x, y, z)); }
     double sample(double x, double y, double z) const {
-        const CellCoord cx = cellCoord(x, n), cy = cellCoord(y, n), cz = cellCoord(z, n);
+        const SampleCell cx = sampleCell(x, n), cy = sampleCell(y, n), cz = sampleCell(z, n);
         double c[8];
         for (int j = 0; j < 8; ++j)
             c[j] = acc->getValue(openvdb::Coord(j & 1 ? cx.i1 : cx.i, j & 2 ? cy.i1 : cy.i, j & 4 ? cz.i1 : cz.i));

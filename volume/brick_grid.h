@@ -55,13 +55,13 @@ inline double trilinearGradient(const double c[8], double tx, double ty, double 
 /// Where a trilinear sample at index-space u falls along one axis of s voxels: the cell's
 /// lower voxel i, the upper one i1 (= i + 1 but for s = 1), the weight t, and whether u was
 /// inside [0, s − 1] (outside, the value is extended constant from the edge).
-struct CellCoord {
+struct SampleCell {
     int i, i1;
     double t;
     bool inside;
 };
 
-inline CellCoord cellCoord(double u, int s) {
+inline SampleCell sampleCell(double u, int s) {
     const double top = double(s - 1);
     const bool inside = u >= 0.0 && u <= top;
     const double c = u > 0.0 ? (u < top ? u : top) : 0.0;  // NaN goes to 0
@@ -228,7 +228,7 @@ public:
     /// The 8 corners c[dx + 2·dy + 4·dz] of the cell holding (x, y, z) and the weights.
     void gather(double x, double y, double z, double c[8], double t[3], bool inside[3] = nullptr) const {
         const glm::ivec3 s = mIndex.size();
-        const CellCoord cx = cellCoord(x, s.x), cy = cellCoord(y, s.y), cz = cellCoord(z, s.z);
+        const SampleCell cx = sampleCell(x, s.x), cy = sampleCell(y, s.y), cz = sampleCell(z, s.z);
         t[0] = cx.t;
         t[1] = cy.t;
         t[2] = cz.t;

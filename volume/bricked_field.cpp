@@ -33,11 +33,11 @@ double largestNeighbourDifference(const BrickGrid<float>& g) {
 }
 
 /// The index range of cells a coordinate interval [lo, hi] (index space) reaches: the same
-/// cellCoord() as a sample, and floor is monotone, so every sample in the interval uses a cell
+/// sampleCell() as a sample, and floor is monotone, so every sample in the interval uses a cell
 /// in [first, last].
 void cellsOf(double lo, double hi, int s, int& first, int& last) {
-    first = cellCoord(lo, s).i;
-    last = cellCoord(hi, s).i1;
+    first = sampleCell(lo, s).i;
+    last = sampleCell(hi, s).i1;
 }
 
 }  // namespace
