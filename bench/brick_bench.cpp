@@ -22,9 +22,8 @@
 //        cmake --build build/bench-reference --target kerf_brick_bench
 // Run:   kerf_brick_bench [--size N] [--runs R] [--rays K] [--points K] [--slices K] [--brick B]
 //        [--macro M] [--only WORKLOAD] [--ahead-flat V] [--ahead-brick V] [--camera P]
-//        (B, M: log2 of the brick side and of the macrobrick side in bricks; V: look-ahead in voxels)
-#include "volume/brick_grid.h"
-
+//        (B, M: log2 of the brick side and of the macrobrick side in bricks; V: look-ahead in
+//        voxels)
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Dense.h>
 #include <openvdb/tools/Interpolation.h>
@@ -41,21 +40,23 @@
 #include <string>
 #include <vector>
 
+#include "volume/brick_grid.h"
+
 using namespace kerf;
 
 namespace {
 
 struct Options {
-    int size = 512;       ///< N: the field is N³ voxels
-    int runs = 5;         ///< median of this many
-    int rays = 20000;     ///< lines of the march
-    int points = 8000000; ///< random voxels (and as many random trilinear samples)
-    int slices = 8;       ///< planes per axis
+    int size = 512;        ///< N: the field is N³ voxels
+    int runs = 5;          ///< median of this many
+    int rays = 20000;      ///< lines of the march
+    int points = 8000000;  ///< random voxels (and as many random trilinear samples)
+    int slices = 8;        ///< planes per axis
     BrickLayout layout{3, 3};
-    std::string only;     ///< run only the workloads whose name starts with this
-    int aheadFlat = 8;    ///< march with prefetch: the flat array's look-ahead, in voxels
-    int aheadBrick = 8;   ///< and the bricked grid's
-    int cameraPixels = 128; ///< the coherent march: this many² parallel rays, one voxel apart
+    std::string only;        ///< run only the workloads whose name starts with this
+    int aheadFlat = 8;       ///< march with prefetch: the flat array's look-ahead, in voxels
+    int aheadBrick = 8;      ///< and the bricked grid's
+    int cameraPixels = 128;  ///< the coherent march: this many² parallel rays, one voxel apart
 };
 
 double thread_seconds() {
@@ -88,13 +89,17 @@ struct Rng {
 struct Flat {
     const float* d;
     int n;
-    float voxel(int x, int y, int z) const { return d[size_t(x) + size_t(n) * (size_t(y) + size_t(n) * size_t(z))]; }
+    float voxel(int x, int y, int z) const {
+        return d[size_t(x) + size_t(n) * (size_t(y) + size_t(n) * size_t(z))];
+    }
     double sample(double x, double y, double z) const {
         const SampleCell cx = sampleCell(x, n), cy = sampleCell(y, n), cz = sampleCell(z, n);
         const size_t sy = size_t(n), sz = size_t(n) * size_t(n);
         const float* p = d + size_t(cx.i) + sy * size_t(cy.i) + sz * size_t(cz.i);
-        const size_t dx = size_t(cx.i1 - cx.i), dy = sy * size_t(cy.i1 - cy.i), dz = sz * size_t(cz.i1 - cz.i);
-        const double c[8] = {p[0], p[dx], p[dy], p[dy + dx], p[dz], p[dz + dx], p[dz + dy], p[dz + dy + dx]};
+        const size_t dx = size_t(cx.i1 - cx.i), dy = sy * size_t(cy.i1 - cy.i),
+                     dz = sz * size_t(cz.i1 - cz.i);
+        const double c[8] = {p[0],  p[dx],      p[dy],      p[dy + dx],
+                             p[dz], p[dz + dx], p[dz + dy], p[dz + dy + dx]};
         return trilinear(c, cx.t, cy.t, cz.t);
     }
 };
@@ -112,7 +117,8 @@ struct BrickedAhead : Bricked {
         const int ix = int(x), iy = int(y), iz = int(z);
         // prefetchBrick returns the brick number; a repeated hint costs only the key.
         const int mask = g->index().brickSide() - 1;
-        if (((ix ^ lx) | (iy ^ ly) | (iz ^ lz)) & ~mask) last = g->prefetchBrick(ix, iy, iz), lx = ix, ly = iy, lz = iz;
+        if (((ix ^ lx) | (iy ^ ly) | (iz ^ lz)) & ~mask)
+            last = g->prefetchBrick(ix, iy, iz), lx = ix, ly = iy, lz = iz;
     }
     mutable int lx = -100, ly = -100, lz = -100;
 };
@@ -120,7 +126,8 @@ struct BrickedAhead : Bricked {
 /// The flat array, prefetching the 4 lines of the stencil a few voxels ahead along the ray.
 struct FlatAhead : Flat {
     void ahead(double x, double y, double z) const {
-        const int ix = std::min(std::max(int(x), 0), n - 2), iy = std::min(std::max(int(y), 0), n - 2),
+        const int ix = std::min(std::max(int(x), 0), n - 2),
+                  iy = std::min(std::max(int(y), 0), n - 2),
                   iz = std::min(std::max(int(z), 0), n - 2);
         const float* p = d + size_t(ix) + size_t(n) * (size_t(iy) + size_t(n) * size_t(iz));
         const size_t sy = size_t(n), sz = size_t(n) * size_t(n);
@@ -141,7 +148,8 @@ struct Vdb {
         const SampleCell cx = sampleCell(x, n), cy = sampleCell(y, n), cz = sampleCell(z, n);
         double c[8];
         for (int j = 0; j < 8; ++j)
-            c[j] = acc->getValue(openvdb::Coord(j & 1 ? cx.i1 : cx.i, j & 2 ? cy.i1 : cy.i, j & 4 ? cz.i1 : cz.i));
+            c[j] = acc->getValue(
+                openvdb::Coord(j & 1 ? cx.i1 : cx.i, j & 2 ? cy.i1 : cy.i, j & 4 ? cz.i1 : cz.i));
         return trilinear(c, cx.t, cy.t, cz.t);
     }
 };
@@ -201,7 +209,8 @@ std::vector<Line> makeCameraLines(int pixels, int n) {
     // u ⟂ d in the x-y plane, v = d × u.
     const double ul = std::hypot(d[0], d[1]);
     const double u[3] = {-d[1] / ul, d[0] / ul, 0.0};
-    const double v[3] = {d[1] * u[2] - d[2] * u[1], d[2] * u[0] - d[0] * u[2], d[0] * u[1] - d[1] * u[0]};
+    const double v[3] = {d[1] * u[2] - d[2] * u[1], d[2] * u[0] - d[0] * u[2],
+                         d[0] * u[1] - d[1] * u[0]};
     std::vector<Line> lines;
     for (int ty = 0; ty < pixels; ty += 8)
         for (int tx = 0; tx < pixels; tx += 8)
@@ -291,9 +300,15 @@ double slices(const S& s, int axis, int count, int n) {
         for (int b = 0; b < n; ++b)
             for (int a = 0; a < n; ++a) {
                 switch (axis) {
-                    case 0: sum += s.voxel(c, a, b); break;
-                    case 1: sum += s.voxel(a, c, b); break;
-                    default: sum += s.voxel(a, b, c); break;
+                    case 0:
+                        sum += s.voxel(c, a, b);
+                        break;
+                    case 1:
+                        sum += s.voxel(a, c, b);
+                        break;
+                    default:
+                        sum += s.voxel(a, b, c);
+                        break;
                 }
             }
     }
@@ -326,24 +341,36 @@ void parse(int argc, char** argv, Options& o) {
             return int(v);
         };
         const std::string a = argv[i];
-        if (a == "--size") o.size = value("--size");
-        else if (a == "--runs") o.runs = value("--runs");
-        else if (a == "--rays") o.rays = value("--rays");
-        else if (a == "--points") o.points = value("--points");
-        else if (a == "--slices") o.slices = value("--slices");
-        else if (a == "--brick") o.layout.brickLog2 = value("--brick");
-        else if (a == "--macro") o.layout.macroLog2 = value("--macro");
-        else if (a == "--only" && i + 1 < argc) o.only = argv[++i];
-        else if (a == "--ahead-flat") o.aheadFlat = value("--ahead-flat");
-        else if (a == "--ahead-brick") o.aheadBrick = value("--ahead-brick");
-        else if (a == "--camera") o.cameraPixels = value("--camera");
+        if (a == "--size")
+            o.size = value("--size");
+        else if (a == "--runs")
+            o.runs = value("--runs");
+        else if (a == "--rays")
+            o.rays = value("--rays");
+        else if (a == "--points")
+            o.points = value("--points");
+        else if (a == "--slices")
+            o.slices = value("--slices");
+        else if (a == "--brick")
+            o.layout.brickLog2 = value("--brick");
+        else if (a == "--macro")
+            o.layout.macroLog2 = value("--macro");
+        else if (a == "--only" && i + 1 < argc)
+            o.only = argv[++i];
+        else if (a == "--ahead-flat")
+            o.aheadFlat = value("--ahead-flat");
+        else if (a == "--ahead-brick")
+            o.aheadBrick = value("--ahead-brick");
+        else if (a == "--camera")
+            o.cameraPixels = value("--camera");
         else {
             std::fprintf(stderr, "kerf_brick_bench: unknown argument %s\n", a.c_str());
             std::exit(2);
         }
     }
     if (o.size < 2 || o.size > 2048 || o.runs < 1 || o.slices < 1 || o.slices > o.size) {
-        std::fprintf(stderr, "kerf_brick_bench: --size in [2, 2048], --runs ≥ 1, --slices in [1, size]\n");
+        std::fprintf(stderr,
+                     "kerf_brick_bench: --size in [2, 2048], --runs ≥ 1, --slices in [1, size]\n");
         std::exit(2);
     }
 }
@@ -366,7 +393,8 @@ int main(int argc, char** argv) {
         for (int k = 0; k < kTerms; ++k) {
             amp[k] = 1.0 / (k + 1);
             for (int a = 0; a < 3; ++a) {
-                const double w = (0.02 + 0.25 * u(rng)) * (k + 1) * 0.5, phase = 2.0 * M_PI * u(rng);
+                const double w = (0.02 + 0.25 * u(rng)) * (k + 1) * 0.5,
+                             phase = 2.0 * M_PI * u(rng);
                 tab[k][a].resize(size_t(n));
                 for (int i = 0; i < n; ++i) tab[k][a][size_t(i)] = std::sin(w * i + phase);
             }
@@ -374,28 +402,35 @@ int main(int argc, char** argv) {
     }
     auto field = [&](int x, int y, int z) {
         double v = 0.0;
-        for (int k = 0; k < kTerms; ++k) v += amp[k] * tab[k][0][size_t(x)] * tab[k][1][size_t(y)] * tab[k][2][size_t(z)];
+        for (int k = 0; k < kTerms; ++k)
+            v += amp[k] * tab[k][0][size_t(x)] * tab[k][1][size_t(y)] * tab[k][2][size_t(z)];
         return float(v);
     };
 
     const double mib = double(n) * n * n * 4.0 / (1 << 20);
-    std::printf("Field: %d³ floats (%.0f MiB per copy); bricks of %d³ voxels in macrobricks of %d³ bricks\n", n,
-                mib, 1 << o.layout.brickLog2, 1 << o.layout.macroLog2);
+    std::printf(
+        "Field: %d³ floats (%.0f MiB per copy); bricks of %d³ voxels in macrobricks of %d³ "
+        "bricks\n",
+        n, mib, 1 << o.layout.brickLog2, 1 << o.layout.macroLog2);
     auto t0 = std::chrono::steady_clock::now();
     std::vector<float> flatData(size_t(n) * n * n);
     tbb::parallel_for(0, n, [&](int z) {
         for (int y = 0; y < n; ++y)
-            for (int x = 0; x < n; ++x) flatData[size_t(x) + size_t(n) * (size_t(y) + size_t(n) * z)] = field(x, y, z);
+            for (int x = 0; x < n; ++x)
+                flatData[size_t(x) + size_t(n) * (size_t(y) + size_t(n) * z)] = field(x, y, z);
     });
     BrickGrid<float> grid({n, n, n}, 0.0f, o.layout);
-    grid.fill([&](int x, int y, int z) { return flatData[size_t(x) + size_t(n) * (size_t(y) + size_t(n) * z)]; });
+    grid.fill([&](int x, int y, int z) {
+        return flatData[size_t(x) + size_t(n) * (size_t(y) + size_t(n) * z)];
+    });
     openvdb::FloatGrid::Ptr vdb = openvdb::FloatGrid::create(0.0f);
     {
         openvdb::tools::Dense<float, openvdb::tools::LayoutXYZ> dense(
             openvdb::CoordBBox(openvdb::Coord(0), openvdb::Coord(n - 1)), flatData.data());
         openvdb::tools::copyFromDense(dense, vdb->tree(), 0.0f);
     }
-    const double built = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double built =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     // The copies must hold the same floats: checked on every voxel once.
     long mismatches = 0;
     {
@@ -404,13 +439,15 @@ int main(int argc, char** argv) {
             for (int y = 0; y < n; ++y)
                 for (int x = 0; x < n; ++x) {
                     const float f = flatData[size_t(x) + size_t(n) * (size_t(y) + size_t(n) * z)];
-                    mismatches += grid.get(x, y, z) != f || acc.getValue(openvdb::Coord(x, y, z)) != f;
+                    mismatches +=
+                        grid.get(x, y, z) != f || acc.getValue(openvdb::Coord(x, y, z)) != f;
                 }
     }
-    std::printf("Built in %.1f s; voxels differing between the copies: %ld; memory: flat %.0f MiB, "
-                "bricked %.0f MiB, OpenVDB %.0f MiB\n\n",
-                built, mismatches, mib, double(grid.voxelBytes()) / (1 << 20),
-                double(vdb->memUsage()) / (1 << 20));
+    std::printf(
+        "Built in %.1f s; voxels differing between the copies: %ld; memory: flat %.0f MiB, "
+        "bricked %.0f MiB, OpenVDB %.0f MiB\n\n",
+        built, mismatches, mib, double(grid.voxelBytes()) / (1 << 20),
+        double(vdb->memUsage()) / (1 << 20));
 
     openvdb::FloatGrid::ConstAccessor accessor = vdb->getConstAccessor();
     const Flat flat{flatData.data(), n};
@@ -430,34 +467,48 @@ int main(int argc, char** argv) {
         r.run = {fFlat, fBrick, fVdb};
         rows.push_back(r);
     };
-    add("march", marchSamples, [&] { return march(flat, lines); }, [&] { return march(bricked, lines); },
-        [&] { return march(vdbAcc, lines); });
+    add(
+        "march", marchSamples, [&] { return march(flat, lines); },
+        [&] { return march(bricked, lines); }, [&] { return march(vdbAcc, lines); });
     rows.back().storages.push_back("OpenVDB BoxSampler");
     rows.back().run.push_back([&] { return march(vdbBox, lines); });
     const FlatAhead flatAhead{flat};
     const BrickedAhead brickedAhead{bricked};
-    add("march, prefetch ahead", marchSamples, [&] { return marchAhead(flatAhead, lines, o.aheadFlat); },
-        [&] { return marchAhead(brickedAhead, lines, o.aheadBrick); }, [&] { return march(vdbAcc, lines); });
+    add(
+        "march, prefetch ahead", marchSamples,
+        [&] { return marchAhead(flatAhead, lines, o.aheadFlat); },
+        [&] { return marchAhead(brickedAhead, lines, o.aheadBrick); },
+        [&] { return march(vdbAcc, lines); });
     const std::vector<Line> camera = makeCameraLines(o.cameraPixels, n);
     double cameraSamples = 0;
     for (const Line& l : camera) cameraSamples += l.count;
-    add("march, camera", cameraSamples, [&] { return march(flat, camera); }, [&] { return march(bricked, camera); },
+    add(
+        "march, camera", cameraSamples, [&] { return march(flat, camera); },
+        [&] { return march(bricked, camera); }, [&] { return march(vdbAcc, camera); });
+    add(
+        "march, camera, prefetch ahead", cameraSamples,
+        [&] { return marchAhead(flatAhead, camera, o.aheadFlat); },
+        [&] { return marchAhead(brickedAhead, camera, o.aheadBrick); },
         [&] { return march(vdbAcc, camera); });
-    add("march, camera, prefetch ahead", cameraSamples, [&] { return marchAhead(flatAhead, camera, o.aheadFlat); },
-        [&] { return marchAhead(brickedAhead, camera, o.aheadBrick); }, [&] { return march(vdbAcc, camera); });
-    add("points", o.points, [&] { return points(flat, o.points, n); },
+    add(
+        "points", o.points, [&] { return points(flat, o.points, n); },
         [&] { return points(bricked, o.points, n); }, [&] { return points(vdbAcc, o.points, n); });
-    add("samples", o.points, [&] { return samples(flat, o.points, n); },
-        [&] { return samples(bricked, o.points, n); }, [&] { return samples(vdbAcc, o.points, n); });
+    add(
+        "samples", o.points, [&] { return samples(flat, o.points, n); },
+        [&] { return samples(bricked, o.points, n); },
+        [&] { return samples(vdbAcc, o.points, n); });
     const double sliceUnits = double(o.slices) * n * n;
     const char* axes[3] = {"slice x", "slice y", "slice z"};
     for (int a = 0; a < 3; ++a)
-        add(axes[a], sliceUnits, [&, a] { return slices(flat, a, o.slices, n); },
-            [&, a] { return slices(bricked, a, o.slices, n); }, [&, a] { return slices(vdbAcc, a, o.slices, n); });
+        add(
+            axes[a], sliceUnits, [&, a] { return slices(flat, a, o.slices, n); },
+            [&, a] { return slices(bricked, a, o.slices, n); },
+            [&, a] { return slices(vdbAcc, a, o.slices, n); });
 
-    rows.erase(std::remove_if(rows.begin(), rows.end(),
-                              [&](const Row& r) { return r.name.compare(0, o.only.size(), o.only) != 0; }),
-               rows.end());
+    rows.erase(
+        std::remove_if(rows.begin(), rows.end(),
+                       [&](const Row& r) { return r.name.compare(0, o.only.size(), o.only) != 0; }),
+        rows.end());
     for (Row& r : rows) {
         r.cpu.assign(r.run.size(), {});
         r.wall.assign(r.run.size(), {});
@@ -470,23 +521,27 @@ int main(int argc, char** argv) {
                 const double c0 = thread_seconds();
                 const double v = r.run[s]();
                 r.cpu[s].push_back(thread_seconds() - c0);
-                r.wall[s].push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count());
+                r.wall[s].push_back(
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count());
                 if (run > 0 && v != r.sum[s] && !(std::isnan(v) && std::isnan(r.sum[s]))) {
-                    std::fprintf(stderr, "kerf_brick_bench: %s on %s gave two sums\n", r.name.c_str(), r.storages[s].c_str());
+                    std::fprintf(stderr, "kerf_brick_bench: %s on %s gave two sums\n",
+                                 r.name.c_str(), r.storages[s].c_str());
                     return 1;
                 }
                 r.sum[s] = v;
             }
 
-    std::printf("| workload | reads or samples | storage | ns each (CPU) | ns each (wall) | speed-up over flat (CPU) | sum | sum − flat's |\n");
+    std::printf(
+        "| workload | reads or samples | storage | ns each (CPU) | ns each (wall) | speed-up over "
+        "flat (CPU) | sum | sum − flat's |\n");
     std::printf("|---|---:|---|---:|---:|---:|---:|---:|\n");
     for (const Row& r : rows) {
         const double flatCpu = median(r.cpu[0]);
         for (size_t s = 0; s < r.run.size(); ++s) {
             const double c = median(r.cpu[s]), w = median(r.wall[s]);
-            std::printf("| %s | %.3g | %s | %.2f | %.2f | %.2f× | %.10g | %.3g |\n", r.name.c_str(), r.units,
-                        r.storages[s].c_str(), 1e9 * c / r.units, 1e9 * w / r.units, flatCpu / c, r.sum[s],
-                        r.sum[s] - r.sum[0]);
+            std::printf("| %s | %.3g | %s | %.2f | %.2f | %.2f× | %.10g | %.3g |\n", r.name.c_str(),
+                        r.units, r.storages[s].c_str(), 1e9 * c / r.units, 1e9 * w / r.units,
+                        flatCpu / c, r.sum[s], r.sum[s] - r.sum[0]);
         }
     }
     std::printf("\nMedian of %d runs; the storages alternate within each run.\n", o.runs);

@@ -15,18 +15,18 @@
 /// not (set() may allocate). fill() writes the whole grid in parallel, deterministically.
 #pragma once
 
-#include "volume/brick_index.h"
-
-#include <glm/common.hpp>
-#include <glm/vec3.hpp>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
 #include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+#include "volume/brick_index.h"
 
 namespace kerf {
 
@@ -75,12 +75,15 @@ class BrickGrid {
 
 public:
     BrickGrid(glm::ivec3 size, T background, BrickLayout layout = {})
-        : mIndex(size, layout), mBackground(background),
+        : mIndex(size, layout),
+          mBackground(background),
           mBackgroundBlock(new T[mIndex.macroVoxels()]),
           mMacros(mIndex.macroTotal()),
           mRead(mIndex.macroTotal()),
-          mBrickMin(mIndex.brickTotal(), background), mBrickMax(mIndex.brickTotal(), background),
-          mMacroMin(mIndex.macroTotal(), background), mMacroMax(mIndex.macroTotal(), background) {
+          mBrickMin(mIndex.brickTotal(), background),
+          mBrickMax(mIndex.brickTotal(), background),
+          mMacroMin(mIndex.macroTotal(), background),
+          mMacroMax(mIndex.macroTotal(), background) {
         std::fill_n(mBackgroundBlock.get(), mIndex.macroVoxels(), background);
         std::fill(mRead.begin(), mRead.end(), mBackgroundBlock.get());
         const int n = mIndex.brickSide();
@@ -125,7 +128,8 @@ public:
         const glm::ivec3 mc = ix.macroCount(), s = ix.size();
         const int side = ix.macroSide();
         tbb::parallel_for(std::size_t(0), ix.macroTotal(), [&](std::size_t m) {
-            const int mx = int(m % mc.x), my = int(m / mc.x % mc.y), mz = int(m / (std::size_t(mc.x) * mc.y));
+            const int mx = int(m % mc.x), my = int(m / mc.x % mc.y),
+                      mz = int(m / (std::size_t(mc.x) * mc.y));
             T* block = writable(std::uint32_t(m));
             bool any = false;
             for (int z = mz * side; z < std::min(s.z, (mz + 1) * side); ++z)
@@ -226,7 +230,8 @@ public:
     }
 
     /// The 8 corners c[dx + 2·dy + 4·dz] of the cell holding (x, y, z) and the weights.
-    void gather(double x, double y, double z, double c[8], double t[3], bool inside[3] = nullptr) const {
+    void gather(double x, double y, double z, double c[8], double t[3],
+                bool inside[3] = nullptr) const {
         const glm::ivec3 s = mIndex.size();
         const SampleCell cx = sampleCell(x, s.x), cy = sampleCell(y, s.y), cz = sampleCell(z, s.z);
         t[0] = cx.t;
@@ -275,7 +280,8 @@ public:
         y = std::min(std::max(y, 0), s.y - 1) & ~mMask;
         z = std::min(std::max(z, 0), s.z - 1) & ~mMask;
         const std::uint64_t k = mIndex.key(x, y, z);
-        const char* p = reinterpret_cast<const char*>(mRead[BrickIndex::macroOf(k)] + BrickIndex::offsetOf(k));
+        const char* p =
+            reinterpret_cast<const char*>(mRead[BrickIndex::macroOf(k)] + BrickIndex::offsetOf(k));
         const std::size_t bytes = sizeof(T) << 3 * mIndex.layout().brickLog2;
         for (std::size_t b = 0; b < bytes; b += 64) __builtin_prefetch(p + b);
         const int bn = mIndex.layout().brickLog2;
@@ -289,7 +295,9 @@ public:
     }
     bool macroAllocated(std::size_t macro) const { return bool(mMacros[macro]); }
     /// Bytes held by voxels (allocated macrobricks and the background block).
-    std::size_t voxelBytes() const { return (allocatedMacrobricks() + 1) * mIndex.macroVoxels() * sizeof(T); }
+    std::size_t voxelBytes() const {
+        return (allocatedMacrobricks() + 1) * mIndex.macroVoxels() * sizeof(T);
+    }
 
 private:
     T* writable(std::uint32_t macro) {
@@ -343,9 +351,9 @@ private:
 
     BrickIndex mIndex;
     T mBackground;
-    std::unique_ptr<T[]> mBackgroundBlock;           // read by unallocated macrobricks
-    std::vector<std::unique_ptr<T[]>> mMacros;        // owned blocks, null when unallocated
-    std::vector<const T*> mRead;                      // per macrobrick: its block or the background's
+    std::unique_ptr<T[]> mBackgroundBlock;      // read by unallocated macrobricks
+    std::vector<std::unique_ptr<T[]>> mMacros;  // owned blocks, null when unallocated
+    std::vector<const T*> mRead;                // per macrobrick: its block or the background's
     std::vector<T> mBrickMin, mBrickMax, mMacroMin, mMacroMax;
     int mStride[3];
     int mMask;

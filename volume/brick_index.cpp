@@ -33,8 +33,10 @@ BrickIndex::BrickIndex(glm::ivec3 size, BrickLayout layout) : mSize(size), mLayo
     for (int a = 0; a < 3; ++a) {
         mF[a].resize(std::size_t(size[a]));
         for (std::uint64_t v = 0; v < std::uint64_t(size[a]); ++v) {
-            const std::uint64_t inBrick = v & (n - 1), brick = (v >> bn) & (m - 1), macro = v >> (bn + mn);
-            mF[a][v] = (macro * macroStride[a] << 32) + brick * brickStride[a] + inBrick * voxelStride[a];
+            const std::uint64_t inBrick = v & (n - 1), brick = (v >> bn) & (m - 1),
+                                macro = v >> (bn + mn);
+            mF[a][v] =
+                (macro * macroStride[a] << 32) + brick * brickStride[a] + inBrick * voxelStride[a];
         }
     }
 }

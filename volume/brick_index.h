@@ -8,10 +8,9 @@
 /// This is the non-template part of volume/brick_grid.h.
 #pragma once
 
-#include <glm/vec3.hpp>
-
 #include <cstddef>
 #include <cstdint>
+#include <glm/vec3.hpp>
 #include <vector>
 
 namespace kerf {
@@ -35,21 +34,25 @@ public:
     static std::uint32_t macroOf(std::uint64_t key) { return std::uint32_t(key >> 32); }
     static std::uint32_t offsetOf(std::uint64_t key) { return std::uint32_t(key); }
 
-    glm::ivec3 size() const { return mSize; }              ///< voxels per axis, as asked
-    glm::ivec3 brickCount() const { return mBricks; }      ///< bricks per axis (padded up)
-    glm::ivec3 macroCount() const { return mMacros; }      ///< macrobricks per axis (padded up)
+    glm::ivec3 size() const { return mSize; }          ///< voxels per axis, as asked
+    glm::ivec3 brickCount() const { return mBricks; }  ///< bricks per axis (padded up)
+    glm::ivec3 macroCount() const { return mMacros; }  ///< macrobricks per axis (padded up)
     BrickLayout layout() const { return mLayout; }
     int brickSide() const { return 1 << mLayout.brickLog2; }
     int macroSide() const { return 1 << (mLayout.brickLog2 + mLayout.macroLog2); }  ///< in voxels
-    std::size_t macroVoxels() const { return std::size_t(1) << 3 * (mLayout.brickLog2 + mLayout.macroLog2); }
+    std::size_t macroVoxels() const {
+        return std::size_t(1) << 3 * (mLayout.brickLog2 + mLayout.macroLog2);
+    }
     std::size_t macroTotal() const { return std::size_t(mMacros.x) * mMacros.y * mMacros.z; }
     std::size_t brickTotal() const { return std::size_t(mBricks.x) * mBricks.y * mBricks.z; }
     /// The number of brick (bx, by, bz) in a dense x-fastest brick array (per-brick data).
     std::size_t brickNumber(int bx, int by, int bz) const {
-        return std::size_t(bx) + std::size_t(mBricks.x) * (std::size_t(by) + std::size_t(mBricks.y) * bz);
+        return std::size_t(bx) +
+               std::size_t(mBricks.x) * (std::size_t(by) + std::size_t(mBricks.y) * bz);
     }
     std::size_t macroNumber(int mx, int my, int mz) const {
-        return std::size_t(mx) + std::size_t(mMacros.x) * (std::size_t(my) + std::size_t(mMacros.y) * mz);
+        return std::size_t(mx) +
+               std::size_t(mMacros.x) * (std::size_t(my) + std::size_t(mMacros.y) * mz);
     }
 
 private:

@@ -89,8 +89,10 @@ long double BrickedField::valueExtended(const glm::tvec3<long double>& p) const 
         return L(mGrid.get(dx ? i1[0] : i[0], dy ? i1[1] : i[1], dz ? i1[2] : i[2]));
     };
     auto lerp = [](L a, L b, L w) { return a + w * (b - a); };
-    const L c0 = lerp(lerp(at(0, 0, 0), at(1, 0, 0), t[0]), lerp(at(0, 1, 0), at(1, 1, 0), t[0]), t[1]);
-    const L c1 = lerp(lerp(at(0, 0, 1), at(1, 0, 1), t[0]), lerp(at(0, 1, 1), at(1, 1, 1), t[0]), t[1]);
+    const L c0 =
+        lerp(lerp(at(0, 0, 0), at(1, 0, 0), t[0]), lerp(at(0, 1, 0), at(1, 1, 0), t[0]), t[1]);
+    const L c1 =
+        lerp(lerp(at(0, 0, 1), at(1, 0, 1), t[0]), lerp(at(0, 1, 1), at(1, 1, 1), t[0]), t[1]);
     return lerp(c0, c1, t[2]);
 }
 
@@ -158,7 +160,8 @@ std::shared_ptr<const BrickedField> bakeField(std::function<double(const Vec3&)>
                 for (int x = 0; x < size.x; ++x) {
                     const Vec3 p = origin + h * Vec3(x, y, z);
                     const double v = f(p);
-                    if (!std::isfinite(v) || std::fabs(v) > double(std::numeric_limits<float>::max())) {
+                    if (!std::isfinite(v) ||
+                        std::fabs(v) > double(std::numeric_limits<float>::max())) {
                         std::ostringstream m;
                         m.precision(17);
                         m << "bake: the function is " << v << " at (" << p.x << ", " << p.y << ", "

@@ -6,12 +6,12 @@
 /// everywhere).
 #pragma once
 
+#include <functional>
+#include <memory>
+
 #include "csg/scalar_field.h"
 #include "csg/types.h"
 #include "volume/brick_grid.h"
-
-#include <functional>
-#include <memory>
 
 namespace kerf {
 

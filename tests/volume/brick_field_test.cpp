@@ -1,13 +1,13 @@
 // The baked field (volume/bricked_field.h) against closed forms: a linear function comes back
 // exactly, range() holds every value of random boxes, the Lipschitz bound holds between random
 // points, the bake is the same on one thread as on many, and bad input is refused.
-#include "volume/bricked_field.h"
-
-#include <catch2/catch.hpp>
 #include <tbb/task_arena.h>
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
+
+#include "volume/bricked_field.h"
 
 using namespace kerf;
 
@@ -15,7 +15,8 @@ namespace {
 
 /// A smooth field with several scales, some negative values.
 double wavy(const Vec3& p) {
-    return std::sin(3.1 * p.x + 0.3) * std::cos(2.3 * p.y - 0.7) + 0.5 * std::sin(5.7 * p.z + 1.1 * p.x) + 0.2;
+    return std::sin(3.1 * p.x + 0.3) * std::cos(2.3 * p.y - 0.7) +
+           0.5 * std::sin(5.7 * p.z + 1.1 * p.x) + 0.2;
 }
 
 Vec3 randomIn(std::mt19937& rng, const Bounds3& b) {
@@ -70,7 +71,8 @@ TEST_CASE("BrickedField::range") {
     // reaching beyond it; every value at random points of the box must lie in range(box).
     const Bounds3 domain{Vec3(-1.0, -0.5, 0.0), Vec3(1.0, 1.0, 1.3)};
     const auto field = bakeField(wavy, domain, 40);
-    const auto density = bakeField([](const Vec3& p) { return std::max(0.0, wavy(p)); }, domain, 40);
+    const auto density =
+        bakeField([](const Vec3& p) { return std::max(0.0, wavy(p)); }, domain, 40);
     std::mt19937 rng(17);
     std::uniform_real_distribution<double> scale(-6.0, 1.0);
     const Bounds3 around{domain.lo - 0.3, domain.hi + 0.3};
@@ -78,8 +80,10 @@ TEST_CASE("BrickedField::range") {
         const Vec3 c = randomIn(rng, around);
         const Vec3 half = Vec3(std::exp2(scale(rng)), std::exp2(scale(rng)), std::exp2(scale(rng)));
         const Bounds3 box{c - half, c + half};
-        const Interval r = field->range({box.lo.x, box.hi.x}, {box.lo.y, box.hi.y}, {box.lo.z, box.hi.z});
-        const Interval d = density->range({box.lo.x, box.hi.x}, {box.lo.y, box.hi.y}, {box.lo.z, box.hi.z});
+        const Interval r =
+            field->range({box.lo.x, box.hi.x}, {box.lo.y, box.hi.y}, {box.lo.z, box.hi.z});
+        const Interval d =
+            density->range({box.lo.x, box.hi.x}, {box.lo.y, box.hi.y}, {box.lo.z, box.hi.z});
         CHECK(d.lo >= 0.0);  // a density's minorant stays non-negative
         for (int i = 0; i < 200; ++i) {
             const Vec3 p = randomIn(rng, box);
@@ -89,7 +93,8 @@ TEST_CASE("BrickedField::range") {
         }
         // The corners exactly (where a sample uses the edge of the index range).
         for (int k = 0; k < 8; ++k) {
-            const Vec3 p(k & 1 ? box.hi.x : box.lo.x, k & 2 ? box.hi.y : box.lo.y, k & 4 ? box.hi.z : box.lo.z);
+            const Vec3 p(k & 1 ? box.hi.x : box.lo.x, k & 2 ? box.hi.y : box.lo.y,
+                         k & 4 ? box.hi.z : box.lo.z);
             REQUIRE(r.contains(field->value(p)));
         }
     }
@@ -115,7 +120,8 @@ TEST_CASE("BrickedField::lipschitz") {
     for (int i = 0; i < 20000; ++i) {
         const Vec3 p = randomIn(rng, around), q = randomIn(rng, around);
         const Vec3 d = glm::abs(p - q);
-        REQUIRE(std::fabs(field->value(p) - field->value(q)) <= l * (d.x + d.y + d.z) * (1.0 + 1e-12) + 1e-15);
+        REQUIRE(std::fabs(field->value(p) - field->value(q)) <=
+                l * (d.x + d.y + d.z) * (1.0 + 1e-12) + 1e-15);
         Vec3 g;
         field->valueGradient(p, g);
         REQUIRE(std::fabs(g.x) <= l * (1.0 + 1e-12));
@@ -135,7 +141,8 @@ TEST_CASE("bakeField") {
         REQUIRE(single->grid().size() == s);
         for (int z = 0; z < s.z; ++z)
             for (int y = 0; y < s.y; ++y)
-                for (int x = 0; x < s.x; ++x) REQUIRE(single->grid().get(x, y, z) == many->grid().get(x, y, z));
+                for (int x = 0; x < s.x; ++x)
+                    REQUIRE(single->grid().get(x, y, z) == many->grid().get(x, y, z));
         CHECK(single->lipschitz() == many->lipschitz());
     }
     SECTION("the sampled box holds the box") {
@@ -160,9 +167,11 @@ TEST_CASE("bakeField") {
         CHECK_THROWS_AS(bakeField(wavy, unit, 5000), std::invalid_argument);
         CHECK_THROWS_AS(bakeField(wavy, Bounds3{}, 10), std::invalid_argument);
         CHECK_THROWS_AS(bakeField(wavy, {Vec3(0.0), Vec3(0.0)}, 10), std::invalid_argument);
-        CHECK_THROWS_AS(bakeField(wavy, {Vec3(0.0), Vec3(kInf, 1.0, 1.0)}, 10), std::invalid_argument);
-        CHECK_THROWS_WITH(bakeField([](const Vec3& p) { return p.x > 0.5 ? std::nan("") : 1.0; }, unit, 5),
-                          Catch::Contains("at (0.75, 0, 0)"));
+        CHECK_THROWS_AS(bakeField(wavy, {Vec3(0.0), Vec3(kInf, 1.0, 1.0)}, 10),
+                        std::invalid_argument);
+        CHECK_THROWS_WITH(
+            bakeField([](const Vec3& p) { return p.x > 0.5 ? std::nan("") : 1.0; }, unit, 5),
+            Catch::Contains("at (0.75, 0, 0)"));
         CHECK_THROWS_WITH(bakeField([](const Vec3& p) { return p.z > 0.7 ? 1e300 : 1.0; }, unit, 5),
                           Catch::Contains("at (0, 0, 0.75)"));
     }

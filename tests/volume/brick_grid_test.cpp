@@ -5,7 +5,6 @@
 #include "volume/brick_grid.h"
 
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <random>
 #include <set>
@@ -32,7 +31,9 @@ struct Pair {
             for (int y = 0; y < s.y; ++y)
                 for (int x = 0; x < s.x; ++x) grid.set(x, y, z, at(x, y, z));
     }
-    float at(int x, int y, int z) const { return flat[std::size_t(x) + std::size_t(s.x) * (y + std::size_t(s.y) * z)]; }
+    float at(int x, int y, int z) const {
+        return flat[std::size_t(x) + std::size_t(s.x) * (y + std::size_t(s.y) * z)];
+    }
 
     /// Trilinear on the flat array: the cell of floor(u) clamped to the last cell, constant
     /// beyond the edges, lerps along x, then y, then z.
@@ -51,8 +52,10 @@ struct Pair {
             return double(at(dx ? i1[0] : i0[0], dy ? i1[1] : i0[1], dz ? i1[2] : i0[2]));
         };
         auto lerp = [](double a, double b, double w) { return a + w * (b - a); };
-        const double y0 = lerp(lerp(v(0, 0, 0), v(1, 0, 0), t[0]), lerp(v(0, 1, 0), v(1, 1, 0), t[0]), t[1]);
-        const double y1 = lerp(lerp(v(0, 0, 1), v(1, 0, 1), t[0]), lerp(v(0, 1, 1), v(1, 1, 1), t[0]), t[1]);
+        const double y0 =
+            lerp(lerp(v(0, 0, 0), v(1, 0, 0), t[0]), lerp(v(0, 1, 0), v(1, 1, 0), t[0]), t[1]);
+        const double y1 =
+            lerp(lerp(v(0, 0, 1), v(1, 0, 1), t[0]), lerp(v(0, 1, 1), v(1, 1, 1), t[0]), t[1]);
         return lerp(y0, y1, t[2]);
     }
 };
@@ -73,10 +76,14 @@ TEST_CASE("BrickIndex::key") {
                     for (int x = 0; x < s.x; ++x) {
                         // The textbook address written with divisions: macrobrick x-fastest,
                         // brick x-fastest inside it, voxel x-fastest inside the brick.
-                        const glm::ivec3 v(x, y, z), macro = v / side, brick = (v % side) / n, in = v % n;
-                        const std::uint64_t macroNumber = macro.x + std::uint64_t(mc.x) * (macro.y + std::uint64_t(mc.y) * macro.z);
-                        const std::uint64_t offset = std::uint64_t(n) * n * n * (brick.x + m * (brick.y + m * brick.z)) +
-                                                     in.x + n * (in.y + std::uint64_t(n) * in.z);
+                        const glm::ivec3 v(x, y, z), macro = v / side, brick = (v % side) / n,
+                                                     in = v % n;
+                        const std::uint64_t macroNumber =
+                            macro.x +
+                            std::uint64_t(mc.x) * (macro.y + std::uint64_t(mc.y) * macro.z);
+                        const std::uint64_t offset =
+                            std::uint64_t(n) * n * n * (brick.x + m * (brick.y + m * brick.z)) +
+                            in.x + n * (in.y + std::uint64_t(n) * in.z);
                         const std::uint64_t k = ix.key(x, y, z);
                         REQUIRE(BrickIndex::macroOf(k) == macroNumber);
                         REQUIRE(BrickIndex::offsetOf(k) == offset);
@@ -102,7 +109,8 @@ TEST_CASE("BrickGrid::get") {
                     for (int x = 0; x < s.x; ++x) g.set(x, y, z, x + s.x * (y + s.y * z));
             for (int z = 0; z < s.z; ++z)
                 for (int y = 0; y < s.y; ++y)
-                    for (int x = 0; x < s.x; ++x) REQUIRE(g.get(x, y, z) == x + s.x * (y + s.y * z));
+                    for (int x = 0; x < s.x; ++x)
+                        REQUIRE(g.get(x, y, z) == x + s.x * (y + s.y * z));
         }
 }
 
@@ -146,7 +154,8 @@ TEST_CASE("BrickGrid::sampleGradient") {
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (int k = 0; k < 2000; ++k) {
-        const glm::ivec3 c(int(u(rng) * (s.x - 1)), int(u(rng) * (s.y - 1)), int(u(rng) * (s.z - 1)));
+        const glm::ivec3 c(int(u(rng) * (s.x - 1)), int(u(rng) * (s.y - 1)),
+                           int(u(rng) * (s.z - 1)));
         const double t[3] = {u(rng), u(rng), u(rng)};
         const double q[3] = {c.x + t[0], c.y + t[1], c.z + t[2]};
         double g[3];
@@ -155,7 +164,8 @@ TEST_CASE("BrickGrid::sampleGradient") {
             double lo[3] = {q[0], q[1], q[2]}, hi[3] = {q[0], q[1], q[2]};
             lo[a] = c[a];
             hi[a] = c[a] + 1;
-            const double expected = p.reference(hi[0], hi[1], hi[2]) - p.reference(lo[0], lo[1], lo[2]);
+            const double expected =
+                p.reference(hi[0], hi[1], hi[2]) - p.reference(lo[0], lo[1], lo[2]);
             CHECK(g[a] == Approx(expected).margin(1e-12));
         }
     }
@@ -174,9 +184,9 @@ TEST_CASE("BrickGrid::allocatedMacrobricks") {
     CHECK(g.get(50, 60, 70) == 0.5f);
     CHECK(g.sample(50.3, 60.2, 70.9) == 0.5);
     g.set(0, 0, 0, 1.0f);
-    g.set(15, 15, 15, 2.0f);   // same macrobrick
-    g.set(16, 0, 0, 3.0f);     // its x neighbour
-    g.set(99, 99, 99, 4.0f);   // the last (partial) one
+    g.set(15, 15, 15, 2.0f);  // same macrobrick
+    g.set(16, 0, 0, 3.0f);    // its x neighbour
+    g.set(99, 99, 99, 4.0f);  // the last (partial) one
     CHECK(g.allocatedMacrobricks() == 3);
     CHECK(g.get(16, 0, 0) == 3.0f);
     CHECK(g.get(17, 0, 0) == 0.5f);
@@ -196,7 +206,8 @@ TEST_CASE("BrickGrid::allocatedMacrobricks") {
                 bool any = false;
                 for (int z = mz * 16; z < std::min(100, mz * 16 + 16) && !any; ++z)
                     for (int y = my * 16; y < std::min(100, my * 16 + 16) && !any; ++y)
-                        for (int x = mx * 16; x < std::min(100, mx * 16 + 16) && !any; ++x) any = inBall(x, y, z);
+                        for (int x = mx * 16; x < std::min(100, mx * 16 + 16) && !any; ++x)
+                            any = inBall(x, y, z);
                 expected += any;
                 CHECK(f.macroAllocated(f.index().macroNumber(mx, my, mz)) == any);
             }
@@ -204,7 +215,8 @@ TEST_CASE("BrickGrid::allocatedMacrobricks") {
     CHECK(expected < 343 / 4);
     for (int z = 0; z < 100; z += 3)
         for (int y = 0; y < 100; y += 5)
-            for (int x = 0; x < 100; ++x) REQUIRE(f.get(x, y, z) == (inBall(x, y, z) ? 1.0f : 0.0f));
+            for (int x = 0; x < 100; ++x)
+                REQUIRE(f.get(x, y, z) == (inBall(x, y, z) ? 1.0f : 0.0f));
 }
 
 TEST_CASE("BrickGrid::rangeOfVoxels") {
@@ -223,7 +235,8 @@ TEST_CASE("BrickGrid::rangeOfVoxels") {
                 if (lo[a] > hi[a]) std::swap(lo[a], hi[a]);
             }
             const auto r = g.rangeOfVoxels(lo, hi);
-            const glm::ivec3 a = glm::clamp(lo, glm::ivec3(0), s - 1), b = glm::clamp(hi, glm::ivec3(0), s - 1);
+            const glm::ivec3 a = glm::clamp(lo, glm::ivec3(0), s - 1),
+                             b = glm::clamp(hi, glm::ivec3(0), s - 1);
             for (int z = a.z; z <= b.z; ++z)
                 for (int y = a.y; y <= b.y; ++y)
                     for (int x = a.x; x <= b.x; ++x) {
@@ -233,7 +246,8 @@ TEST_CASE("BrickGrid::rangeOfVoxels") {
         }
     };
     check(p.grid);
-    for (int k = 0; k < 200; ++k) p.grid.set(rng() % s.x, rng() % s.y, rng() % s.z, float(rng() % 100) - 50.0f);
+    for (int k = 0; k < 200; ++k)
+        p.grid.set(rng() % s.x, rng() % s.y, rng() % s.z, float(rng() % 100) - 50.0f);
     check(p.grid);
     p.grid.refreshRanges();
     check(p.grid);
