@@ -48,20 +48,24 @@ Profile combine(std::vector<Profile> parts, Op op, Bounds2 bounds) {
     return r;
 }
 
-/// The path as a plain polygon when every segment is a line (and every loop closes), else null.
-std::shared_ptr<const PlainOutline> polygonOutline(const PathShape& shape) {
+/// The path as a plain outline when it has no arcs (lines and Béziers map to lines and
+/// Béziers under any affine map, and the prism crosses them in closed form), else null.
+std::shared_ptr<const PlainOutline> pathOutline(const PathShape& shape) {
+    if (shape.loops.empty()) return nullptr;
+    for (const PathLoop& loop : shape.loops)
+        for (const PathSegment& s : loop.segments)
+            if (s.kind == PathSegment::Kind::Arc) return nullptr;
     auto plain = std::make_shared<PlainOutline>();
-    plain->kind = PlainOutline::Kind::Polygon;
-    for (const PathLoop& loop : shape.loops) {
-        if (loop.segments.size() < 3) return nullptr;
-        std::vector<Vec2> points;
-        for (const PathSegment& s : loop.segments) {
-            if (s.kind != PathSegment::Kind::Line) return nullptr;
-            points.push_back(s.p[0]);
-        }
-        plain->loops.push_back(std::move(points));
-    }
-    return plain->loops.empty() ? nullptr : plain;
+    plain->kind = PlainOutline::Kind::Path;
+    plain->path = shape;
+    return plain;
+}
+
+PathSegment lineSegment(Vec2 a, Vec2 b) {
+    PathSegment s;
+    s.p[0] = a;
+    s.p[1] = b;
+    return s;
 }
 
 /// The plain outline mapped by p ↦ A·p + t, when its image is one: any polygon (or
@@ -91,16 +95,19 @@ std::shared_ptr<const PlainOutline> mappedOutline(const PlainOutline& in, const 
                 out->b = glm::max(p, q);
                 return out;
             }
-            out->kind = PlainOutline::Kind::Polygon;
-            out->loops = {{map(in.a), map(Vec2(in.b.x, in.a.y)), map(in.b), map(Vec2(in.a.x, in.b.y))}};
+        {
+            const Vec2 c[4] = {map(in.a), map(Vec2(in.b.x, in.a.y)), map(in.b), map(Vec2(in.a.x, in.b.y))};
+            out->kind = PlainOutline::Kind::Path;
+            out->path.loops.resize(1);
+            for (int i = 0; i < 4; ++i) out->path.loops[0].segments.push_back(lineSegment(c[i], c[(i + 1) % 4]));
             return out;
-        case PlainOutline::Kind::Polygon:
-            out->kind = PlainOutline::Kind::Polygon;
-            for (const auto& loop : in.loops) {
-                std::vector<Vec2> points;
-                for (const Vec2& q : loop) points.push_back(map(q));
-                out->loops.push_back(std::move(points));
-            }
+        }
+        case PlainOutline::Kind::Path:
+            out->kind = PlainOutline::Kind::Path;
+            out->path = in.path;
+            for (PathLoop& loop : out->path.loops)
+                for (PathSegment& seg : loop.segments)
+                    for (Vec2& q : seg.p) q = map(q);
             return out;
     }
     return nullptr;
@@ -149,7 +156,7 @@ Profile profileRect(Vec2 lo, Vec2 hi) {
 Profile profilePath(PathShape shape) {
     Profile p;
     p.bounds = pathBounds(shape);
-    p.plain = polygonOutline(shape);
+    p.plain = pathOutline(shape);
     auto field = pathField(std::move(shape));
     p.distance = [field](ExprGraph& g, ExprId u, ExprId v) { return g.field(u, v, num(g, 0.0), field); };
     return p;
@@ -241,7 +248,7 @@ NodePtr plainExtrusion(const PlainOutline& plain, double y0, double y1, const No
         case PlainOutline::Kind::Circle:
             return makeCylinder(Vec3(plain.a.x, y0, plain.a.y), Vec3(plain.a.x, y1, plain.a.y), plain.radius);
         case PlainOutline::Kind::Rect: return makeBox(Vec3(plain.a.x, y0, plain.a.y), Vec3(plain.b.x, y1, plain.b.y));
-        case PlainOutline::Kind::Polygon: return makePrism(plain.loops, y0, y1, implicitForm);
+        case PlainOutline::Kind::Path: return makePrism(plain.path, y0, y1, implicitForm);
         case PlainOutline::Kind::None: break;
     }
     return nullptr;

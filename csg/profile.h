@@ -25,11 +25,11 @@ namespace kerf {
 /// A profile that is one plain outline: a straight extrusion of it is a closed-form solid
 /// (a cylinder, a box, a prism: csg/prism.h) rather than an implicit one.
 struct PlainOutline {
-    enum class Kind : uint8_t { None, Circle, Rect, Polygon };
+    enum class Kind : uint8_t { None, Circle, Rect, Path };
     Kind kind = Kind::None;
     Vec2 a{0.0}, b{0.0};  ///< Circle: the centre in a; Rect: lo in a, hi in b
     double radius = 0.0;
-    std::vector<std::vector<Vec2>> loops;  ///< Polygon: closed loops, filled even-odd
+    PathShape path;  ///< Path: lines and Béziers (no arcs), filled even-odd
 };
 
 struct Profile {

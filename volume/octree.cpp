@@ -11,6 +11,7 @@
 #include "volume/octree_build.h"
 
 #include <algorithm>
+#include <functional>
 #include <atomic>
 #include <cmath>
 #include <unordered_map>
@@ -156,7 +157,13 @@ public:
         double t0 = tmin, t1 = tmax;
         if (!clipRayExact(mCube, ray, t0, t1)) return;
         ScratchSpans runSpans(ctx.scratch);
-        SpanSearch s{{&ray, &ctx, t0, t1, slackFor(ray)}, &*runSpans, &out, false, false, {}};
+        SpanSearch s{{&ray, &ctx, t0, t1, slackFor(ray)},
+                     &*runSpans,
+                     &out,
+                     [&](double t) { return mGrid->fullAt(ray.at(t)); },
+                     false,
+                     false,
+                     {}};
         uint64_t steps = 0;
         const bool complete = mGrid->walk(ray, t0, t1, &SpanSearch::visit, &s, steps);
         ctx.stats.cellsVisited += steps;
@@ -277,6 +284,8 @@ private:
     struct SpanSearch : RunWalk {
         SpanList* runSpans;
         SpanList* out;
+        /// Whether the point of the ray at t lies in a full cell.
+        std::function<bool(double)> fullBefore;
         bool anyRun = false;
         /// The last output span ends at a cut (the ray was inside at the run's end); `realEnd`
         /// is where that run's tree ended it (a surface in the margin, or a clip).
@@ -305,8 +314,10 @@ private:
                 // Inside from the search's start through full cells, leaving in the margin
                 // before the first run (a face on the line between a full cell and this
                 // boundary cell): no earlier run holds that span, so this one gives it.
-                if (firstRun && first && sp.in.t <= tmin && sp.out.t > tmin &&
-                    !(sp.out.t > runStart)) {
+                // (The tree is the run's cells' own: before its search range it may differ from
+                // the object, so the span must end in that range, after full cells.)
+                if (firstRun && first && sp.in.t <= lo && sp.out.t > tmin && sp.out.t >= lo &&
+                    !(sp.out.t > runStart) && fullBefore && fullBefore(0.5 * (tmin + lo))) {
                     Span piece = sp;
                     if (!sp.in.isSurface()) piece.in = cutAt(sp.in, tmin);
                     out->push_back(piece);

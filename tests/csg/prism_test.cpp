@@ -177,3 +177,43 @@ TEST_CASE("prism: extruded circles and rectangles are cylinders and boxes, also 
     o.twist = 30;  // not straight: implicit
     CHECK(makeExtrude(notchedPlate(), o)->kind() == NodeKind::Implicit);
 }
+
+TEST_CASE("prism: an outline of Béziers (a glyph, a path) has the implicit's spans") {
+    // A quadratic and a cubic path with a hole, and text: the closed form crosses Béziers by
+    // bisection on their monotone pieces; the implicit isolates the same roots on intervals.
+    PathShape shape;
+    PathLoop outer;
+    PathSegment q;
+    q.kind = PathSegment::Kind::Quadratic;
+    q.p = {Vec2(0, 0), Vec2(2, -1.5), Vec2(4, 0), Vec2(0)};
+    outer.segments.push_back(q);
+    PathSegment c;
+    c.kind = PathSegment::Kind::Cubic;
+    c.p = {Vec2(4, 0), Vec2(5, 2), Vec2(-1, 5), Vec2(0, 0)};  // an S back to the start
+    outer.segments.push_back(c);
+    shape.loops.push_back(outer);
+    PathLoop hole;
+    for (auto [a, b] : {std::pair{Vec2(1, 0.5), Vec2(2, 0.5)}, std::pair{Vec2(2, 0.5), Vec2(1.5, 1.2)},
+                        std::pair{Vec2(1.5, 1.2), Vec2(1, 0.5)}}) {
+        PathSegment l;
+        l.p[0] = a;
+        l.p[1] = b;
+        hole.segments.push_back(l);
+    }
+    shape.loops.push_back(hole);
+    ExtrudeOptions o;
+    o.height = 1.0;
+    const NodePtr prism = makeExtrude(profilePath(shape), o);
+    const NodePtr implicit = implicitOf(prism);
+    std::mt19937_64 rng(22);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int i = 0; i < 3000; ++i) {
+        const Vec3 target(2 + 2.5 * unit(rng), 0.5 + 0.7 * unit(rng), 1.5 + 2.5 * unit(rng));
+        Ray ray;
+        ray.origin = target + 8.0 * glm::normalize(Vec3(unit(rng), unit(rng), unit(rng)));
+        ray.dir = glm::normalize(target - ray.origin);
+        const Traced exact = traced(prism, ray);
+        CHECK(exact.stats.rootSteps == 0);
+        requireSameSpans(exact.spans, traced(implicit, ray).spans, ray);
+    }
+}
