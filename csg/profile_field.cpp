@@ -51,8 +51,7 @@ public:
         if (n.d > 0x1p-30 * scale) {  // p − q is accurate: the distance's own gradient
             gradient = Vec3(sign * away / n.d, 0.0);
         } else {  // on the outline: the segment's normal, turned to point out of the shape
-            const Vec2 probe = n.q + 0x1p-24 * n.size * n.normal;
-            gradient = Vec3(inside(probe) ? -n.normal : n.normal, 0.0);
+            gradient = Vec3(outwardAt(n), 0.0);
         }
         return sign * n.d;
     }
@@ -117,6 +116,23 @@ public:
     }
 
 private:
+    /// An outward unit normal at the outline point n.q: the segment's normal when probes on
+    /// its two sides tell in from out; at a corner (where a probe along one edge's normal
+    /// lands on the other edge) the mean of the directions around q that lead out.
+    Vec2 outwardAt(const Nearest& n) const {
+        const double step = 0x1p-24 * n.size;
+        const bool ahead = inside(n.q + step * n.normal), behind = inside(n.q - step * n.normal);
+        if (ahead != behind) return ahead ? -n.normal : n.normal;
+        Vec2 sum(0.0);
+        for (int k = 0; k < 16; ++k) {
+            const double a = k * (kTwoPi / 16.0) + 0.1;  // off the axes, where edges often lie
+            const Vec2 v(std::cos(a), std::sin(a));
+            sum += inside(n.q + step * v) ? -v : v;
+        }
+        const double len = glm::length(sum);
+        return len > 0.0 ? sum / len : n.normal;
+    }
+
     /// rangeGradient where a Bézier or an arc is nearest to the box's centre: when it is the
     /// only outline within reach of the box, the field there is the signed distance to it,
     /// whose gradient is its outward normal at the feet (csg/path_normals.h bounds those).

@@ -105,3 +105,24 @@ TEST_CASE("pathField gradient enclosures hold on a glyph's outline") {
     const int monotone = checkEnclosures(*f, text.ink.lo - 0.05, text.ink.hi, 0.05, 12, 2.0 * 0x1p-34 * 2.0 + 1e-14);
     CHECK(monotone > 300);
 }
+
+TEST_CASE("pathField gradient on the outline points out, at corners too") {
+    // At a vertex the probe along one edge's normal lands on the other edge; the gradient must
+    // still be a finite unit vector that leads out of the shape.
+    PathShape shape;
+    PathLoop loop;
+    const Vec2 corners[5] = {Vec2(0, 0), Vec2(1, 0), Vec2(1, 2), Vec2(0.5, 1), Vec2(0, 2)};  // one reflex
+    for (int i = 0; i < 5; ++i) loop.segments.push_back(line(corners[i], corners[(i + 1) % 5]));
+    shape.loops.push_back(loop);
+    const auto f = pathField(shape);
+    for (const Vec2 q : corners) {
+        Vec3 g;
+        f->valueGradient(Vec3(q, 0.0), g);
+        INFO("corner (" << q.x << "," << q.y << ") g=(" << g.x << "," << g.y << ")");
+        REQUIRE(std::isfinite(g.x));
+        REQUIRE(std::isfinite(g.y));
+        CHECK(glm::length(Vec2(g)) == Approx(1.0));
+        // A step along g leaves the shape; a step against it enters (or stays on) it.
+        CHECK(f->value(Vec3(q + 1e-6 * Vec2(g), 0.0)) > 0.0);
+    }
+}
