@@ -77,6 +77,10 @@ double ratioTracking(const Medium& medium, const Ray& ray, const MediumPath& pat
         if (p.t0 >= tEnd) break;
         const double end = std::min(p.t1, tEnd);
         T *= std::exp(-p.control * (end - p.t0));
+        if (T < kRouletteThreshold) {
+            if (rng.next() * kRouletteThreshold >= T) return 0.0;
+            T = kRouletteThreshold;
+        }
         const double residual = p.majorant - p.control;
         if (!(residual > 0.0)) continue;  // a constant piece: exact
         for (double t = p.t0;;) {
@@ -85,6 +89,12 @@ double ratioTracking(const Medium& medium, const Ray& ray, const MediumPath& pat
             const double sigma = std::clamp(extinctionAt(medium, ray.at(t)), p.control, p.majorant);
             T *= 1.0 - (sigma - p.control) / residual;
             if (!(T > 0.0)) return 0.0;
+            // Russian roulette: an estimate this small goes on with probability T/threshold
+            // as the threshold itself, so the mean stays T and thick media stop early.
+            if (T < kRouletteThreshold) {
+                if (rng.next() * kRouletteThreshold >= T) return 0.0;
+                T = kRouletteThreshold;
+            }
         }
     }
     return T;
@@ -123,6 +133,7 @@ double marchTransmittance(const Medium& medium, const Ray& ray, const MediumPath
         for (int k = 0; k < n; ++k) {
             const double a = p.t0 + k * h;
             tau += extinctionAt(medium, ray.at(a + 0.5 * h)) * h;
+            if (tau > kMarchOpaqueDepth && !tauError) return 0.0;
             if (tauError) {
                 // The step's true depth and its midpoint estimate both lie in [lo, hi]·h.
                 Interval box[3];

@@ -96,6 +96,7 @@ Vec3 WhittedIntegrator::marchMedium(const Ray& ray, double tEnd, const Vec3& beh
             const double absorbed = -std::expm1(-sigma * h);
             L += (T * absorbed) * (m.emission + m.albedo * scatteredLight(x, ray.dir, ctx, rng));
             T *= 1.0 - absorbed;
+            if (T < std::exp(-kMarchOpaqueDepth)) return L;  // what is behind adds < 1e-6
         }
     }
     return L + T * behind;
