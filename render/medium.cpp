@@ -81,8 +81,10 @@ double ratioTracking(const Medium& medium, const Ray& ray, const MediumPath& pat
             if (rng.next() * kRouletteThreshold >= T) return 0.0;
             T = kRouletteThreshold;
         }
-        const double residual = p.majorant - p.control;
-        if (!(residual > 0.0)) continue;  // a constant piece: exact
+        if (!(p.majorant > p.control)) continue;  // a constant piece: exact
+        // Any residual majorant above σt − σc is valid; one that gives at least
+        // kMinRatioSteps points per piece trades a few lookups for much less variance.
+        const double residual = std::max(p.majorant - p.control, kMinRatioSteps / (end - p.t0));
         for (double t = p.t0;;) {
             t -= std::log1p(-rng.next()) / residual;
             if (!(t < end)) break;

@@ -68,6 +68,8 @@ double extinctionAt(const Medium& medium, const Vec3& p);
 
 /// Ratio tracking plays Russian roulette below this transmittance (unbiased).
 constexpr double kRouletteThreshold = 0.05;
+/// Ratio tracking's residual majorant is raised to give at least this many points per piece.
+constexpr double kMinRatioSteps = 4.0;
 /// Marching stops at this optical depth (T < 1e-6): the error it adds is below 1e-6.
 constexpr double kMarchOpaqueDepth = 13.8155;
 
