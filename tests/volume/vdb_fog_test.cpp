@@ -119,7 +119,7 @@ TEST_CASE("vdb_fog/bad files and grids are clear errors") {
     CHECK(loadError(path, "density").empty());
 }
 
-TEST_CASE("vdb_fog/a model reads a fog volume relative to itself; bad ones exit 2") {
+TEST_CASE("vdb_fog/a model reads a fog volume relative to itself, and bad ones exit 2") {
     openvdb::initialize();
     TempDir dir;
     auto sphere = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(1.0f, openvdb::Vec3f(0.0f), 0.1f);
