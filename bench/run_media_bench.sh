@@ -7,10 +7,12 @@
 #     dense and 15× thinner: time, and transmittance error against a fine kerf reference.
 # Times are CPU seconds (user + sys) of one-thread runs, from /usr/bin/time: the machine is
 # shared, so wall time would measure the neighbours.
-# Usage: bench/run_media_bench.sh [KERF] (default build/kerf); writes into bench/out/media/.
+# Usage: bench/run_media_bench.sh [KERF [SECTIONS]] (default build/kerf, sections 123); writes
+# into bench/out/media/.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 KERF=$(realpath "${1:-$ROOT/build/kerf}")
+SECTIONS=${2:-123}
 OUT=$ROOT/bench/out/media
 mkdir -p "$OUT"
 cd "$OUT"
@@ -23,6 +25,7 @@ cpu() {  # cpu LABEL CMD...: runs CMD, prints LABEL and its CPU seconds
     printf "%-44s cpu %6.2f s\n" "$1" "$(awk '{print $1 + $2}' time.txt)"
 }
 
+if [[ $SECTIONS == *1* ]]; then
 echo "== 1. transmittance against closed forms (64x64 parallel rays, T error per pixel)"
 # Rays along +z through 0 <= z <= 2 (fov 0.01 degrees: lengths equal to 4e-9).
 declare -A DENSITY=([constant]="0.6" [ramp]="0.1 + 0.5 * z" [exponential]="1.2 * exp(-z / 0.6)")
@@ -46,6 +49,8 @@ KERF
     done
 done
 
+fi
+if [[ $SECTIONS == *2* ]]; then
 echo "== 2. light shafts: RMSE against a fine reference, 240x135"
 SHAFTS=$ROOT/models/light_shafts.kerf
 shafts() {  # shafts OUT.exr METHOD-LINE SPP
@@ -64,6 +69,8 @@ for step in 0.6 0.3 0.15; do
     echo "    $("$MB" rmse shafts_ref.exr s.exr)"
 done
 
+fi
+if [[ $SECTIONS == *3* ]]; then
 echo "== 3. vdb_render against kerf, fog.vdb (256^3, voxel 2/256), 1024x1024, one core"
 [ -f fog.vdb ] || "$MB" write-fog fog.vdb 256
 CAM='camera { eye <0, 0, 3> look_at <0, 0, 0> up <0, 1, 0> fov 44.8 }'
@@ -87,3 +94,4 @@ for medium in "dense 0.1 1.5 204.8" "thin 0.006667 0.1 13.653"; do
         echo "    kerf T error (same method, albedo 0): $("$MB" trans "ref_$name.exr" t.exr)"
     done
 done
+fi
