@@ -208,7 +208,7 @@ void Lowering::lowerStatement(Statement& s, Scene& scene) {
             if (auto light = lowerLight(s)) scene.lights.push_back(*light);
             break;
         case Statement::Kind::Mist:
-            if (onlyOnce(s, mMist, "mist")) lowerMist(s, scene.mist);
+            if (onlyOnce(s, mMist, "mist")) lowerMist(s, scene);
             break;
         case Statement::Kind::Background:
             if (onlyOnce(s, mBackground, "background")) lowerBackground(s, scene);

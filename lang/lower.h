@@ -243,7 +243,8 @@ private:
     void checkEnergy(const PropertyBlock& b, const Material& m);
     void lowerCamera(const Statement& s, CameraDesc& camera);
     std::optional<Light> lowerLight(const Statement& s);
-    void lowerMist(const Statement& s, Mist& mist);
+    // lower_mist.cpp: homogeneous mist, or a heterogeneous medium when it has a density.
+    void lowerMist(const Statement& s, Scene& scene);
     void lowerRender(const Statement& s, RenderSettings& settings);
     void lowerBackground(const Statement& s, Scene& scene);
     // lower_sections.cpp

@@ -1,5 +1,5 @@
-// Lowering, part 4: materials, the camera, mist and render settings, each validated where it
-// is read (lights and the background: lower_lights.cpp).
+// Lowering, part 4: materials, the camera and render settings, each validated where it is
+// read (lights and the background: lower_lights.cpp; mist: lower_mist.cpp).
 #include "lang/lower.h"
 
 #include "csg/normalize.h"
@@ -186,22 +186,6 @@ void Lowering::lowerCamera(const Statement& s, CameraDesc& camera) {
         error(at("up"), "camera up " + formatVector(camera.up) + " is parallel to the view direction " +
                             formatVector(view),
               "choose an up vector that is not parallel to look_at - eye, e.g. <0, 0, 1>");
-}
-
-void Lowering::lowerMist(const Statement& s, Mist& mist) {
-    const PropertyBlock b(s.properties,
-                          {{"color", PropertyType::Vector}, {"distance", PropertyType::Number, true}}, "mist", s.loc,
-                          mSink);
-    bool ok = b.ok();
-    ok &= readVector(b, "color", mist.color);
-    ok &= readNumber(b, "distance", mist.distance);
-    if (!ok) return;
-    if (!nonNegative(mist.color))
-        error(b.find("color")->valueLoc(), "mist color must not have negative components, got " +
-                                               formatVector(mist.color));
-    if (!(mist.distance > 0))
-        error(b.find("distance")->valueLoc(), "mist distance must be positive, got " + formatNumber(mist.distance));
-    mist.enabled = true;
 }
 
 void Lowering::lowerRender(const Statement& s, RenderSettings& settings) {

@@ -236,6 +236,29 @@ ArenaList<Property> Parser::parseProperties(const SourceLoc& open) {
             properties.push_back(p);
             continue;
         }
+        // mist's `density volume "smoke.vdb" [grid "name"]`: a fog volume, kept as a
+        // Primitive named volume with file (and grid) properties for lowerMist.
+        if (name.text == "density" && checkWord("volume") && peek(1).kind == TokenKind::String) {
+            Solid fog;
+            fog.kind = Solid::Kind::Primitive;
+            fog.loc = peek().pos;
+            fog.name = mArena->intern(next().text);
+            std::vector<Property> fogProps(1);
+            fogProps[0].name = mArena->intern("file");
+            fogProps[0].loc = peek().pos;
+            fogProps[0].expr = store(parsePrimary());
+            if (checkWord("grid") && peek(1).kind == TokenKind::String) {
+                Property grid;
+                grid.name = mArena->intern("grid");
+                grid.loc = next().pos;
+                grid.expr = store(parsePrimary());
+                fogProps.push_back(grid);
+            }
+            fog.properties = list(fogProps);
+            p.solid = store(fog);
+            properties.push_back(p);
+            continue;
+        }
         // A property without a value (POV-Ray's `open`), or with a block for a value
         // (`pigment { … }`), is left to the block's check, which knows whether the name is a
         // property at all; the block is skipped.

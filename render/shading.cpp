@@ -34,6 +34,8 @@ double schlick(double n1, double n2, double cosine) {
     return f0 + (1.0 - f0) * (m * m) * (m * m) * m;
 }
 
+}  // namespace
+
 /// The light's falloff against the inverse square that sampleLight applies: at distance d
 /// from the light (its centre; an area light's corner region is near enough to one distance
 /// for this to be a scale of its samples, exact for its nearest point as d grows).
@@ -53,6 +55,8 @@ double falloffScale(const Light& light, const Vec3& p) {
                            : std::pow(d, -k);
     return law * d * d;
 }
+
+namespace {
 
 /// The patch of surface a sample stands for where a ray along d (unit) meets a surface of
 /// normal n (unit, facing the ray) after travelling `distance`: the sample's cone is
@@ -95,6 +99,7 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const SceneGeometry& ge
       mMaxDepth(std::max(0, maxDepth)) {
     for (const Material& m : scene.materials)
         if (m.transmit > 0) mAnyTransmissive = true;
+    mMedium = scene.medium.enabled();
     for (const Light& light : scene.lights)
         mLightLattice.push_back(light.samples > 1 ? PixelSampler::latticeGenerator(uint32_t(light.samples)) : 1);
 }
@@ -131,7 +136,10 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
                               double travelled) const {
     const std::optional<Hit> hit = mGeometry.nearestHit(ray, tStart, kInf, ctx.trace);
     if (firstHit) *firstHit = hit;
-    if (!hit) return missColor(glm::normalize(ray.dir));
+    if (!hit) {
+        const Vec3 d = glm::normalize(ray.dir);
+        return mMedium ? throughMedium(Ray{segmentStart, d}, kInf, missColor(d), depth, ctx) : missColor(d);
+    }
 
     const Material& m = material(hit->material);
     const Vec3 p = ray.at(hit->t);
@@ -199,6 +207,7 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
 
     // Everything seen through a leaving hit travelled the whole segment inside the solid.
     if (!hit->entering) c *= beer(m.absorb, length);
+    if (mMedium) c = throughMedium(Ray{segmentStart, d}, length, c, depth, ctx);
     return applyMist(c, length);
 }
 
@@ -262,6 +271,14 @@ Vec3 WhittedIntegrator::directLight(const Material& m, const Vec3& albedo, const
 }
 
 Vec3 WhittedIntegrator::transmittance(const Ray& ray, double tmax, ShadingContext& ctx) const {
+    const Vec3 pass = surfaceTransmittance(ray, tmax, ctx);
+    if (!mMedium || maxComponent(pass) <= 0.0) return pass;
+    MediumRandom rng(mediumSeed(ctx, ray, 2));
+    return pass * mediumTransmittance(mScene.medium, Ray{ray.origin, glm::normalize(ray.dir)},
+                                      tmax * glm::length(ray.dir), rng);
+}
+
+Vec3 WhittedIntegrator::surfaceTransmittance(const Ray& ray, double tmax, ShadingContext& ctx) const {
     if (!mAnyTransmissive)
         return mShadowGeometry.occluded(ray, 0.0, tmax, ctx.trace) ? Vec3(0.0) : Vec3(1.0);
 

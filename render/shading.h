@@ -16,7 +16,11 @@
 ///    it for the whole segment: scaled by exp(−absorb·length), absorb of that hit's material.
 ///  - shadows: opaque surfaces block; a transmissive surface crossed multiplies by
 ///    color·transmit, and the length inside it by exp(−absorb·length). No refraction of shadow
-///    rays (Whitted), and mist does not dim lights.
+///    rays (Whitted), and homogeneous mist does not dim lights.
+///  - a heterogeneous medium (scene/medium.h, render/shading_medium.cpp) dims every segment
+///    (camera, reflected, refracted and shadow rays) by its transmittance and adds the light
+///    it scatters once toward the viewer (point, directional, area and sphere lights, with
+///    shadows, Henyey–Greenstein phase) and its emission. No medium: none of this runs.
 ///  - mist: every segment of length d blends c → mist + (c − mist)·exp(−d/distance); a miss
 ///    takes the mist colour.
 ///  - recursion stops at maxDepth bounces or when a ray's weight is below kMinRayWeight in
@@ -32,6 +36,7 @@
 #include "scene/scene.h"
 #include "csg/scene_geometry.h"
 #include "csg/trace_context.h"
+#include "render/medium.h"
 #include "render/sampler.h"
 
 #include <cstdint>
@@ -64,6 +69,12 @@ struct ShadingContext {
         return sampler ? sampler->get2D(pixel, sample, dim) : SubPixel{};
     }
 };
+
+/// The light's falloff against the inverse square that sampleLight applies, at p.
+double falloffScale(const Light& light, const Vec3& p);
+
+/// The sampler dimension a bounce's medium scattering distance draws from.
+inline uint32_t mediumSampleDim(int depth) { return (1u << 29) + uint32_t(depth); }
 
 /// Secondary rays whose weight is below this in every channel are not traced.
 constexpr double kMinRayWeight = 1e-3;
@@ -110,6 +121,20 @@ private:
                      const Vec3& d, double errorBound, int depth, ShadingContext& ctx) const;
     /// The fraction of light that passes from ray.origin along ray.dir (unit) up to tmax.
     Vec3 transmittance(const Ray& ray, double tmax, ShadingContext& ctx) const;
+    /// Only the surfaces' part of transmittance().
+    Vec3 surfaceTransmittance(const Ray& ray, double tmax, ShadingContext& ctx) const;
+    /// `behind` seen through the medium along the unit ray up to tEnd (inf: through its whole
+    /// box), plus the light the medium scatters and emits toward the ray's origin on the way.
+    Vec3 throughMedium(const Ray& ray, double tEnd, const Vec3& behind, int depth,
+                       ShadingContext& ctx) const;
+    /// The same by the March method: deterministic steps.
+    Vec3 marchMedium(const Ray& ray, double tEnd, const Vec3& behind, ShadingContext& ctx,
+                     MediumRandom& rng) const;
+    /// Σ over lights of phase · irradiance · shadow transmittance at x in the medium, for
+    /// light leaving along −d (d the unit ray direction).
+    Vec3 scatteredLight(const Vec3& x, const Vec3& d, ShadingContext& ctx, MediumRandom& rng) const;
+    /// The seed of a medium estimate's random numbers: the pixel sample and the ray's bits.
+    uint64_t mediumSeed(const ShadingContext& ctx, const Ray& ray, uint32_t purpose) const;
     /// What a ray along the unit direction d that hits nothing sees.
     Vec3 missColor(const Vec3& d) const;
     Vec3 applyMist(const Vec3& c, double distance) const;
@@ -120,6 +145,7 @@ private:
     const SceneGeometry& mShadowGeometry;
     int mMaxDepth;
     bool mAnyTransmissive = false;  ///< else shadow rays only ask for any hit
+    bool mMedium = false;           ///< the scene has a heterogeneous medium
     /// Per light: the generator of the rank-1 lattice its `samples` points follow (1 when it
     /// takes one sample).
     std::vector<uint32_t> mLightLattice;

@@ -7,6 +7,7 @@
 
 #include "csg/node.h"
 #include "csg/types.h"
+#include "scene/medium.h"
 #include "scene/pattern.h"
 #include "scene/sampling.h"
 
@@ -144,6 +145,8 @@ struct Scene {
     /// materials[0] is the default (grey, diffuse) that objects without a material get.
     std::vector<Material> materials{Material{}};
     Mist mist;
+    /// A heterogeneous medium (scene/medium.h); disabled (no density) by default.
+    Medium medium;
     Vec3 background{0.0};  ///< the sky's colour where `sky.gradient` is false
     Sky sky;
     std::vector<SectionPlane> sections;
