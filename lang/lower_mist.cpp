@@ -1,13 +1,17 @@
 // Lowering, part 4b: `mist { … }`. Without a density it is the homogeneous mist (scene/scene.h
 // Mist: colour and distance, the cheap special case). With `density EXPR` (in x, y, z) or
 // `density volume "file.vdb" [grid "name"]` it is a heterogeneous medium (scene/medium.h):
-// bounds, extinction, albedo, emission, g, method and step, samples.
+// bounds, extinction, albedo, emission, g, method and step, samples, and `bake N` to trace an
+// expression's density from bricked storage.
 #include "lang/lower.h"
 
 #include "csg/tape.h"
+#include "volume/bricked_field.h"
 #include "volume/vdb_fog.h"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <filesystem>
 
 namespace kerf {
@@ -75,12 +79,13 @@ void Lowering::lowerMist(const Statement& s, Scene& scene) {
                            {"g", PropertyType::Number},
                            {"method", PropertyType::Word},
                            {"step", PropertyType::Number},
-                           {"samples", PropertyType::Number}},
+                           {"samples", PropertyType::Number},
+                           {"bake", PropertyType::Number}},
                           "mist", s.loc, mSink);
     if (!b.ok()) return;
     const Property* density = b.find("density");
-    static const char* const kMediumOnly[] = {"bounds", "min", "max", "extinction", "albedo",
-                                              "emission", "g", "method", "step", "samples"};
+    static const char* const kMediumOnly[] = {"bounds", "min", "max", "extinction", "albedo", "emission",
+                                              "g", "method", "step", "samples", "bake"};
     if (!density) {  // the homogeneous mist
         Mist& mist = scene.mist;
         for (const char* name : kMediumOnly)
@@ -175,6 +180,9 @@ void Lowering::lowerMist(const Statement& s, Scene& scene) {
         for (const Property& p : fog.properties) (p.name == "file" ? file : grid) = &p;
         if (fog.name != "volume" || !file)
             return error(fog.loc, "property 'density' of mist expects an expression in x, y, z or volume \"file.vdb\"");
+        if (const Property* bake = b.find("bake"))
+            return error(bake->loc, "mist bake is for a density written as an expression",
+                         "a fog volume is already a grid");
         const auto fileValue = evaluate(*file->expr, nullptr);
         if (!fileValue) return;
         std::string gridName;
@@ -213,10 +221,22 @@ void Lowering::lowerMist(const Statement& s, Scene& scene) {
             return error(density->expr->start, "property 'density' of mist expects a function of x, y, z, got " +
                                                    typeName(v->type));
         const ExprId root = v->type == Value::Type::Field ? v->field : graph.constant(v->number);
-        // Here a field baked into bricked storage (volume/bricked_field.h, bakeField) would be
-        // chosen in place of the tape for a density too costly to evaluate per point.
-        medium.density = std::make_shared<TapeDensity>(Tape::compile(graph, root));
+        auto exact = std::make_shared<TapeDensity>(Tape::compile(graph, root));
         medium.bounds = *bounds;
+        medium.density = exact;
+        if (const Property* bake = b.find("bake")) {
+            // `bake N`: the density sampled at N points along the box's longest side into
+            // bricked storage (volume/bricked_field.h), traced as its trilinear interpolant: one
+            // lookup per point however costly the expression, majorants from the bricks' maxima.
+            int resolution = 0;
+            if (!readInteger(b, "bake", 2, 4096, resolution)) return;
+            try {
+                medium.density = bakeField([exact](const Vec3& p) { return std::max(0.0, exact->value(p)); },
+                                           medium.bounds, resolution);
+            } catch (const std::invalid_argument& e) {
+                return error(bake->valueLoc(), std::string("cannot bake the mist density: ") + e.what());
+            }
+        }
     }
 
     // The majorant needs a finite bound; negative density the bound can prove is an error,

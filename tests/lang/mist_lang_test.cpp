@@ -3,6 +3,8 @@
 // line:col. Fog volumes from .vdb files: tests/volume/vdb_fog_test.cpp.
 #include "lang_test_util.h"
 
+#include <random>
+
 using namespace kerf;
 using namespace kerf::test;
 
@@ -48,6 +50,29 @@ TEST_CASE("mist: a density expression makes a medium") {
     CHECK(d.scene->medium.method == MediumMethod::Delta);
     CHECK(d.scene->medium.samples == 4);
     CHECK(d.scene->medium.bounds.hi == Vec3(1, 2, 3));
+}
+
+TEST_CASE("mist: bake N samples the density into bricked storage") {
+    // A linear density is its own trilinear interpolant: the baked field equals the expression
+    // within float storage (values ≤ 2, so 2⁻²³·2) at random points; its range bounds it.
+    const Compiled c = compileText("mist { density 0.5 + 0.25 * x + 0.125 * y - 0.0625 * z"
+                                   " bounds box { min <0, 0, 0> max <4, 2, 1> } bake 33 }");
+    INFO(c.sink.format());
+    REQUIRE(c.scene);
+    const Medium& m = c.scene->medium;
+    REQUIRE(m.enabled());
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int i = 0; i < 1000; ++i) {
+        const Vec3 p(4 * u(rng), 2 * u(rng), u(rng));
+        CHECK(m.density->value(p) == Approx(0.5 + 0.25 * p.x + 0.125 * p.y - 0.0625 * p.z).margin(0x1p-22));
+    }
+    const Interval r = m.density->range(Interval(0, 4), Interval(0, 2), Interval(0, 1));
+    CHECK(r.lo <= 0.4375 + 0x1p-22);
+    CHECK(r.hi >= 1.75 - 0x1p-22);
+    const std::string box = " bounds box { min <0, 0, 0> max <1, 1, 1> }";
+    requireOneError("mist { density 1" + box + " bake 1 }", 1, 66, "mist bake must be an integer from 2 to 4096");
+    requireOneError("mist { density volume \"fog.vdb\" bake 64 }", 1, 33, "mist bake is for a density written as an expression");
 }
 
 TEST_CASE("mist: bad properties are errors at their position") {
