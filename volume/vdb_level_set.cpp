@@ -125,7 +125,7 @@ std::shared_ptr<const LevelSetGrid> loadLevelSet(const std::string& path, const 
         if (!chosen) {
             file.close();
             if (!gridName.empty())
-                throw VdbError("it has no grid named '" + gridName + "'; its grids: " + describeGrids(*grids));
+                throw VdbError("it has no grid named '" + gridName + "'; its grids: " + describeGrids(*grids), true);
             throw VdbError("it has no level-set grid; its grids: " + describeGrids(*grids) +
                            "; name one with grid \"name\"");
         }
@@ -134,23 +134,23 @@ std::shared_ptr<const LevelSetGrid> loadLevelSet(const std::string& path, const 
         if (chosen->getGridClass() == openvdb::GRID_FOG_VOLUME) {
             file.close();
             throw VdbError(what + " is a fog volume (grid class fog volume), not a level set: it has "
-                                  "densities, not an inside and an outside");
+                                  "densities, not an inside and an outside", true);
         }
         if (!chosen->isType<FloatGrid>()) {
             file.close();
             throw VdbError(what + " holds " + chosen->valueType() +
-                           " values; a solid needs a float level set");
+                           " values; a solid needs a float level set", true);
         }
         if (!chosen->transform().isLinear()) {
             file.close();
-            throw VdbError(what + " has a frustum (non-affine) transform; only affine grids are supported");
+            throw VdbError(what + " has a frustum (non-affine) transform; only affine grids are supported", true);
         }
         const FloatGrid::ConstPtr grid = openvdb::gridConstPtrCast<FloatGrid>(file.readGrid(name));
         file.close();
         const FloatTree& tree = grid->tree();
         if (!(tree.background() > 0.f))
             throw VdbError(what + " has background " + std::to_string(tree.background()) +
-                           ": a level set's outside must be positive");
+                           ": a level set's outside must be positive", true);
 
         LevelSetInfo info;
         info.file = path;
@@ -166,7 +166,7 @@ std::shared_ptr<const LevelSetGrid> loadLevelSet(const std::string& path, const 
         info.worldFromIndex.offset = Vec3(m(3, 0), m(3, 1), m(3, 2));
 
         const openvdb::CoordBBox box = storedBox(tree);
-        if (box.empty()) throw VdbError(what + " is empty: it has no values besides the background");
+        if (box.empty()) throw VdbError(what + " is empty: it has no values besides the background", true);
         auto result = std::make_shared<const LevelSetGrid>(TreeSource(tree, box), std::move(info));
         if (result->insideBounds().empty())
             throw VdbError(what + " has no value ≤ 0, so no inside (is it a fog volume without its class?)");

@@ -15,7 +15,13 @@ namespace kerf {
 /// which the caller's diagnostic names).
 class VdbError : public std::runtime_error {
 public:
-    using std::runtime_error::runtime_error;
+    explicit VdbError(const std::string& what, bool aboutGrid = false)
+        : std::runtime_error(what), mAboutGrid(aboutGrid) {}
+    /// The file was read, and the chosen (or named) grid is what is wrong.
+    bool aboutGrid() const { return mAboutGrid; }
+
+private:
+    bool mAboutGrid;
 };
 
 /// The float level-set grid `gridName` of the file at `path`; with an empty name, the first
