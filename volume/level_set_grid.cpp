@@ -86,8 +86,19 @@ LevelSetGrid::LevelSetGrid(const Source& source, LevelSetInfo info) : mInfo(std:
                             g.lo = std::min(g.lo, b.lo);
                             g.hi = std::max(g.hi, b.hi);
                             if (b.lo <= 0.f) {
-                                const Vec3 lo(mLo[0] + bx * kBlock, mLo[1] + by * kBlock, mLo[2] + bz * kBlock);
-                                mInsideBounds.extend(Bounds3{lo, lo + Vec3(kBlock)});
+                                // f ≤ 0 only in cells with a corner ≤ 0: within a cell of those samples.
+                                const Vec3 origin(mLo[0] + bx * kBlock, mLo[1] + by * kBlock, mLo[2] + bz * kBlock);
+                                Bounds3 samples;
+                                if (b.brick < 0) {
+                                    samples = Bounds3{Vec3(0.0), Vec3(kBlock)};
+                                } else {
+                                    for (int k = 0; k < kSide; ++k)
+                                        for (int j = 0; j < kSide; ++j)
+                                            for (int i = 0; i < kSide; ++i)
+                                                if (brick[(k * kSide + j) * kSide + i] <= 0.f)
+                                                    samples.extend(Vec3(i, j, k));
+                                }
+                                mInsideBounds.extend(Bounds3{origin + samples.lo - Vec3(1.0), origin + samples.hi + Vec3(1.0)});
                             }
                         }
                 // A group of one constant stores no blocks.
