@@ -24,6 +24,7 @@ public:
         for (int a = 0; a < 3; ++a) {
             mO[a] = ray.origin[a] - grid.mLo[a];
             mD[a] = ray.dir[a];
+            mInv[a] = 1.0 / mD[a];  // ±inf for 0: never used, the axis never steps
         }
     }
 
@@ -60,8 +61,9 @@ private:
     bool dda(double size, const int lo[3], const int hi[3], double t0, double t1, F&& f) const {
         int c[3], step[3];
         double next[3];
+        const double inv = 1.0 / size;  // a power of two: exact
         for (int a = 0; a < 3; ++a) {
-            const double p = (mO[a] + t0 * mD[a]) / size;
+            const double p = (mO[a] + t0 * mD[a]) * inv;
             c[a] = std::clamp(p >= lo[a] ? int(std::floor(p)) : lo[a], lo[a], hi[a] - 1);
             step[a] = mD[a] > 0 ? 1 : (mD[a] < 0 ? -1 : 0);
             next[a] = boundary(a, c[a], step[a], size);
@@ -79,10 +81,12 @@ private:
         }
     }
 
-    /// Where the ray leaves cell c along axis a (inf when it never does).
+    /// Where the ray leaves cell c along axis a (inf when it never does). A multiply by the
+    /// reciprocal, not a division: the walk only orders cells by these, and each cell's cubic
+    /// is solved over the range they give, so a rounding here moves no crossing.
     double boundary(int a, int c, int step, double size) const {
         if (step == 0) return kInf;
-        return ((step > 0 ? c + 1 : c) * size - mO[a]) / mD[a];
+        return ((step > 0 ? c + 1 : c) * size - mO[a]) * mInv[a];
     }
 
     bool block(const LevelSetGrid::Group& group, const int* b, double t0, double t1) {
@@ -243,7 +247,7 @@ private:
     const LevelSetGrid& mGrid;
     bool mFirstOnly;
     std::vector<LevelSetCrossing>& mOut;
-    double mO[3], mD[3];
+    double mO[3], mD[3], mInv[3];
     bool mKnown = false, mInside = false, mStartInside = false;
 };
 
