@@ -119,6 +119,16 @@ TEST_CASE("volume lang: kerf check reports the grid, and exits 2 on a bad volume
                                                    "grid 'density' is a fog volume"));
     CHECK_THAT(fog.err, Catch::Matchers::Contains("object volume \"many.vdb\" grid \"density\";\n"));
     CHECK_THAT(fog.err, Catch::Matchers::Contains("^"));
+    f.dir.write("vel.kerf", "object volume \"many.vdb\" grid \"vel\";\n");
+    const KerfRun vel = runKerf(f.dir, {"check", "vel.kerf"});
+    CHECK(vel.exitCode == 2);
+    CHECK_THAT(vel.err, Catch::Matchers::Contains("vel.kerf:1:31: error: cannot use volume 'many.vdb' as a solid: "
+                                                   "grid 'vel' holds vec3s values"));
+    f.dir.write("nogrid.kerf", "object volume \"many.vdb\" grid \"sdf\";\n");
+    const KerfRun nogrid = runKerf(f.dir, {"check", "nogrid.kerf"});
+    CHECK(nogrid.exitCode == 2);
+    CHECK_THAT(nogrid.err, Catch::Matchers::Contains("nogrid.kerf:1:31: error: cannot use volume 'many.vdb' as a "
+                                                      "solid: it has no grid named 'sdf'; its grids: 'density'"));
     f.dir.write("missing.kerf", "object volume \"nothing.vdb\";\n");
     const KerfRun missing = runKerf(f.dir, {"check", "missing.kerf"});
     CHECK(missing.exitCode == 2);
