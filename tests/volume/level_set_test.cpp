@@ -213,6 +213,35 @@ TEST_CASE("LevelSet/difference with a box", "[volume]") {
     CHECK(std::fabs(spans[0].out.t - (3.0 + half)) <= 2 * bound);
 }
 
+TEST_CASE("LevelSet/rays that start inside leave once; spans agree with firstSurface", "[volume]") {
+    test::ScratchFolder dir;
+    const double radius = 1.0, voxel = 0.05;
+    test::writeGrids(dir.file("s.vdb"), {test::sphereGrid(radius, openvdb::Vec3f(0.f), voxel)});
+    const NodePtr solid = levelSetSolid(loadLevelSet(dir.file("s.vdb")));
+    const double bound = voxel * voxel / (4 * (radius - 2 * voxel)) + 1e-5 * voxel;
+    std::mt19937_64 rng(4);
+    std::normal_distribution<double> n;
+    TraceContext ctx;
+    SpanList spans;
+    for (int i = 0; i < 500; ++i) {
+        // From a point inside (|p| ≤ 0.5) in a random direction: inside at t = 0, one exit.
+        const Vec3 p = 0.5 * std::cbrt(std::uniform_real_distribution<double>(0, 1)(rng)) *
+                       glm::normalize(Vec3(n(rng), n(rng), n(rng)));
+        const Ray ray{p, glm::normalize(Vec3(n(rng), n(rng), n(rng)))};
+        solid->spans(ray, 0.0, kInf, ctx, spans);
+        REQUIRE(spans.size() == 1);
+        CHECK_FALSE(spans[0].in.isSurface());  // the clip at t = 0
+        CHECK(spans[0].in.t == 0.0);
+        CHECK(std::fabs(glm::length(ray.at(spans[0].out.t)) - radius) <= bound);
+        Boundary hit;
+        bool entering = true;
+        REQUIRE(solid->firstSurface(ray, 0.0, kInf, ctx, hit, entering));
+        CHECK_FALSE(entering);
+        CHECK(hit.t == spans[0].out.t);
+        CHECK(glm::dot(hit.normal, ray.dir) > 0.0);  // outward, along the leaving ray
+    }
+}
+
 TEST_CASE("LevelSet/implicit form: range holds the values, inside by sign", "[volume]") {
     test::ScratchFolder dir;
     test::writeGrids(dir.file("t.vdb"), {test::torusGrid(1.0, 0.3, 0.05)});
