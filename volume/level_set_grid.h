@@ -45,9 +45,10 @@ public:
     static constexpr int kBlock = 8;   ///< cells per block side
     static constexpr int kGroup = 16;  ///< blocks per group side
 
-    /// Samples come from `sample(i, j, k)` for the integer points of [lo, lo + 8·blocks]; a block
-    /// whose 9³ samples are all equal to its `constant` (told by `isConstant`) stores no brick.
-    /// `lo` is a multiple of 8; outside, the value is `background` (> 0).
+    /// The samples by block, for the constructor: blocks (bx, by, bz) cover the integer points
+    /// of [lo, lo + 8·blocks]; beyond them the value is `background` (> 0), which the samples on
+    /// the faces of that box should be too (the loader pads by a block), so walks start and end
+    /// outside.
     struct Source {
         std::array<int32_t, 3> lo{};      ///< the first sample, a multiple of kBlock
         std::array<int32_t, 3> blocks{};  ///< blocks along each axis (≥ 1)
