@@ -105,6 +105,20 @@ LevelSetGrid::LevelSetGrid(const Source& source, LevelSetInfo info) : mInfo(std:
                 if (anyBrick || g.lo != g.hi) {
                     g.firstBlock = static_cast<int32_t>(mBlockList.size());
                     mBlockList.insert(mBlockList.end(), blocks.begin(), blocks.end());
+                    constexpr int n = kGroup / kTile;
+                    for (int tz = 0; tz < n; ++tz)
+                        for (int ty = 0; ty < n; ++ty)
+                            for (int tx = 0; tx < n; ++tx) {
+                                std::pair<float, float> t(g.hi, g.lo);
+                                for (int z = tz * kTile; z < (tz + 1) * kTile; ++z)
+                                    for (int y = ty * kTile; y < (ty + 1) * kTile; ++y)
+                                        for (int x = tx * kTile; x < (tx + 1) * kTile; ++x) {
+                                            const Block& b = blocks[(z * kGroup + y) * kGroup + x];
+                                            t.first = std::min(t.first, b.lo);
+                                            t.second = std::max(t.second, b.hi);
+                                        }
+                                mTiles.push_back(t);
+                            }
                 } else {
                     g.firstBlock = -1;
                 }
@@ -113,7 +127,7 @@ LevelSetGrid::LevelSetGrid(const Source& source, LevelSetInfo info) : mInfo(std:
 
 uint64_t LevelSetGrid::memoryBytes() const {
     return mGroupList.size() * sizeof(Group) + mBlockList.size() * sizeof(Block) +
-           mBricks.size() * sizeof(float);
+           mTiles.size() * sizeof(mTiles[0]) + mBricks.size() * sizeof(float);
 }
 
 const LevelSetGrid::Block* LevelSetGrid::blockAt(int bx, int by, int bz) const {

@@ -44,6 +44,7 @@ class LevelSetGrid final : public ScalarField {
 public:
     static constexpr int kBlock = 8;   ///< cells per block side
     static constexpr int kGroup = 16;  ///< blocks per group side
+    static constexpr int kTile = 4;    ///< blocks per tile side: a group has 4³ tiles
 
     /// The samples by block, for the constructor: blocks (bx, by, bz) cover the integer points
     /// of [lo, lo + 8·blocks]; beyond them the value is `background` (> 0), which the samples on
@@ -111,6 +112,9 @@ private:
     float mBackground;
     std::vector<Group> mGroupList;
     std::vector<Block> mBlockList;  ///< kGroup³ per group that has any non-constant block
+    /// The min and max of each tile of 4³ blocks, (kGroup / kTile)³ per group in mBlockList
+    /// (in the same order), so a walk crosses empty space inside a group 32 cells at a step.
+    std::vector<std::pair<float, float>> mTiles;
     std::vector<float> mBricks;   ///< 9³ floats per brick
     Bounds3 mInsideBounds;
     uint64_t mBrickCount = 0;

@@ -1,11 +1,12 @@
-// The ray walk of a level set (volume/level_set_grid.h): a DDA over groups, inside a group that
-// can change sign over its blocks, inside a block that can change sign over its cells; a stretch
-// whose samples all have one sign is skipped (the interpolant is a convex combination of its
-// corners there). In a cell whose corners have both signs the interpolant along the ray is a
-// cubic in t; its critical points split the cell's segment into monotone pieces, so a sign
-// change between a piece's ends is exactly one root (found by bracketed regula falsi), and no
-// sign change means no crossing, except at a critical point where the cubic touches zero (a ray
-// grazing the surface): a value there within the evaluation's rounding bound is a double root.
+// The ray walk of a level set (volume/level_set_grid.h): a DDA over groups; inside a group that
+// can change sign, over its tiles of 4³ blocks; inside such a tile, over its blocks; inside such
+// a block, over its cells. A stretch whose samples all have one sign is skipped (the
+// interpolant is a convex combination of its corners there). In a cell whose corners have both
+// signs the interpolant along the ray is a cubic in t; its critical points split the cell's
+// segment into monotone pieces, so a sign change between a piece's ends is exactly one root
+// (found by bracketed regula falsi), and no sign change means no crossing, except at a critical
+// point where the cubic touches zero (a ray grazing the surface): a value there within the
+// evaluation's rounding bound is a double root.
 #include "volume/level_set_grid.h"
 
 #include <algorithm>
@@ -41,10 +42,19 @@ public:
                 mGrid.mGroupList[(size_t(g[2]) * mGrid.mGroups[1] + g[1]) * mGrid.mGroups[0] + g[0]];
             if (group.firstBlock < 0 || group.lo > 0.f || group.hi <= 0.f)
                 return region(a, group.hi <= 0.f);
-            const int blo[3] = {g[0] * kGroup, g[1] * kGroup, g[2] * kGroup};
-            const int bhi[3] = {blo[0] + kGroup, blo[1] + kGroup, blo[2] + kGroup};
-            return dda(double(kBlock), blo, bhi, a, b, [&](const int* c, double ba, double bb) {
-                return block(group, c, ba, bb);
+            // Tiles of 4³ blocks, then the blocks of a tile that can change sign.
+            constexpr int n = kGroup / kTile;
+            const std::pair<float, float>* tiles = &mGrid.mTiles[size_t(group.firstBlock) / (kGroup * kGroup * kGroup) * (n * n * n)];
+            const int tlo[3] = {g[0] * n, g[1] * n, g[2] * n};
+            const int thi[3] = {tlo[0] + n, tlo[1] + n, tlo[2] + n};
+            return dda(double(kTile * kBlock), tlo, thi, a, b, [&](const int* tc, double ta, double tb) {
+                const auto& tile = tiles[((tc[2] - tlo[2]) * n + (tc[1] - tlo[1])) * n + (tc[0] - tlo[0])];
+                if (tile.first > 0.f || tile.second <= 0.f) return region(ta, tile.second <= 0.f);
+                const int blo[3] = {tc[0] * kTile, tc[1] * kTile, tc[2] * kTile};
+                const int bhi[3] = {blo[0] + kTile, blo[1] + kTile, blo[2] + kTile};
+                return dda(double(kBlock), blo, bhi, ta, tb, [&](const int* c, double ba, double bb) {
+                    return block(group, c, ba, bb);
+                });
             });
         });
     }
@@ -52,6 +62,7 @@ public:
 private:
     static constexpr int kBlock = LevelSetGrid::kBlock;
     static constexpr int kGroup = LevelSetGrid::kGroup;
+    static constexpr int kTile = LevelSetGrid::kTile;
     static constexpr int kGroupCells = kBlock * kGroup;
     static constexpr int kSide = kBlock + 1;
 
