@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 
 using namespace kerf;
@@ -17,6 +18,8 @@ using namespace kerf::test;
 namespace fs = std::filesystem;
 
 namespace {
+
+constexpr double kPiArea = 3.14159265358979323846;
 
 /// A folder with models/parts/{sphere,many}.vdb: a sphere of radius 1 (voxel 0.05), and a file
 /// holding a fog volume, a vec3 grid and the sphere.
@@ -134,4 +137,24 @@ TEST_CASE("volume lang: kerf check reports the grid, and exits 2 on a bad volume
     CHECK(missing.exitCode == 2);
     CHECK_THAT(missing.err, Catch::Matchers::Contains("missing.kerf:1:15: error: cannot use volume 'nothing.vdb' as a "
                                                        "solid: no such file"));
+}
+
+TEST_CASE("volume lang: kerf slice of a sphere level set has the circle's area", "[volume]") {
+    VolumeFolder f;
+    fs::copy_file(f.part("sphere.vdb"), f.dir.file("sphere.vdb"));
+    f.dir.write("ball.kerf", "object volume \"sphere.vdb\";\n");
+    const KerfRun run = runKerf(f.dir, {"slice", "ball.kerf", "--plane", "z=0.3", "-o", "cut.svg", "--stats"});
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    const size_t at = run.err.find("total: area ");
+    REQUIRE(at != std::string::npos);
+    const double area = std::stod(run.err.substr(at + 12));
+    // Points of the interpolant's zero set are within the trilinear bound b = h²/(4(R − 2h))
+    // of the unit sphere (voxel 0.05), so in the plane z = 0.3 their radius is between
+    // √((1 − b)² − 0.09) and √((1 + b)² − 0.09); the slice's own tolerance (1e-7 of the
+    // model's size) is far below that.
+    const double b = 0.05 * 0.05 / (4 * 0.9) + 1e-6;
+    const double rlo = std::sqrt((1 - b) * (1 - b) - 0.09), rhi = std::sqrt((1 + b) * (1 + b) - 0.09);
+    CHECK(area >= kPiArea * rlo * rlo);
+    CHECK(area <= kPiArea * rhi * rhi);
 }
