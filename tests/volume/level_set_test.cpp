@@ -80,6 +80,31 @@ TEST_CASE("LevelSet/sphere depth within the trilinear error", "[volume]") {
     CHECK(worst > 0.0);
 }
 
+TEST_CASE("LevelSet/the grid's own transform places it (rotation, translation)", "[volume]") {
+    test::ScratchFolder dir;
+    const double radius = 1.0, voxel = 0.05;
+    auto g = test::sphereGrid(radius, openvdb::Vec3f(0.5f, 0.f, 0.f), voxel);
+    // World = index·h, then turned 90° about z (x → y), then moved by (0, 0, 2).
+    g->transform().postRotate(kPi / 2, openvdb::math::Z_AXIS);
+    g->transform().postTranslate(openvdb::Vec3d(0.0, 0.0, 2.0));
+    test::writeGrids(dir.file("moved.vdb"), {g});
+    const NodePtr solid = levelSetSolid(loadLevelSet(dir.file("moved.vdb")));
+    const Vec3 center(0.0, 0.5, 2.0);
+    const double bound = voxel * voxel / (4 * (radius - 2 * voxel)) + 1e-5 * voxel;
+    std::mt19937_64 rng(8);
+    std::uniform_real_distribution<double> impact(0.0, radius - voxel);
+    for (int i = 0; i < 500; ++i) {
+        const Ray ray = rayPast(rng, center, 5.0, impact(rng));
+        double t;
+        Vec3 normal;
+        bool entering;
+        REQUIRE(firstHit(solid, ray, t, normal, entering));
+        const Vec3 p = ray.at(t);
+        REQUIRE(std::fabs(glm::length(p - center) - radius) <= bound + 1e-9);
+        CHECK(glm::dot(glm::normalize(normal), glm::normalize(p - center)) > 0.999);
+    }
+}
+
 TEST_CASE("LevelSet/grazing rays on a sphere hit where the sphere shrunk by a voxel is hit", "[volume]") {
     test::ScratchFolder dir;
     const double radius = 1.5, voxel = 0.05;
