@@ -8,6 +8,7 @@
 #include "csg/format.h"
 #include "csg/tree_stats.h"
 #include "mesh/mesh_shape.h"
+#include "volume/level_set_grid.h"
 
 #include <CLI/CLI.hpp>
 
@@ -69,7 +70,44 @@ std::vector<const MeshShape*> meshShapes(const Scene& scene) {
     return shapes;
 }
 
+/// The distinct level sets of the scene (`volume "file.vdb"`), in the order objects first use
+/// them; every node visited once.
+std::vector<const LevelSetGrid*> levelSets(const Scene& scene) {
+    std::vector<const LevelSetGrid*> grids;
+    std::unordered_set<const Node*> seen;
+    std::unordered_set<const LevelSetGrid*> seenGrids;
+    std::vector<const Node*> stack;
+    for (auto it = scene.objects.rbegin(); it != scene.objects.rend(); ++it) stack.push_back(it->get());
+    while (!stack.empty()) {
+        const Node* node = stack.back();
+        stack.pop_back();
+        if (!seen.insert(node).second) continue;
+        if (node->kind() == NodeKind::Volume) {
+            const LevelSetGrid* grid = std::get<VolumeParams>(node->params()).grid.get();
+            if (seenGrids.insert(grid).second) grids.push_back(grid);
+        }
+        const NodeSpan children = node->children();
+        for (size_t i = children.size(); i-- > 0;) stack.push_back(children[i].get());
+    }
+    return grids;
+}
+
 }  // namespace
+
+void printVolumeReports(const Scene& scene, std::ostream& out) {
+    for (const LevelSetGrid* grid : levelSets(scene)) {
+        const LevelSetInfo& info = grid->info();
+        const Vec3& h = info.voxelSize;
+        out << "  volume '" << info.file << "' grid '" << info.gridName << "':\n";
+        out << "    voxel size:           " << number(h.x, h.x);
+        if (h.y != h.x || h.z != h.x) out << " x " << number(h.y, h.y) << " x " << number(h.z, h.z);
+        out << "\n";
+        out << "    active voxels:        " << info.activeVoxels << "\n";
+        out << "    bounds (file space):  " << describeBounds(info.worldFromIndex.map(grid->insideBounds()))
+            << "\n";
+        out << "    bricks:               " << grid->brickCount() << " (" << grid->memoryBytes() / 1024 << " KiB)\n";
+    }
+}
 
 void printMeshReports(const Scene& scene, std::ostream& out) {
     for (const MeshShape* shape : meshShapes(scene)) {
@@ -121,6 +159,7 @@ void printSceneSummary(const std::string& model, const Scene& scene, std::ostrea
     out << "  render:      " << r.width << " x " << r.height << ", spp " << r.spp
         << ", max depth " << r.maxDepth << "\n";
     printMeshReports(scene, out);
+    printVolumeReports(scene, out);
 }
 
 int runCheck(const CheckCommandLine& line) {

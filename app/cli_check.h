@@ -29,6 +29,9 @@ void printSceneSummary(const std::string& model, const Scene& scene, std::ostrea
 /// counts (mesh/half_edges.h), whether it is a solid, its first bad edge, its BVH's nodes.
 /// Prints nothing for a scene without meshes.
 void printMeshReports(const Scene& scene, std::ostream& out);
+/// For each level set the scene reads (`volume "file.vdb"`): its grid, voxel size, active
+/// voxels and bounds.
+void printVolumeReports(const Scene& scene, std::ostream& out);
 
 /// Runs the command; returns the exit code (0 valid, 2 with diagnostics otherwise).
 int runCheck(const CheckCommandLine& line);

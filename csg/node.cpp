@@ -43,6 +43,7 @@ const char* nodeKindName(NodeKind kind) {
         case NodeKind::Torus: return "torus";
         case NodeKind::HalfSpace: return "halfspace";
         case NodeKind::Implicit: return "implicit";
+        case NodeKind::Volume: return "volume";
         case NodeKind::Mesh: return "mesh";
         case NodeKind::Transform: return "transform";
         case NodeKind::Material: return "material";

@@ -16,12 +16,13 @@ namespace kerf {
 class Node;
 class Tape;
 class MeshShape;  // mesh/mesh_shape.h
+class LevelSetGrid;  // volume/level_set_grid.h
 using NodePtr = std::shared_ptr<const Node>;
 
 /// Every kind of node. Boolean nodes have one kind per operator.
 // clang-format off: grouped by arity
 enum class NodeKind : uint8_t {
-    Sphere, Box, Cylinder, Cone, Torus, HalfSpace, Implicit, Mesh,  // leaves
+    Sphere, Box, Cylinder, Cone, Torus, HalfSpace, Implicit, Volume, Mesh,  // leaves
     Transform, Material, Motion,                              // one child
     Union, Intersection, Difference, Xor,                     // one or more children
     // Surfaces (csg/surfaces.h): open sheets, never CSG operands. Leaves, then
@@ -52,6 +53,8 @@ struct ImplicitParams { std::shared_ptr<const Tape> tape; Bounds3 bound; };
 /// A triangle mesh, loaded once and shared by every instance; `smooth` shades with the
 /// vertex normals where the file has them.
 struct MeshParams { std::shared_ptr<const MeshShape> shape; bool smooth; };
+/// A level set read from a .vdb file (volume/level_set_grid.h), in the grid's index space.
+struct VolumeParams { std::shared_ptr<const LevelSetGrid> grid; };
 /// The map and the inverse the node keeps (computed once, with care for rounding).
 struct TransformParams { Affine worldFromLocal; Affine localFromWorld; };
 struct MaterialParams { int32_t material; };
@@ -76,7 +79,7 @@ using NodeParams =
     std::variant<SphereParams, BoxParams, CylinderParams, ConeParams, TorusParams,
                  HalfSpaceParams, ImplicitParams, MeshParams, TransformParams, MaterialParams,
                  BooleanParams, MotionParams, DiscParams, TriangleParams, OpenConeParams,
-                 SurfaceParams, InteriorParams>;
+                 SurfaceParams, InteriorParams, VolumeParams>;
 
 /// A node's children: a view of the NodePtrs it holds, valid while the node lives.
 class NodeSpan {

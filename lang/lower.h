@@ -183,6 +183,10 @@ private:
     bool checkSolidOperands(const std::vector<NodePtr>& operands, const std::string& use, SourcePos at);
     /// The same for the objects of a scene with section planes: an object a plane crosses is cut.
     void checkSectionedSurfaces(const Scene& scene);
+    // lower_volume.cpp
+    /// `volume "FILE" grid NAME`: a level set read from a .vdb file (volume/vdb_level_set.h),
+    /// each (file, grid) loaded once per compile and shared by its uses.
+    NodePtr lowerVolume(const Solid& s);
     // lower_surfaces.cpp
     /// `disc`, `triangle`, `surface SOLID`, `clip SURFACE by SOLID` (csg/surfaces.h).
     NodePtr lowerSurface(const Solid& s);
@@ -283,6 +287,8 @@ private:
     /// Mesh files by canonical path: each is loaded once and its shape shared by every use
     /// (null after a failed load, which was reported at its first use).
     std::map<std::string, std::shared_ptr<const MeshShape>> mMeshFiles;
+    /// Level sets by canonical path and grid name (null after a failed load, reported once).
+    std::map<std::pair<std::string, std::string>, std::shared_ptr<const LevelSetGrid>> mVolumeFiles;
     /// The leaves of meshes that are not solids, with where they were written (holding the
     /// node keeps its address from being reused).
     std::unordered_map<const Node*, std::pair<NodePtr, SourcePos>> mOpenMeshes;

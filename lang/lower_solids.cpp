@@ -220,6 +220,7 @@ NodePtr Lowering::lowerPrimitive(const Solid& s) {
     if (s.name == "halfspace") return lowerHalfSpace(s);
     if (s.name == "implicit") return lowerImplicit(s);
     if (s.name == "mesh") return lowerMesh(s);
+    if (s.name == "volume") return lowerVolume(s);
     if (s.name == "disc" || s.name == "triangle" || s.name == "surface" || s.name == "clip") return lowerSurface(s);
     if (s.name == "extrude") return lowerExtrude(s);
     if (s.name == "revolve") return lowerRevolve(s);

@@ -315,6 +315,7 @@ Solid Parser::parseSolid(bool withModifiers) {
         (contains(kStatementWords, t.text) && peek(1).kind != TokenKind::LBrace))
         fail(t.loc, "expected a solid, found " + describe(t), foreignHint(t));
     if (startsMesh()) return parseMesh(withModifiers);
+    if (startsVolume()) return parseVolume(withModifiers);
     if (startsSurfaceOp()) return parseSurfaceOp(withModifiers);
     if (peek(1).kind == TokenKind::LParen && isSolidKind(t.text))  // OpenSCAD's sphere(1)
         fail(peek(1).loc, "expected '{' after '" + t.text + "', found '('", callSyntaxHint(t.text));

@@ -176,6 +176,11 @@ private:
     /// `mesh FILE (smooth BOOL)? modifiers`: a Primitive named "mesh" whose properties are
     /// file and smooth.
     Solid parseMesh(bool withModifiers);
+    /// True at `volume` followed by a file name in quotes (parse_volume.cpp).
+    bool startsVolume();
+    /// `volume "FILE" (grid NAME)? modifiers`: a Primitive named "volume" whose properties are
+    /// file and grid (lowered by lower_volume.cpp).
+    Solid parseVolume(bool withModifiers);
     /// True at `surface` or `clip` followed by a solid (parse_surfaces.cpp).
     bool startsSurfaceOp();
     /// `surface SOLID` or `clip SURFACE by SOLID`: a Primitive named "surface" or "clip"

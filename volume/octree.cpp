@@ -409,7 +409,7 @@ bool hasExternalField(const NodePtr& node) {
     bool found = false;
     forEachDistinct(node, [&](const Node& n) {
         if (found) return;
-        if (n.kind() == NodeKind::Mesh) found = true;
+        if (n.kind() == NodeKind::Mesh || n.kind() == NodeKind::Volume) found = true;  // own walks
         if (n.kind() != NodeKind::Implicit) return;
         for (const TapeInstr& in : std::get<ImplicitParams>(n.params()).tape->instrs())
             if (in.op == Op::Field) found = true;

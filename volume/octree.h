@@ -50,7 +50,7 @@ struct OctreeStats {
 /// Whether `node` holds an implicit leaf.
 bool hasImplicitLeaf(const NodePtr& node);
 
-/// Whether `node` holds a mesh or an implicit whose tape calls an external field (a profile's
+/// Whether `node` holds a mesh, a level set (its own DDA skips space better) or an implicit whose tape calls an external field (a profile's
 /// outline, csg/scalar_field.h). Neither gets an octree: a field's interval enclosure costs a
 /// BVH query per cell and is loose, and one pixel of models/profiles.kerf at tolerance 2e-3
 /// lost its entering crossing under the octree (cause not found; see docs/architecture.md).

@@ -86,6 +86,7 @@ void dump(const NodePtr& n, std::string& out, std::map<const Node*, int>& ids) {
             else if constexpr (std::is_same_v<P, OpenConeParams>) { bits(out, p.a); bits(out, p.b); bits(out, p.r1); bits(out, p.r2); }
             else if constexpr (std::is_same_v<P, SurfaceParams>) {}
             else if constexpr (std::is_same_v<P, InteriorParams>) { out += std::to_string(p.material); }
+            else if constexpr (std::is_same_v<P, VolumeParams>) {}  // the grid: no model reads one
             else { out += std::to_string(static_cast<int>(p.op)); }
         },
         n->params());
