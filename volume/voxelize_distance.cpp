@@ -1,0 +1,83 @@
+// Exact point-to-mesh distances near a mesh: triangles bucketed by 8³-voxel blocks.
+#include "volume/voxelize_distance.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kerf {
+
+double squaredDistanceToTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    // Barycentric regions of the plane: the nearest point is a corner, a point of an edge, or
+    // the projection of p inside the triangle.
+    const Vec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+    auto sq = [&](const Vec3& q) { return glm::dot(p - q, p - q); };
+    if (d1 <= 0.0 && d2 <= 0.0) return sq(a);
+    const Vec3 bp = p - b;
+    const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+    if (d3 >= 0.0 && d4 <= d3) return sq(b);
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return sq(a + ab * (d1 / (d1 - d3)));
+    const Vec3 cp = p - c;
+    const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+    if (d6 >= 0.0 && d5 <= d6) return sq(c);
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return sq(a + ac * (d2 / (d2 - d6)));
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
+        return sq(b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))));
+    const double sum = va + vb + vc;
+    if (!(sum > 0.0)) {  // a triangle without area: its nearest edge
+        const auto seg = [&](const Vec3& u, const Vec3& v) {
+            const Vec3 e = v - u;
+            const double l = glm::dot(e, e);
+            const double t = l > 0.0 ? std::clamp(glm::dot(p - u, e) / l, 0.0, 1.0) : 0.0;
+            return sq(u + e * t);
+        };
+        return std::min({seg(a, b), seg(b, c), seg(c, a)});
+    }
+    return sq(a + ab * (vb / sum) + ac * (vc / sum));
+}
+
+int64_t MeshDistance::blockKey(int64_t i, int64_t j, int64_t k) const {
+    // Block indices stay within ±2^20 (OpenVDB's coordinates are checked to 2^30 voxels).
+    return ((i + (1 << 21)) << 42) | ((j + (1 << 21)) << 21) | (k + (1 << 21));
+}
+
+int64_t MeshDistance::blockOf(double x) const { return int64_t(std::floor(x / mBlock)); }
+
+MeshDistance::MeshDistance(const TriangleMesh& mesh, double voxel, double reach)
+    : mMesh(mesh), mBlock(8.0 * voxel) {
+    mBoxes.reserve(mesh.triangles.size());
+    for (uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+        Bounds3 box;
+        for (uint32_t v : mesh.triangles[t]) box = Bounds3::hull(box, Bounds3{mesh.vertices[v], mesh.vertices[v]});
+        mBoxes.push_back(box);
+        int64_t lo[3], hi[3];
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = blockOf(box.lo[a] - reach);
+            hi[a] = blockOf(box.hi[a] + reach);
+        }
+        for (int64_t i = lo[0]; i <= hi[0]; ++i)
+            for (int64_t j = lo[1]; j <= hi[1]; ++j)
+                for (int64_t k = lo[2]; k <= hi[2]; ++k) mBlocks[blockKey(i, j, k)].push_back(t);
+    }
+}
+
+double MeshDistance::distance(const Vec3& p, double bound) const {
+    const auto found = mBlocks.find(blockKey(blockOf(p.x), blockOf(p.y), blockOf(p.z)));
+    if (found == mBlocks.end()) return bound;
+    double best = bound * bound;
+    for (uint32_t t : found->second) {
+        const Bounds3& box = mBoxes[t];
+        const Vec3 gap = glm::max(glm::max(box.lo - p, p - box.hi), Vec3(0.0));
+        if (glm::dot(gap, gap) >= best) continue;
+        const auto& tri = mMesh.triangles[t];
+        best = std::min(best, squaredDistanceToTriangle(p, mMesh.vertices[tri[0]],
+                                                        mMesh.vertices[tri[1]],
+                                                        mMesh.vertices[tri[2]]));
+    }
+    return std::sqrt(best);
+}
+
+}  // namespace kerf
