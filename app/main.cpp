@@ -6,6 +6,7 @@
 #include "app/cli_mesh.h"
 #include "app/cli_render.h"
 #include "app/cli_slice.h"
+#include "app/cli_voxelize.h"
 #include "app/exit_codes.h"
 #include "io/image.h"
 
@@ -39,6 +40,8 @@ int run(int argc, char** argv) {
     CLI::App* meshCmd = addMeshCommand(cli, meshLine);
     SliceCommandLine sliceLine;
     CLI::App* sliceCmd = addSliceCommand(cli, sliceLine);
+    VoxelizeCommandLine voxelizeLine;
+    CLI::App* voxelizeCmd = addVoxelizeCommand(cli, voxelizeLine);
 
     try {
         cli.parse(argc, argv);
@@ -56,6 +59,7 @@ int run(int argc, char** argv) {
         if (benchCmd->parsed()) return runBench(benchLine);
         if (meshCmd->parsed()) return runMesh(meshLine);
         if (sliceCmd->parsed()) return runSlice(sliceLine);
+        if (voxelizeCmd->parsed()) return runVoxelize(voxelizeLine);
     } catch (const UsageError& e) {
         std::cerr << "kerf: error: " << e.what() << "\n";
         return kExitUsage;
