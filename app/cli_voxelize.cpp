@@ -40,12 +40,12 @@ void printVoxelizeStats(const VoxelizeStats& s, double secondsCompile, double se
         std::snprintf(line, sizeof line,
                       "  %s: %llu active voxels (estimated %llu), dense alternative %.4g voxels "
                       "(%.4g x the active ones); %llu cells classified, %llu boundary blocks of "
-                      "8^3, %llu triangles, %llu distance queries; %.3f s\n",
+                      "8^3, %llu triangles, %llu distance queries; %.3f s (mesh %.3f s, band %.3f s)\n",
                       g.name.c_str(), (unsigned long long)g.activeVoxels,
                       (unsigned long long)g.estimatedVoxels, g.denseVoxels,
                       g.activeVoxels ? g.denseVoxels / double(g.activeVoxels) : 0.0,
                       (unsigned long long)g.cellsClassified, (unsigned long long)g.boundaryBlocks,
-                      (unsigned long long)g.triangles, (unsigned long long)g.distanceQueries, g.seconds);
+                      (unsigned long long)g.triangles, (unsigned long long)g.distanceQueries, g.seconds, g.secondsMesh, g.secondsBand);
         out << line;
     }
     std::snprintf(line, sizeof line, "  time: compile %.3f s, write %.3f s, total %.3f s\n",

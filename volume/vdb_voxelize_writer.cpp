@@ -70,9 +70,10 @@ uint64_t growBand(openvdb::FloatGrid& grid, const TriangleMesh& mesh, const Mesh
         candidates->getNodes(leaves);
         std::vector<std::vector<Found>> found(leaves.size());
         tbb::parallel_for(size_t(0), leaves.size(), [&](size_t i) {
+            uint32_t hint = MeshDistance::kNoHint;  // the last voxel's nearest triangle
             for (auto it = leaves[i]->cbeginValueOn(); it; ++it) {
                 const openvdb::Coord c = it.getCoord();
-                const double d = distance.distance(worldOf(c, voxel), width);
+                const double d = distance.distance(worldOf(c, voxel), width, hint);
                 if (d < width) found[i].push_back({c, signedValue(d, tape, c, voxel)});
             }
         });

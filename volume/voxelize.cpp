@@ -119,19 +119,23 @@ VoxelizeStats voxelizeToFile(const std::vector<NodePtr>& objects, const Voxelize
             MeshExportOptions meshOptions;
             meshOptions.voxel = h;
             MeshExportStats meshStats;
+            const auto tMesh = std::chrono::steady_clock::now();
             try {
                 mesh = exportMesh({objects[p.object]}, meshOptions, meshStats);
             } catch (const MeshInputError& e) {
                 throw VoxelizeInputError(grid.name + ": " + e.what());
             }
+            grid.secondsMesh = secondsSince(tMesh);
             grid.cellsClassified += meshStats.intervalEvaluations;
             grid.boundaryBlocks = meshStats.boundaryBlocks;
             grid.triangles = mesh.triangles.size();
         }
+        const auto tBand = std::chrono::steady_clock::now();
         const LevelSetFile::Added added =
             file.add(grid.name, mesh, h, options.band, *p.tape);
         grid.activeVoxels = added.activeVoxels;
         grid.distanceQueries = added.distanceQueries;
+        grid.secondsBand = secondsSince(tBand);
         grid.seconds = secondsSince(t0);
         stats.grids.push_back(std::move(grid));
     }

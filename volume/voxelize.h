@@ -56,7 +56,9 @@ struct VoxelizedGrid {
     uint64_t boundaryBlocks = 0;   ///< 8³ blocks sampled near the surface
     uint64_t triangles = 0;        ///< of the surface mesh the distances are measured to
     uint64_t distanceQueries = 0;  ///< voxels whose distance was computed
-    double seconds = 0.0;
+    double seconds = 0.0;      ///< all of it: estimate, mesh, band
+    double secondsMesh = 0.0;  ///< classifying, sampling and meshing the surface
+    double secondsBand = 0.0;  ///< the band's distances and the flood fill
 };
 
 /// An object left out, and why (an open surface, an unbounded solid).

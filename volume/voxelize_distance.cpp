@@ -1,10 +1,16 @@
 // Exact point-to-mesh distances near a mesh: triangles bucketed by 8³-voxel blocks.
 #include "volume/voxelize_distance.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
 namespace kerf {
+
+namespace {
+constexpr size_t kCluster = 8;
+}  // namespace
 
 double squaredDistanceToTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
     // Barycentric regions of the plane: the nearest point is a corner, a point of an edge, or
@@ -60,23 +66,71 @@ MeshDistance::MeshDistance(const TriangleMesh& mesh, double voxel, double reach)
         }
         for (int64_t i = lo[0]; i <= hi[0]; ++i)
             for (int64_t j = lo[1]; j <= hi[1]; ++j)
-                for (int64_t k = lo[2]; k <= hi[2]; ++k) mBlocks[blockKey(i, j, k)].push_back(t);
+                for (int64_t k = lo[2]; k <= hi[2]; ++k)
+                    mBlocks[blockKey(i, j, k)].triangles.push_back(t);
     }
+    std::vector<Block*> blocks;
+    blocks.reserve(mBlocks.size());
+    for (auto& [key, block] : mBlocks) blocks.push_back(&block);
+    tbb::parallel_for(size_t(0), blocks.size(), [&](size_t b) {
+        Block& block = *blocks[b];
+        Bounds3 all;
+        for (uint32_t t : block.triangles) all = Bounds3::hull(all, mBoxes[t]);
+        const Vec3 scale = 1023.0 / glm::max(all.hi - all.lo, Vec3(1e-300));
+        auto morton = [&](uint32_t t) {
+            const Vec3 q = (0.5 * (mBoxes[t].lo + mBoxes[t].hi) - all.lo) * scale;
+            uint64_t code = 0;
+            const uint32_t axis[3] = {uint32_t(q.x), uint32_t(q.y), uint32_t(q.z)};
+            for (int bit = 9; bit >= 0; --bit)
+                for (int a = 0; a < 3; ++a) code = (code << 1) | ((axis[a] >> bit) & 1u);
+            return code;
+        };
+        std::vector<std::pair<uint64_t, uint32_t>> order;
+        order.reserve(block.triangles.size());
+        for (uint32_t t : block.triangles) order.push_back({morton(t), t});
+        std::sort(order.begin(), order.end());
+        for (size_t i = 0; i < order.size(); ++i) block.triangles[i] = order[i].second;
+        for (size_t c = 0; c < order.size(); c += kCluster) {
+            Bounds3 box;
+            for (size_t i = c; i < std::min(order.size(), c + kCluster); ++i)
+                box = Bounds3::hull(box, mBoxes[block.triangles[i]]);
+            block.clusters.push_back(box);
+        }
+    });
 }
 
-double MeshDistance::distance(const Vec3& p, double bound) const {
+double MeshDistance::distance(const Vec3& p, double bound, uint32_t& hint) const {
     const auto found = mBlocks.find(blockKey(blockOf(p.x), blockOf(p.y), blockOf(p.z)));
     if (found == mBlocks.end()) return bound;
-    double best = bound * bound;
-    for (uint32_t t : found->second) {
-        const Bounds3& box = mBoxes[t];
-        const Vec3 gap = glm::max(glm::max(box.lo - p, p - box.hi), Vec3(0.0));
-        if (glm::dot(gap, gap) >= best) continue;
+    const Block& block = found->second;
+    auto squared = [&](uint32_t t) {
         const auto& tri = mMesh.triangles[t];
-        best = std::min(best, squaredDistanceToTriangle(p, mMesh.vertices[tri[0]],
-                                                        mMesh.vertices[tri[1]],
-                                                        mMesh.vertices[tri[2]]));
+        return squaredDistanceToTriangle(p, mMesh.vertices[tri[0]], mMesh.vertices[tri[1]],
+                                         mMesh.vertices[tri[2]]);
+    };
+    auto gap = [&](const Bounds3& box) {
+        const Vec3 g = glm::max(glm::max(box.lo - p, p - box.hi), Vec3(0.0));
+        return glm::dot(g, g);
+    };
+    // The bound only prunes; the minimum over the triangles not pruned is the same whatever
+    // it started from, so the hint changes the work, not the answer.
+    double best = bound * bound;
+    uint32_t nearest = kNoHint;
+    if (hint != kNoHint) {
+        const double d = squared(hint);
+        if (d < best) best = d, nearest = hint;
     }
+    for (size_t c = 0; c < block.clusters.size(); ++c) {
+        if (gap(block.clusters[c]) >= best) continue;
+        const size_t end = std::min(block.triangles.size(), (c + 1) * kCluster);
+        for (size_t i = c * kCluster; i < end; ++i) {
+            const uint32_t t = block.triangles[i];
+            if (gap(mBoxes[t]) >= best) continue;
+            const double d = squared(t);
+            if (d < best) best = d, nearest = t;
+        }
+    }
+    hint = nearest;
     return std::sqrt(best);
 }
 

@@ -1,8 +1,9 @@
 /// @file volume/voxelize_distance.h
 /// @brief The exact distance from a point to a triangle mesh, for points near it: triangles
-/// listed per block of 8³ voxels (each in every block its box, grown by the reach, meets), so
-/// a query scans one block's list, skipping triangles whose box is farther than the best
-/// distance so far. OpenVDB's mesh-to-volume finds distances in the outer band from the
+/// listed per block of 8³ voxels (each in every block its box, grown by the reach, meets), in
+/// clusters of 8 near ones (Morton order of their centres) with a box each, so a query scans
+/// one block's clusters, skipping those whose box is farther than the best distance so far;
+/// a hint (the triangle nearest the previous voxel) gives a close first bound. OpenVDB's mesh-to-volume finds distances in the outer band from the
 /// triangles its neighbours used, which overestimates some by up to half a voxel (measured on
 /// a sphere); `kerf voxelize` recomputes every active voxel with this.
 #pragma once
@@ -14,6 +15,7 @@
 #include <unordered_map>
 #include <vector>
 
+
 namespace kerf {
 
 class MeshDistance {
@@ -22,8 +24,11 @@ public:
     MeshDistance(const TriangleMesh& mesh, double voxel, double reach);
 
     /// The distance from `p` to the nearest triangle when it is below `bound` (≤ reach), else
-    /// `bound`. Thread-safe.
-    double distance(const Vec3& p, double bound) const;
+    /// `bound`. `hint` is a triangle to try first (or kNoHint); it becomes the nearest found.
+    /// Thread-safe. The result does not depend on the hint.
+    double distance(const Vec3& p, double bound, uint32_t& hint) const;
+
+    static constexpr uint32_t kNoHint = ~uint32_t(0);
 
 private:
     int64_t blockKey(int64_t i, int64_t j, int64_t k) const;
@@ -32,7 +37,11 @@ private:
     const TriangleMesh& mMesh;
     double mBlock;  ///< a block's side, model units
     std::vector<Bounds3> mBoxes;  ///< per triangle
-    std::unordered_map<int64_t, std::vector<uint32_t>> mBlocks;
+    struct Block {
+        std::vector<uint32_t> triangles;  ///< cluster c holds [8c, 8c + 8)
+        std::vector<Bounds3> clusters;
+    };
+    std::unordered_map<int64_t, Block> mBlocks;
 };
 
 /// The squared distance from p to the triangle abc (its nearest point, by the region of the

@@ -13,6 +13,7 @@
 #include <tbb/global_control.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <random>
 #include <string>
@@ -253,4 +254,22 @@ TEST_CASE("voxelize/bad options and too many voxels are refused before writing")
         CHECK(std::string(e.what()).find("no solid object") != std::string::npos);
     }
     CHECK(dir.entries() == 0);
+}
+
+// The figures of docs/BENCHMARKS.md ("kerf voxelize"): not run by ctest (hidden). Measures the
+// file `kerf voxelize` wrote for `object sphere { radius 1 };` (path in
+// KERF_VOXELIZE_SPHERE_VDB) against the exact distance.
+TEST_CASE("voxelize/figures: a unit sphere's file against the exact distance", "[.figures]") {
+    const char* path = std::getenv("KERF_VOXELIZE_SPHERE_VDB");
+    REQUIRE(path != nullptr);
+    const openvdb::GridPtrVecPtr grids = readGrids(path);
+    REQUIRE(grids->size() == 1);
+    const openvdb::FloatGrid& grid = floatGrid((*grids)[0]);
+    const GridReport r = measure(grid, [](const Vec3& p) { return glm::length(p) - 1.0; },
+                                 Vec3(-1.1), Vec3(1.1));
+    WARN("h " << grid.voxelSize()[0] << ": " << grid.activeVoxelCount() << " active voxels; value error up to "
+              << r.maxValueError << " voxels; active voxels up to " << r.maxActiveDistance
+              << " voxels from the surface; " << r.missing << " missing; " << r.wrongSigns
+              << " wrong signs; " << r.crossings << " crossings of the interpolant up to "
+              << r.maxCrossingError << " voxels from the sphere");
 }
