@@ -49,6 +49,10 @@ VoxelizeStats voxelizeToFile(const std::vector<NodePtr>& objects, const Voxelize
     if (!std::isfinite(h) || !(h > 0.0))
         throw VoxelizeInputError("--voxel must be a finite number greater than 0, not " +
                                  number(h));
+    if (!(h * h * h >= kVoxelizeMinVoxelCube))
+        throw VoxelizeInputError("--voxel " + number(h) + " is smaller than an OpenVDB transform "
+                                 "can be (its cube must be at least 3e-15, so voxels of at least "
+                                 "1.45e-05 model units): scale the model up");
     if (!(options.band >= kVoxelizeMinBand && options.band <= kVoxelizeMaxBand))
         throw VoxelizeInputError("--band must be a number of voxels from " +
                                  number(kVoxelizeMinBand) + " to " + number(kVoxelizeMaxBand) +

@@ -29,6 +29,10 @@ namespace kerf {
 /// 45 bytes per active voxel at their peak (the sampled lattice near the surface, the mesh,
 /// the grid, the file's bytes), so about 1.5 GB at the cap.
 constexpr uint64_t kVoxelizeDefaultMaxVoxels = uint64_t(1) << 25;
+/// OpenVDB refuses a scale map whose determinant is below 3·1e-15 (openvdb/math/Maps.h), so a
+/// voxel must be at least ∛(3e-15) ≈ 1.44e-5 model units: a limit of the file format, not of
+/// kerf (a model that small is voxelized scaled up).
+constexpr double kVoxelizeMinVoxelCube = 3e-15;
 /// Narrow-band half-widths accepted, in voxels.
 constexpr double kVoxelizeMinBand = 1.0;
 constexpr double kVoxelizeMaxBand = 64.0;

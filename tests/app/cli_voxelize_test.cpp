@@ -63,3 +63,13 @@ TEST_CASE("cli_voxelize/bad options exit 2 and write nothing") {
         CHECK(dir.listing() == std::vector<std::string>{"ball.kerf", "plane.kerf"});
     }
 }
+
+TEST_CASE("cli_voxelize/an OpenSCAD .csg is read by its extension") {
+    TempDir dir;
+    const std::string model =
+        (modelsDir().parent_path() / "tests" / "data" / "openscad" / "example004.csg").string();
+    const KerfRun run = runKerf(dir, {"voxelize", model, "-o", "e4.vdb", "--voxel", "1"});
+    INFO(run.err);
+    CHECK(run.exitCode == 0);
+    CHECK(readFile(dir.file("e4.vdb")).size() > 1000);
+}
