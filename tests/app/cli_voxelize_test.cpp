@@ -32,6 +32,7 @@ TEST_CASE("cli_voxelize/bad options exit 2 and write nothing") {
     TempDir dir;
     dir.write("ball.kerf", "object sphere { radius 1 };\n");
     dir.write("plane.kerf", "object halfspace { normal <0, 0, 1> offset 0 };\n");
+    dir.write("big.kerf", "object sphere { radius 1e7 };\n");
     struct Case {
         std::vector<std::string> args;
         const char* message;
@@ -47,8 +48,9 @@ TEST_CASE("cli_voxelize/bad options exit 2 and write nothing") {
         {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.1", "--max-voxels", "1.5"}, "--max-voxels must be a whole number"},
         {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.001"}, "active voxels estimated at --voxel 0.001"},
         {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.1", "--max-voxels", "1000"}, "more than the limit 1000"},
-        {{"ball.kerf", "-o", "b.vdb", "--voxel", "1e-9"}, "1.256e+19 voxel faces"},  // 4π/h²
-        {{"ball.kerf", "-o", "b.vdb", "--voxel", "1e-10"}, "past OpenVDB's 32-bit coordinates"},
+        {{"ball.kerf", "-o", "b.vdb", "--voxel", "1e-4"}, "a surface of about 12.56 square units"},  // 4π
+        {{"ball.kerf", "-o", "b.vdb", "--voxel", "1e-9"}, "smaller than an OpenVDB transform can be"},
+        {{"big.kerf", "-o", "b.vdb", "--voxel", "1e-3"}, "past OpenVDB's 32-bit coordinates"},
         {{"ball.kerf", "-o", "b.obj", "--voxel", "0.1"}, "-o: the output must end in .vdb"},
         {{"plane.kerf", "-o", "b.vdb", "--voxel", "0.1"}, "no solid object to voxelize"},
         {{"missing.kerf", "-o", "b.vdb", "--voxel", "0.1"}, "cannot read model file"},
@@ -60,7 +62,7 @@ TEST_CASE("cli_voxelize/bad options exit 2 and write nothing") {
         INFO(c.args[3] << " " << (c.args.size() > 4 ? c.args[4] : "") << ": " << run.err);
         CHECK(run.exitCode == 2);
         CHECK(run.err.find(c.message) != std::string::npos);
-        CHECK(dir.listing() == std::vector<std::string>{"ball.kerf", "plane.kerf"});
+        CHECK(dir.listing() == std::vector<std::string>{"ball.kerf", "big.kerf", "plane.kerf"});
     }
 }
 
