@@ -1,7 +1,7 @@
 // The OpenVDB side of `kerf voxelize`: the narrow band of a closed mesh grown voxel by voxel
 // from the voxels nearest its vertices, each voxel holding its exact distance to the mesh
-// (volume/voxelize_distance.h) with the implicit's sign; the inside filled by OpenVDB's signed
-// flood fill; the grids serialised into the bytes of one .vdb file (written by the caller
+// (volume/voxelize_distance.h) with the implicit's sign; the other voxels of its leaves ±band
+// by the implicit's sign, the tiles by OpenVDB's signed flood fill; the grids serialised into the bytes of one .vdb file (written by the caller
 // through io/atomic_file.h).
 //
 // OpenVDB's mesh-to-volume was tried first and left: it finds the outer layers of the band from
@@ -94,6 +94,21 @@ uint64_t growBand(openvdb::FloatGrid& grid, const TriangleMesh& mesh, const Mesh
     return queries;
 }
 
+/// Every inactive voxel of the band's leaves gets ±background by the implicit's sign at it, so
+/// the flood fill of the tiles reads true signs from the leaves' ends: OpenVDB's own fill of
+/// leaf voxels scans from the active ones and put whole regions on the wrong side where a band
+/// of one voxel is not closed along a scan line (measured: crossings 3.3 voxels off).
+void inactiveSignsFromTape(openvdb::FloatGrid& grid, double voxel, float background,
+                           const Tape& tape) {
+    using Leaf = openvdb::FloatTree::LeafNodeType;
+    std::vector<Leaf*> leaves;
+    grid.tree().getNodes(leaves);
+    tbb::parallel_for(size_t(0), leaves.size(), [&](size_t i) {
+        for (auto it = leaves[i]->beginValueOff(); it; ++it)
+            it.setValue(tape.eval(worldOf(it.getCoord(), voxel)) <= 0.0 ? -background : background);
+    });
+}
+
 }  // namespace
 
 struct LevelSetFile::Impl {
@@ -114,8 +129,9 @@ LevelSetFile::Added LevelSetFile::add(const std::string& name, const TriangleMes
     if (!mesh.triangles.empty()) {
         const MeshDistance distance(mesh, voxel, band * voxel);
         added.distanceQueries = growBand(*grid, mesh, distance, voxel, band, tape);
-        // Inactive voxels and tiles: −background inside the band's shells, +background out.
-        openvdb::tools::signedFloodFill(grid->tree());
+        // Inactive voxels of leaves by the implicit; tiles (level 1 up) by OpenVDB's fill.
+        inactiveSignsFromTape(*grid, voxel, background, tape);
+        openvdb::tools::signedFloodFill(grid->tree(), true, 1, /*minLevel=*/1);
         openvdb::tools::pruneLevelSet(grid->tree());
         added.activeVoxels = grid->activeVoxelCount();
     }

@@ -34,10 +34,12 @@ openvdb::GridPtrVecPtr readGrids(const std::string& path) {
     return grids;
 }
 
-VoxelizeStats voxelize(const std::string& model, double voxel, const std::string& path) {
+VoxelizeStats voxelize(const std::string& model, double voxel, const std::string& path,
+                       double band = 3.0) {
     const Scene scene = test::compiledScene(model, "voxelize_test.kerf");
     VoxelizeOptions options;
     options.voxel = voxel;
+    options.band = band;
     return voxelizeToFile(scene.objects, options, path);
 }
 
@@ -71,6 +73,7 @@ struct GridReport {
 /// point of the box lo..hi, and the interpolant's crossings along 300 random lines.
 GridReport measure(const openvdb::FloatGrid& grid, const Sdf& sdf, const Vec3& lo, const Vec3& hi) {
     const double h = grid.voxelSize()[0];
+    const double band = double(grid.background()) / h;
     GridReport r;
     for (auto it = grid.cbeginValueOn(); it; ++it) {
         const openvdb::Coord c = it.getCoord();
@@ -86,7 +89,7 @@ GridReport measure(const openvdb::FloatGrid& grid, const Sdf& sdf, const Vec3& l
     for (int64_t i = int64_t(std::floor(lo.x / h)); i <= int64_t(std::ceil(hi.x / h)); ++i)
         for (int64_t j = int64_t(std::floor(lo.y / h)); j <= int64_t(std::ceil(hi.y / h)); ++j)
             for (int64_t k = int64_t(std::floor(lo.z / h)); k <= int64_t(std::ceil(hi.z / h)); ++k)
-                if (std::abs(sdf(Vec3(double(i) * h, double(j) * h, double(k) * h))) < 2.95 * h &&
+                if (std::abs(sdf(Vec3(double(i) * h, double(j) * h, double(k) * h))) < (band - 0.05) * h &&
                     !acc.isValueOn(openvdb::Coord(int(i), int(j), int(k)))) {
                     ++r.missing;
                 }
@@ -138,13 +141,13 @@ void requireLevelSet(const openvdb::GridBase::Ptr& g, const std::string& name, d
     CHECK(floatGrid(g).background() == Approx(3.0 * h).epsilon(1e-6));
 }
 
-void requireAccurate(const GridReport& r, double valueError) {
+void requireAccurate(const GridReport& r, double valueError, double band = 3.0) {
     INFO("value error " << r.maxValueError << " voxels, active voxels up to " << r.maxActiveDistance
                         << " voxels from the surface, " << r.crossings
                         << " crossings up to " << r.maxCrossingError << " voxels off");
     CHECK(r.wrongSigns == 0);
     CHECK(r.missing == 0);
-    CHECK(r.maxActiveDistance <= 3.0 + valueError);  // the band, and the mesh's error
+    CHECK(r.maxActiveDistance <= band + valueError);  // the band, and the mesh's error
     CHECK(r.maxValueError <= valueError);
     CHECK(r.crossings > 200);
     CHECK(r.maxCrossingError <= 0.5);
@@ -173,6 +176,22 @@ TEST_CASE("voxelize/sphere: a level set of the exact distance") {
     const double shell = 4.0 / 3.0 * 3.14159265358979 * (std::pow(1.0 + 3 * h, 3) - std::pow(1.0 - 3 * h, 3));
     CHECK(double(stats.grids[0].activeVoxels) == Approx(shell / (h * h * h)).epsilon(0.01));
     CHECK(double(stats.grids[0].activeVoxels) < 0.35 * stats.grids[0].denseVoxels);
+}
+
+TEST_CASE("voxelize/narrower and wider bands hold every voxel nearer than the band") {
+    test::ScratchFolder dir;
+    const double h = 1.0 / 20;
+    const Vec3 c(0.1, 0.2, 0.3);
+    for (double band : {1.0, 1.5, 2.0, 5.5}) {
+        INFO("band " << band);
+        voxelize("object sphere { center <0.1, 0.2, 0.3> radius 1 };", h, dir.file("s.vdb"), band);
+        const openvdb::GridPtrVecPtr grids = readGrids(dir.file("s.vdb"));
+        CHECK(floatGrid((*grids)[0]).background() == Approx(band * h).epsilon(1e-6));
+        const GridReport r = measure(floatGrid((*grids)[0]),
+                                     [&](const Vec3& p) { return sdfSphere(p, c, 1.0); },
+                                     c - Vec3(1.4), c + Vec3(1.4));
+        requireAccurate(r, 0.03, band);
+    }
 }
 
 TEST_CASE("voxelize/box and a CSG difference: one grid each, named by order") {
