@@ -1,8 +1,8 @@
 // The OpenVDB side of `kerf voxelize`: the narrow band of a closed mesh grown voxel by voxel
 // from the voxels nearest its vertices, each voxel holding its exact distance to the mesh
 // (volume/voxelize_distance.h) with the implicit's sign; the other voxels of its leaves ±band
-// by the implicit's sign, the tiles by OpenVDB's signed flood fill; the grids serialised into the bytes of one .vdb file (written by the caller
-// through io/atomic_file.h).
+// by the implicit's sign, the tiles by OpenVDB's signed flood fill; the grids serialised into
+// the bytes of one .vdb file (written by the caller through io/atomic_file.h).
 //
 // OpenVDB's mesh-to-volume was tried first and left: it finds the outer layers of the band from
 // the triangles of neighbouring voxels, which overestimated distances by up to 0.49 voxel on a
