@@ -67,7 +67,7 @@ CLI::App* addVoxelizeCommand(CLI::App& parent, VoxelizeCommandLine& line) {
     cmd->add_option("--voxel", line.voxel, "Voxel size in model units (> 0)")->required();
     cmd->add_option("--band", line.band, "Half-width of the narrow band in voxels (1 to 64; 3)");
     cmd->add_option("--max-voxels", line.maxVoxels,
-                    "Refuse when more active voxels than this are estimated (2^25)");
+                    "Refuse when more active voxels than this are estimated (2^24)");
     cmd->add_flag("--stats", line.stats,
                   "Print per grid the active voxels, the dense alternative, cells and times");
     cmd->add_flag("-q,--quiet", line.quiet, "No echo lines from the model");
