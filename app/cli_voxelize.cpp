@@ -65,7 +65,7 @@ CLI::App* addVoxelizeCommand(CLI::App& parent, VoxelizeCommandLine& line) {
     cmd->add_option("FILE", line.model, "The model file (.kerf or .csg)")->required();
     cmd->add_option("-o,--output", line.output, "The .vdb file")->required();
     cmd->add_option("--voxel", line.voxel, "Voxel size in model units (> 0)")->required();
-    cmd->add_option("--band", line.band, "Half-width of the narrow band in voxels (1 to 64; 3)");
+    cmd->add_option("--band", line.band, "Half-width of the narrow band in voxels (1 to 16; 3)");
     cmd->add_option("--max-voxels", line.maxVoxels,
                     "Refuse when more active voxels than this are estimated (2^24)");
     cmd->add_flag("--stats", line.stats,
@@ -82,7 +82,7 @@ int runVoxelize(const VoxelizeCommandLine& line) {
     if (!std::isfinite(options.voxel) || !(options.voxel > 0.0))
         throw UsageError("--voxel must be a finite number greater than 0 (got '" + line.voxel + "')");
     if (!(options.band >= kVoxelizeMinBand && options.band <= kVoxelizeMaxBand))
-        throw UsageError("--band must be a number of voxels from 1 to 64 (got '" + line.band + "')");
+        throw UsageError("--band must be a number of voxels from 1 to 16 (got '" + line.band + "')");
     if (!line.maxVoxels.empty()) {
         const double n = parseNumber("--max-voxels", line.maxVoxels);
         if (!(n >= 1.0 && n <= 9.0e18) || n != std::floor(n))

@@ -45,15 +45,16 @@ double squaredDistanceToTriangle(const Vec3& p, const Vec3& a, const Vec3& b, co
     return sq(a + ab * (vb / sum) + ac * (vc / sum));
 }
 
-int64_t MeshDistance::blockKey(int64_t i, int64_t j, int64_t k) const {
-    // Block indices stay within ±2^20 (OpenVDB's coordinates are checked to 2^30 voxels).
-    return ((i + (1 << 21)) << 42) | ((j + (1 << 21)) << 21) | (k + (1 << 21));
+size_t MeshDistance::KeyHash::operator()(const BlockKey& k) const {
+    uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (int64_t v : k) h = (h ^ uint64_t(v)) * 0xff51afd7ed558ccdull, h ^= h >> 32;
+    return size_t(h);
 }
 
 int64_t MeshDistance::blockOf(double x) const { return int64_t(std::floor(x / mBlock)); }
 
 MeshDistance::MeshDistance(const TriangleMesh& mesh, double voxel, double reach)
-    : mMesh(mesh), mBlock(8.0 * voxel) {
+    : mMesh(mesh), mBlock(std::max(8.0 * voxel, 2.0 * reach)) {
     mBoxes.reserve(mesh.triangles.size());
     for (uint32_t t = 0; t < mesh.triangles.size(); ++t) {
         Bounds3 box;
@@ -67,7 +68,7 @@ MeshDistance::MeshDistance(const TriangleMesh& mesh, double voxel, double reach)
         for (int64_t i = lo[0]; i <= hi[0]; ++i)
             for (int64_t j = lo[1]; j <= hi[1]; ++j)
                 for (int64_t k = lo[2]; k <= hi[2]; ++k)
-                    mBlocks[blockKey(i, j, k)].triangles.push_back(t);
+                    mBlocks[BlockKey{i, j, k}].triangles.push_back(t);
     }
     std::vector<Block*> blocks;
     blocks.reserve(mBlocks.size());
@@ -100,7 +101,7 @@ MeshDistance::MeshDistance(const TriangleMesh& mesh, double voxel, double reach)
 }
 
 double MeshDistance::distance(const Vec3& p, double bound, uint32_t& hint) const {
-    const auto found = mBlocks.find(blockKey(blockOf(p.x), blockOf(p.y), blockOf(p.z)));
+    const auto found = mBlocks.find(BlockKey{blockOf(p.x), blockOf(p.y), blockOf(p.z)});
     if (found == mBlocks.end()) return bound;
     const Block& block = found->second;
     auto squared = [&](uint32_t t) {

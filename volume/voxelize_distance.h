@@ -1,6 +1,8 @@
 /// @file volume/voxelize_distance.h
 /// @brief The exact distance from a point to a triangle mesh, for points near it: triangles
-/// listed per block of 8³ voxels (each in every block its box, grown by the reach, meets), in
+/// listed per block (8 voxels or twice the reach on a side, whichever is larger, so a
+/// triangle is listed in at most 27 blocks; each in every block its box, grown by the reach,
+/// meets), in
 /// clusters of 8 near ones (Morton order of their centres) with a box each, so a query scans
 /// one block's clusters, skipping those whose box is farther than the best distance so far;
 /// a hint (the triangle nearest the previous voxel) gives a close first bound. OpenVDB's mesh-to-volume finds distances in the outer band from the
@@ -11,6 +13,7 @@
 #include "csg/types.h"
 #include "volume/mesh_export.h"
 
+#include <array>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -31,7 +34,10 @@ public:
     static constexpr uint32_t kNoHint = ~uint32_t(0);
 
 private:
-    int64_t blockKey(int64_t i, int64_t j, int64_t k) const;
+    using BlockKey = std::array<int64_t, 3>;
+    struct KeyHash {
+        size_t operator()(const BlockKey& k) const;
+    };
     int64_t blockOf(double x) const;
 
     const TriangleMesh& mMesh;
@@ -41,7 +47,7 @@ private:
         std::vector<uint32_t> triangles;  ///< cluster c holds [8c, 8c + 8)
         std::vector<Bounds3> clusters;
     };
-    std::unordered_map<int64_t, Block> mBlocks;
+    std::unordered_map<BlockKey, Block, KeyHash> mBlocks;
 };
 
 /// The squared distance from p to the triangle abc (its nearest point, by the region of the

@@ -182,7 +182,7 @@ TEST_CASE("voxelize/narrower and wider bands hold every voxel nearer than the ba
     test::ScratchFolder dir;
     const double h = 1.0 / 20;
     const Vec3 c(0.1, 0.2, 0.3);
-    for (double band : {1.0, 1.5, 2.0, 5.5}) {
+    for (double band : {1.0, 1.5, 2.0, 5.5, 16.0}) {
         INFO("band " << band);
         voxelize("object sphere { center <0.1, 0.2, 0.3> radius 1 };", h, dir.file("s.vdb"), band);
         const openvdb::GridPtrVecPtr grids = readGrids(dir.file("s.vdb"));
