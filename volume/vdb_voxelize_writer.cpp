@@ -9,6 +9,7 @@
 // sphere, and it left out a band layer on the inner side of a hollow sphere's wall.
 #include "volume/vdb_voxelize_writer.h"
 
+#include "csg/interval.h"
 #include "volume/voxelize_distance.h"
 
 #include <openvdb/io/Stream.h>
@@ -29,6 +30,19 @@ namespace {
 
 Vec3 worldOf(const openvdb::Coord& c, double voxel) {
     return Vec3(double(c.x()) * voxel, double(c.y()) * voxel, double(c.z()) * voxel);
+}
+
+/// The tape simplified over the voxels of the 8³ leaf at `origin` (interval evaluation decides
+/// the min/max branches there; the result has the same value at each of those voxels), so a
+/// model of thousands of primitives costs a few instructions per voxel, not all of them.
+std::shared_ptr<const Tape> leafTape(const Tape& tape, const openvdb::Coord& origin,
+                                     double voxel) {
+    Interval box[3];
+    for (int a = 0; a < 3; ++a)
+        box[a] = Interval(double(origin[a]) * voxel, double(origin[a] + 7) * voxel);
+    std::vector<Choice> choices;
+    tape.evalInterval(box[0], box[1], box[2], choices);
+    return tape.simplified(choices);
 }
 
 /// The stored value of a voxel at exact distance d (< band) with the implicit's sign (kerf's
@@ -71,10 +85,13 @@ uint64_t growBand(openvdb::FloatGrid& grid, const TriangleMesh& mesh, const Mesh
         std::vector<std::vector<Found>> found(leaves.size());
         tbb::parallel_for(size_t(0), leaves.size(), [&](size_t i) {
             uint32_t hint = MeshDistance::kNoHint;  // the last voxel's nearest triangle
+            std::shared_ptr<const Tape> local;      // made for the first voxel in the band
             for (auto it = leaves[i]->cbeginValueOn(); it; ++it) {
                 const openvdb::Coord c = it.getCoord();
                 const double d = distance.distance(worldOf(c, voxel), width, hint);
-                if (d < width) found[i].push_back({c, signedValue(d, tape, c, voxel)});
+                if (!(d < width)) continue;
+                if (!local) local = leafTape(tape, leaves[i]->origin(), voxel);
+                found[i].push_back({c, signedValue(d, *local, c, voxel)});
             }
         });
         queries += candidates->activeVoxelCount();
@@ -104,8 +121,11 @@ void inactiveSignsFromTape(openvdb::FloatGrid& grid, double voxel, float backgro
     std::vector<Leaf*> leaves;
     grid.tree().getNodes(leaves);
     tbb::parallel_for(size_t(0), leaves.size(), [&](size_t i) {
+        if (leaves[i]->isValueMaskOn()) return;  // no inactive voxel
+        const std::shared_ptr<const Tape> local = leafTape(tape, leaves[i]->origin(), voxel);
         for (auto it = leaves[i]->beginValueOff(); it; ++it)
-            it.setValue(tape.eval(worldOf(it.getCoord(), voxel)) <= 0.0 ? -background : background);
+            it.setValue(local->eval(worldOf(it.getCoord(), voxel)) <= 0.0 ? -background
+                                                                          : background);
     });
 }
 
