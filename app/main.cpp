@@ -7,6 +7,7 @@
 #include "app/cli_mesh.h"
 #include "app/cli_render.h"
 #include "app/cli_slice.h"
+#include "app/cli_voxelize.h"
 #include "app/exit_codes.h"
 #include "io/image.h"
 
@@ -42,6 +43,8 @@ int run(int argc, char** argv) {
     CLI::App* sliceCmd = addSliceCommand(cli, sliceLine);
     AssembleCommandLine assembleLine;
     CLI::App* assembleCmd = addAssembleCommand(cli, assembleLine);
+    VoxelizeCommandLine voxelizeLine;
+    CLI::App* voxelizeCmd = addVoxelizeCommand(cli, voxelizeLine);
 
     try {
         cli.parse(argc, argv);
@@ -60,6 +63,7 @@ int run(int argc, char** argv) {
         if (meshCmd->parsed()) return runMesh(meshLine);
         if (sliceCmd->parsed()) return runSlice(sliceLine);
         if (assembleCmd->parsed()) return runAssemble(assembleLine);
+        if (voxelizeCmd->parsed()) return runVoxelize(voxelizeLine);
     } catch (const UsageError& e) {
         std::cerr << "kerf: error: " << e.what() << "\n";
         return kExitUsage;
