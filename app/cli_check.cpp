@@ -48,48 +48,40 @@ std::string describeBounds(const Bounds3& b) {
            axisRange(b.lo.z, b.hi.z, scale);
 }
 
-/// The distinct mesh shapes of the scene, in the order the objects first use them. Every
-/// node is visited once, however often a shared subtree is used.
-std::vector<const MeshShape*> meshShapes(const Scene& scene) {
-    std::vector<const MeshShape*> shapes;
+/// The distinct shared data (`get` of a node) of the scene's leaves of one kind, in the order
+/// the objects first use them. Every node is visited once, however often a shared subtree is
+/// used.
+template <class T, class Get>
+std::vector<const T*> distinctLeafData(const Scene& scene, NodeKind kind, Get get) {
+    std::vector<const T*> found;
     std::unordered_set<const Node*> seen;
-    std::unordered_set<const MeshShape*> seenShapes;
+    std::unordered_set<const T*> seenData;
     std::vector<const Node*> stack;
     for (auto it = scene.objects.rbegin(); it != scene.objects.rend(); ++it) stack.push_back(it->get());
     while (!stack.empty()) {
         const Node* node = stack.back();
         stack.pop_back();
         if (!seen.insert(node).second) continue;
-        if (node->kind() == NodeKind::Mesh) {
-            const MeshShape* shape = std::get<MeshParams>(node->params()).shape.get();
-            if (seenShapes.insert(shape).second) shapes.push_back(shape);
+        if (node->kind() == kind) {
+            const T* data = get(*node);
+            if (seenData.insert(data).second) found.push_back(data);
         }
         const NodeSpan children = node->children();
         for (size_t i = children.size(); i-- > 0;) stack.push_back(children[i].get());
     }
-    return shapes;
+    return found;
 }
 
-/// The distinct level sets of the scene (`volume "file.vdb"`), in the order objects first use
-/// them; every node visited once.
+/// The distinct mesh shapes of the scene (`mesh "file"`).
+std::vector<const MeshShape*> meshShapes(const Scene& scene) {
+    return distinctLeafData<MeshShape>(scene, NodeKind::Mesh,
+                                       [](const Node& n) { return std::get<MeshParams>(n.params()).shape.get(); });
+}
+
+/// The distinct level sets of the scene (`volume "file.vdb"`).
 std::vector<const LevelSetGrid*> levelSets(const Scene& scene) {
-    std::vector<const LevelSetGrid*> grids;
-    std::unordered_set<const Node*> seen;
-    std::unordered_set<const LevelSetGrid*> seenGrids;
-    std::vector<const Node*> stack;
-    for (auto it = scene.objects.rbegin(); it != scene.objects.rend(); ++it) stack.push_back(it->get());
-    while (!stack.empty()) {
-        const Node* node = stack.back();
-        stack.pop_back();
-        if (!seen.insert(node).second) continue;
-        if (node->kind() == NodeKind::Volume) {
-            const LevelSetGrid* grid = std::get<VolumeParams>(node->params()).grid.get();
-            if (seenGrids.insert(grid).second) grids.push_back(grid);
-        }
-        const NodeSpan children = node->children();
-        for (size_t i = children.size(); i-- > 0;) stack.push_back(children[i].get());
-    }
-    return grids;
+    return distinctLeafData<LevelSetGrid>(scene, NodeKind::Volume,
+                                          [](const Node& n) { return std::get<VolumeParams>(n.params()).grid.get(); });
 }
 
 }  // namespace

@@ -136,19 +136,17 @@ Simple Contourer::provedSimple(const Tape& tape, const Interval& U, const Interv
     if (monoU && monoV) return Simple::Both;
     // Monotone in one direction: the edge where f is least must be wholly inside and the
     // opposite one wholly outside; then every line along that direction crosses once.
-    // An edge's values: the direct enclosure, narrowed by the mean-value form about the
-    // edge's middle with the cell's slope along the edge (which encloses every difference
-    // quotient). Distance fields need it: their direct enclosure is only the middle's value
-    // ± half the edge, so an edge parallel to an outline is never proved one-signed.
+    // An edge's values, narrowed by the mean-value form about its middle with the cell's slope
+    // along it: a distance field's direct enclosure (middle ± half the edge) never proves an
+    // edge parallel to an outline one-signed.
     auto edgeRange = [&](bool alongU, double end) {
         const Interval& along = alongU ? V : U;
         const double mid = along.mid();
         const Interval direct = alongU ? tape.evalInterval(end, V, mW) : tape.evalInterval(U, end, mW);
         const Interval middle = alongU ? tape.evalInterval(end, mid, mW) : tape.evalInterval(mid, end, mW);
         const Interval centred = middle + (alongU ? s.dv : s.du) * (along - Interval(mid));
-        if (direct.maybeNan || centred.maybeNan) return direct;
-        Interval both(std::max(direct.lo, centred.lo), std::min(direct.hi, centred.hi));
-        return both.lo <= both.hi ? both : direct;
+        const Interval both(std::max(direct.lo, centred.lo), std::min(direct.hi, centred.hi));
+        return direct.maybeNan || centred.maybeNan || !(both.lo <= both.hi) ? direct : both;
     };
     auto edgesSplit = [&](bool alongU, bool increasing) {
         const Interval& across = alongU ? U : V;
