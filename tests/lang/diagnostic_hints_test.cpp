@@ -237,7 +237,7 @@ TEST_CASE("hints: unknown and value-less properties in every block") {
              "directional light takes: color, direction, shadows"},
             {"mist { distance 1 fog }", 19, "unknown property 'fog' in mist",
              "mist takes: color, distance, density, bounds, min, max, extinction, albedo, emission, g, "
-             "method, step, samples"},
+             "method, step, samples, bake"},
             {"render { width 10 antialias 0.3 }", 19, "unknown property 'antialias' in render",
              "render takes: width, height, spp, max_depth, sampler, filter, noise"},
         };
