@@ -140,8 +140,12 @@ TEST_CASE("kerf render --region: a bad region is an error naming --region") {
 namespace {
 
 KerfRun runMpi(const TempDir& dir, const std::vector<std::string>& args) {
+    // Open MPI's runtime leaks at MPI_Finalize from components it loaded with dlopen, whose
+    // frames LeakSanitizer cannot name for a suppression: leak checking is off for the ranks
+    // under the sanitizer build (kerf-mpi's own code is kerf's, checked by the other tests).
     std::string command = "cd " + shellQuote(dir.path().string()) + " && " +
-                          shellQuote(KERF_MPIEXEC) + " -n 2 --oversubscribe" +
+                          "ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" " +
+                          shellQuote(KERF_MPIEXEC) + " -x ASAN_OPTIONS -n 2 --oversubscribe" +
                           (::geteuid() == 0 ? " --allow-run-as-root" : "") + " " +
                           shellQuote(KERF_MPI_BINARY);
     for (const std::string& arg : args) command += " " + shellQuote(arg);
