@@ -43,7 +43,7 @@ std::string describeGrids(const openvdb::GridPtrVec& grids) {
 /// single-threaded).
 class TreeSource final : public LevelSetGrid::Source {
 public:
-    TreeSource(const FloatTree& tree, const openvdb::CoordBBox& box) : mTree(tree), mAcc(tree) {
+    TreeSource(const FloatTree& tree, const openvdb::CoordBBox& box) : mAcc(tree) {
         background = tree.background();
         for (int a = 0; a < 3; ++a) {
             // A block of background on each side, so the walk starts and ends outside.
@@ -83,7 +83,6 @@ public:
     }
 
 private:
-    const FloatTree& mTree;
     mutable openvdb::tree::ValueAccessor<const FloatTree> mAcc;
 };
 
