@@ -48,13 +48,12 @@ Ray rayPast(std::mt19937_64& rng, const Vec3& c, double from, double impact) {
 TEST_CASE("LevelSet/sphere depth within the trilinear error", "[volume]") {
     test::ScratchFolder dir;
     const double radius = 2.0, voxel = 0.1;
-    const openvdb::Vec3f c(0.3f, -0.2f, 0.1f);
-    test::writeGrids(dir.file("s.vdb"), {test::sphereGrid(radius, c, voxel)});
+    const Vec3 center(0.3f, -0.2f, 0.1f);  // as floats were written
+    test::writeGrids(dir.file("s.vdb"), {test::sphereGrid(radius, center, voxel)});
     const auto grid = loadLevelSet(dir.file("s.vdb"));
     CHECK(grid->info().gridName == "sphere");
     CHECK(grid->info().voxelSize.x == Approx(voxel));
     const NodePtr solid = levelSetSolid(grid);
-    const Vec3 center(c.x(), c.y(), c.z());
     // Trilinear interpolation of d = |p − c| − R errs by at most (h²/8)·Σ|∂²d/∂xᵢ²| ≤ h²/(4ρ)
     // (the Hessian's trace is 2/ρ at distance ρ ≥ R − 2h from c in the cells the surface
     // crosses), plus the samples' float rounding: the zero set lies within that of the sphere.
@@ -83,10 +82,10 @@ TEST_CASE("LevelSet/sphere depth within the trilinear error", "[volume]") {
 TEST_CASE("LevelSet/the grid's own transform places it (rotation, translation)", "[volume]") {
     test::ScratchFolder dir;
     const double radius = 1.0, voxel = 0.05;
-    auto g = test::sphereGrid(radius, openvdb::Vec3f(0.5f, 0.f, 0.f), voxel);
+    auto g = test::sphereGrid(radius, Vec3(0.5, 0.0, 0.0), voxel);
     // World = index·h, then turned 90° about z (x → y), then moved by (0, 0, 2).
-    g->transform().postRotate(kPi / 2, openvdb::math::Z_AXIS);
-    g->transform().postTranslate(openvdb::Vec3d(0.0, 0.0, 2.0));
+    g.turnZ = kPi / 2;
+    g.move = Vec3(0.0, 0.0, 2.0);
     test::writeGrids(dir.file("moved.vdb"), {g});
     const NodePtr solid = levelSetSolid(loadLevelSet(dir.file("moved.vdb")));
     const Vec3 center(0.0, 0.5, 2.0);
@@ -108,7 +107,7 @@ TEST_CASE("LevelSet/the grid's own transform places it (rotation, translation)",
 TEST_CASE("LevelSet/grazing rays on a sphere hit where the sphere shrunk by a voxel is hit", "[volume]") {
     test::ScratchFolder dir;
     const double radius = 1.5, voxel = 0.05;
-    test::writeGrids(dir.file("s.vdb"), {test::sphereGrid(radius, openvdb::Vec3f(0.f), voxel)});
+    test::writeGrids(dir.file("s.vdb"), {test::sphereGrid(radius, Vec3(0.0), voxel)});
     const NodePtr solid = levelSetSolid(loadLevelSet(dir.file("s.vdb")));
     std::mt19937_64 rng(11);
     // Impact parameters in the last voxel before the shrunk sphere's silhouette must hit;
@@ -171,16 +170,15 @@ TEST_CASE("LevelSet/torus hits and grazing rays against the analytic torus", "[v
 TEST_CASE("LevelSet/a ray touching the zero set (a double root) hits", "[volume]") {
     // One cell whose corners make the interpolant (u − ½)² along the diagonal u = v (constant
     // in z): 0.25 at (0,0) and (1,1), −0.25 at (1,0) and (0,1); the background (1) elsewhere.
-    test::initVdb();
     test::ScratchFolder dir;
-    auto g = openvdb::FloatGrid::create(1.f);
-    g->setGridClass(openvdb::GRID_LEVEL_SET);
-    g->setName("saddle");
+    test::Grid g;
+    g.name = "saddle";
+    g.background = 1.f;
     for (int z = 0; z <= 1; ++z) {
-        g->tree().setValue(openvdb::Coord(0, 0, z), 0.25f);
-        g->tree().setValue(openvdb::Coord(1, 1, z), 0.25f);
-        g->tree().setValue(openvdb::Coord(1, 0, z), -0.25f);
-        g->tree().setValue(openvdb::Coord(0, 1, z), -0.25f);
+        g.values.push_back({{0, 0, z}, 0.25f});
+        g.values.push_back({{1, 1, z}, 0.25f});
+        g.values.push_back({{1, 0, z}, -0.25f});
+        g.values.push_back({{0, 1, z}, -0.25f});
     }
     test::writeGrids(dir.file("saddle.vdb"), {g});
     const auto grid = loadLevelSet(dir.file("saddle.vdb"));
@@ -216,7 +214,7 @@ TEST_CASE("LevelSet/a ray touching the zero set (a double root) hits", "[volume]
 TEST_CASE("LevelSet/difference with a box", "[volume]") {
     test::ScratchFolder dir;
     const double radius = 1.0, voxel = 0.05;
-    test::writeGrids(dir.file("s.vdb"), {test::sphereGrid(radius, openvdb::Vec3f(0.f), voxel)});
+    test::writeGrids(dir.file("s.vdb"), {test::sphereGrid(radius, Vec3(0.0), voxel)});
     const NodePtr sphere = levelSetSolid(loadLevelSet(dir.file("s.vdb")));
     // The upper half (z > 0.2) cut away.
     const NodePtr cut = makeBoolean(BoolOp::Difference, {sphere, makeBox(Vec3(-2, -2, 0.2), Vec3(2, 2, 2))});
@@ -241,7 +239,7 @@ TEST_CASE("LevelSet/difference with a box", "[volume]") {
 TEST_CASE("LevelSet/rays that start inside leave once; spans agree with firstSurface", "[volume]") {
     test::ScratchFolder dir;
     const double radius = 1.0, voxel = 0.05;
-    test::writeGrids(dir.file("s.vdb"), {test::sphereGrid(radius, openvdb::Vec3f(0.f), voxel)});
+    test::writeGrids(dir.file("s.vdb"), {test::sphereGrid(radius, Vec3(0.0), voxel)});
     const NodePtr solid = levelSetSolid(loadLevelSet(dir.file("s.vdb")));
     const double bound = voxel * voxel / (4 * (radius - 2 * voxel)) + 1e-5 * voxel;
     std::mt19937_64 rng(4);
@@ -306,7 +304,7 @@ TEST_CASE("LevelSet/errors name what is wrong", "[volume]") {
         std::ofstream(dir.file("text.vdb")) << "not a vdb";
     }
     CHECK_THAT(message(dir.file("text.vdb"), ""), Catch::StartsWith("cannot read it as a .vdb file"));
-    test::writeGrids(dir.file("many.vdb"), {test::fogGrid(), test::vectorGrid(), test::sphereGrid(1.0, openvdb::Vec3f(0.f), 0.1)});
+    test::writeGrids(dir.file("many.vdb"), {test::fogGrid(), test::vectorGrid(), test::sphereGrid(1.0, Vec3(0.0), 0.1)});
     CHECK(message(dir.file("many.vdb"), "missing") ==
           "it has no grid named 'missing'; its grids: 'density' (float, fog volume), 'sphere' (float, "
           "level set), 'vel' (vec3s, unknown class)");
@@ -318,8 +316,8 @@ TEST_CASE("LevelSet/errors name what is wrong", "[volume]") {
     // A fog volume without its class: no value ≤ 0 (all densities are ≥ 0 and the background 0
     // is refused first as no outside).
     auto unclassed = test::fogGrid("d2");
-    unclassed->setGridClass(openvdb::GRID_UNKNOWN);
-    unclassed->tree().root().setBackground(0.5f, true);
+    unclassed.kind = test::Grid::Kind::Unclassed;
+    unclassed.background = 0.5f;
     test::writeGrids(dir.file("unclassed.vdb"), {unclassed});
     CHECK_THAT(message(dir.file("unclassed.vdb"), ""), Catch::Contains("has no value ≤ 0"));
 }

@@ -1,4 +1,4 @@
-// Fog volumes (volume/vdb_fog.h): a .vdb written here with OpenVDB is read back as a density
+// Fog volumes (volume/vdb_fog.h): a .vdb written here (volume/vdb_grid_files.h) is read back as a density
 // field whose values match the grid's trilinear interpolation, whose range holds every value
 // in a box and proves empty space empty; bad files, grids and values are clear errors, and a
 // model that names one exits 2 with file:line:col.
@@ -6,9 +6,9 @@
 
 #include "../app/kerf_runner.h"
 
+#include "util/level_set_files.h"
+
 #include <catch2/catch.hpp>
-#include <openvdb/openvdb.h>
-#include <openvdb/tools/LevelSetSphere.h>
 
 #include <cmath>
 #include <random>
@@ -25,25 +25,18 @@ double ballDensity(double x, double y, double z) {
     return std::max(0.0, 1.0 - std::sqrt(x * x + y * y + z * z));
 }
 
-openvdb::FloatGrid::Ptr fogBall(float scale = 1.0f) {
-    auto grid = openvdb::FloatGrid::create(0.0f);
-    grid->setTransform(openvdb::math::Transform::createLinearTransform(kVoxel));
-    grid->setGridClass(openvdb::GRID_FOG_VOLUME);
-    grid->setName("density");
-    auto acc = grid->getAccessor();
+Grid fogBall(float scale = 1.0f) {
+    Grid grid;
+    grid.kind = Grid::Kind::FogVolume;
+    grid.voxel = kVoxel;
+    grid.name = "density";
     for (int k = -12; k <= 12; ++k)
         for (int j = -12; j <= 12; ++j)
             for (int i = -12; i <= 12; ++i) {
                 const double d = ballDensity(i * kVoxel, j * kVoxel, k * kVoxel);
-                if (d > 0.0) acc.setValue(openvdb::Coord(i, j, k), scale * float(d));
+                if (d > 0.0) grid.values.push_back({{i, j, k}, scale * float(d)});
             }
     return grid;
-}
-
-void writeGrids(const std::string& path, const openvdb::GridPtrVec& grids) {
-    openvdb::io::File file(path);
-    file.write(grids);
-    file.close();
 }
 
 std::string loadError(const std::string& path, const std::string& grid) {
@@ -58,7 +51,6 @@ std::string loadError(const std::string& path, const std::string& grid) {
 }  // namespace
 
 TEST_CASE("vdb_fog/values, ranges and bounds of a fog ball") {
-    openvdb::initialize();
     TempDir dir;
     const std::string path = dir.file("ball.vdb");
     writeGrids(path, {fogBall()});
@@ -97,19 +89,15 @@ TEST_CASE("vdb_fog/values, ranges and bounds of a fog ball") {
 }
 
 TEST_CASE("vdb_fog/bad files and grids are clear errors") {
-    openvdb::initialize();
     TempDir dir;
     CHECK(loadError(dir.file("missing.vdb"), "") == "no such file");
     dir.write("junk.vdb", "not a vdb file at all");
     CHECK_THAT(loadError(dir.file("junk.vdb"), ""), Catch::Matchers::StartsWith("not a readable .vdb file"));
 
-    auto sphere = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(1.0f, openvdb::Vec3f(0.0f), 0.1f);
-    sphere->setName("surface");
-    auto velocity = openvdb::Vec3SGrid::create();
-    velocity->setName("vel");
-    velocity->tree().setValue(openvdb::Coord(0), openvdb::Vec3s(1.0f));
+    const Grid sphere = sphereGrid(1.0, Vec3(0.0), 0.1, "surface");
+    const Grid velocity = vectorGrid("vel");
     auto negative = fogBall(-1.0f);
-    negative->setName("negative");
+    negative.name = "negative";
     const std::string path = dir.file("many.vdb");
     writeGrids(path, {fogBall(), sphere, velocity, negative});
     CHECK(loadError(path, "smoke") == "the file has no grid 'smoke' (grids: 'density', 'negative', 'surface', 'vel')");
@@ -120,10 +108,8 @@ TEST_CASE("vdb_fog/bad files and grids are clear errors") {
 }
 
 TEST_CASE("vdb_fog/a model reads a fog volume relative to itself, and bad ones exit 2") {
-    openvdb::initialize();
     TempDir dir;
-    auto sphere = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(1.0f, openvdb::Vec3f(0.0f), 0.1f);
-    sphere->setName("surface");
+    const Grid sphere = sphereGrid(1.0, Vec3(0.0), 0.1, "surface");
     dir.write("fog/good.kerf",
               "mist { density volume \"ball.vdb\" extinction 2 albedo <0, 0, 0> }\n"
               "background <1, 1, 1>;\nrender { width 8 height 8 }\n");

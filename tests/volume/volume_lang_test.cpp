@@ -27,8 +27,8 @@ struct VolumeFolder {
     TempDir dir;
     VolumeFolder() {
         fs::create_directories(dir.path() / "models" / "parts");
-        writeGrids(part("sphere.vdb"), {sphereGrid(1.0, openvdb::Vec3f(0.f), 0.05)});
-        writeGrids(part("many.vdb"), {fogGrid(), vectorGrid(), sphereGrid(1.0, openvdb::Vec3f(0.f), 0.05, "surface")});
+        writeGrids(part("sphere.vdb"), {sphereGrid(1.0, Vec3(0.0), 0.05)});
+        writeGrids(part("many.vdb"), {fogGrid(), vectorGrid(), sphereGrid(1.0, Vec3(0.0), 0.05, "surface")});
     }
     std::string part(const std::string& name) const { return (dir.path() / "models" / "parts" / name).string(); }
     std::string model() const { return (dir.path() / "models" / "scene.kerf").string(); }

@@ -1,4 +1,4 @@
-// kerf voxelize against closed forms: the .vdb is read back with OpenVDB; grid names, class
+// kerf voxelize against closed forms: the .vdb is read back (volume/vdb_grid_files.h); grid names, class
 // and transform; every active voxel within band + 1 voxel of the analytic surface, its value
 // the exact signed distance within a stated error and its sign right; the zero crossing of
 // the trilinear interpolant along random lines within half a voxel of the analytic surface.
@@ -7,9 +7,9 @@
 #include "util/compiled_scene.h"
 #include "util/scratch_folder.h"
 
+#include "volume/vdb_grid_files.h"
+
 #include <catch2/catch.hpp>
-#include <openvdb/openvdb.h>
-#include <openvdb/tools/Interpolation.h>
 #include <tbb/global_control.h>
 
 #include <cmath>
@@ -25,14 +25,7 @@ namespace {
 
 using Sdf = std::function<double(const Vec3&)>;
 
-openvdb::GridPtrVecPtr readGrids(const std::string& path) {
-    openvdb::initialize();
-    openvdb::io::File file(path);
-    file.open();
-    openvdb::GridPtrVecPtr grids = file.getGrids();
-    file.close();
-    return grids;
-}
+std::vector<VdbFloatGrid> readGrids(const std::string& path) { return readVdbFloatGrids(path); }
 
 VoxelizeStats voxelize(const std::string& model, double voxel, const std::string& path,
                        double band = 3.0) {
@@ -71,30 +64,27 @@ struct GridReport {
 
 /// Checks one grid against `sdf` (exact signed distance): its active voxels, every lattice
 /// point of the box lo..hi, and the interpolant's crossings along 300 random lines.
-GridReport measure(const openvdb::FloatGrid& grid, const Sdf& sdf, const Vec3& lo, const Vec3& hi) {
-    const double h = grid.voxelSize()[0];
-    const double band = double(grid.background()) / h;
+GridReport measure(const VdbFloatGrid& grid, const Sdf& sdf, const Vec3& lo, const Vec3& hi) {
+    const double h = grid.voxelSize.x;
+    const double band = double(grid.background) / h;
     GridReport r;
-    for (auto it = grid.cbeginValueOn(); it; ++it) {
-        const openvdb::Coord c = it.getCoord();
-        const Vec3 p(c.x() * h, c.y() * h, c.z() * h);
+    grid.forEachActive([&](int i, int j, int k, float value) {
+        const Vec3 p(i * h, j * h, k * h);
         const double d = sdf(p);
         r.maxActiveDistance = std::max(r.maxActiveDistance, std::abs(d) / h);
-        r.maxValueError = std::max(r.maxValueError, std::abs(double(*it) - d) / h);
+        r.maxValueError = std::max(r.maxValueError, std::abs(double(value) - d) / h);
         // On the surface within rounding, either sign is right.
-        if (std::abs(d) > 1e-9 * h && (d < 0.0) != (*it < 0.0f)) ++r.wrongSigns;
-    }
+        if (std::abs(d) > 1e-9 * h && (d < 0.0) != (value < 0.0f)) ++r.wrongSigns;
+    });
     // Every voxel of the box nearer than the band, less the mesh's error, is in the band.
-    const openvdb::FloatGrid::ConstAccessor acc = grid.getConstAccessor();
     for (int64_t i = int64_t(std::floor(lo.x / h)); i <= int64_t(std::ceil(hi.x / h)); ++i)
         for (int64_t j = int64_t(std::floor(lo.y / h)); j <= int64_t(std::ceil(hi.y / h)); ++j)
             for (int64_t k = int64_t(std::floor(lo.z / h)); k <= int64_t(std::ceil(hi.z / h)); ++k)
                 if (std::abs(sdf(Vec3(double(i) * h, double(j) * h, double(k) * h))) < (band - 0.05) * h &&
-                    !acc.isValueOn(openvdb::Coord(int(i), int(j), int(k)))) {
+                    !grid.active(int(i), int(j), int(k))) {
                     ++r.missing;
                 }
-    openvdb::tools::GridSampler<openvdb::FloatGrid, openvdb::tools::BoxSampler> sampler(grid);
-    auto at = [&](const Vec3& p) { return sampler.wsSample(openvdb::Vec3d(p.x, p.y, p.z)); };
+    auto at = [&](const Vec3& p) { return grid.sampleWorld(p); };
     std::mt19937_64 rng(14);
     for (int line = 0; line < 300; ++line) {
         Vec3 o;
@@ -126,19 +116,13 @@ GridReport measure(const openvdb::FloatGrid& grid, const Sdf& sdf, const Vec3& l
     return r;
 }
 
-const openvdb::FloatGrid& floatGrid(const openvdb::GridBase::Ptr& g) {
-    const openvdb::FloatGrid* f = dynamic_cast<const openvdb::FloatGrid*>(g.get());
-    REQUIRE(f != nullptr);
-    return *f;
-}
-
-void requireLevelSet(const openvdb::GridBase::Ptr& g, const std::string& name, double h) {
-    CHECK(g->getName() == name);
-    CHECK(g->getGridClass() == openvdb::GRID_LEVEL_SET);
-    CHECK(g->transform().isLinear());
-    CHECK(g->voxelSize() == openvdb::Vec3d(h));
-    CHECK(g->transform().indexToWorld(openvdb::Vec3d(0.0)) == openvdb::Vec3d(0.0));
-    CHECK(floatGrid(g).background() == Approx(3.0 * h).epsilon(1e-6));
+void requireLevelSet(const VdbFloatGrid& g, const std::string& name, double h) {
+    CHECK(g.name == name);
+    CHECK(g.gridClass == "level set");
+    CHECK(g.linear);
+    CHECK(g.voxelSize == Vec3(h));
+    CHECK(g.origin == Vec3(0.0));
+    CHECK(g.background == Approx(3.0 * h).epsilon(1e-6));
 }
 
 void requireAccurate(const GridReport& r, double valueError, double band = 3.0) {
@@ -162,11 +146,11 @@ TEST_CASE("voxelize/sphere: a level set of the exact distance") {
     const VoxelizeStats stats =
         voxelize("object sphere { center <0.1, 0.2, 0.3> radius 1 };", h, dir.file("s.vdb"));
     REQUIRE(stats.grids.size() == 1);
-    const openvdb::GridPtrVecPtr grids = readGrids(dir.file("s.vdb"));
-    REQUIRE(grids->size() == 1);
-    requireLevelSet((*grids)[0], "object_0", h);
-    CHECK(stats.grids[0].activeVoxels == (*grids)[0]->activeVoxelCount());
-    const GridReport r = measure(floatGrid((*grids)[0]), [&](const Vec3& p) { return sdfSphere(p, c, 1.0); },
+    const std::vector<VdbFloatGrid> grids = readGrids(dir.file("s.vdb"));
+    REQUIRE(grids.size() == 1);
+    requireLevelSet(grids[0], "object_0", h);
+    CHECK(stats.grids[0].activeVoxels == grids[0].activeVoxelCount());
+    const GridReport r = measure(grids[0], [&](const Vec3& p) { return sdfSphere(p, c, 1.0); },
                                  c - Vec3(1.2), c + Vec3(1.2));
     // The values are distances to a mesh with vertices on the sphere (32 voxels in radius):
     // its chords stand about e²/8r ≈ 0.008 voxel off it (measured 0.0095).
@@ -185,9 +169,9 @@ TEST_CASE("voxelize/narrower and wider bands hold every voxel nearer than the ba
     for (double band : {1.0, 1.5, 2.0, 5.5, 16.0}) {
         INFO("band " << band);
         voxelize("object sphere { center <0.1, 0.2, 0.3> radius 1 };", h, dir.file("s.vdb"), band);
-        const openvdb::GridPtrVecPtr grids = readGrids(dir.file("s.vdb"));
-        CHECK(floatGrid((*grids)[0]).background() == Approx(band * h).epsilon(1e-6));
-        const GridReport r = measure(floatGrid((*grids)[0]),
+        const std::vector<VdbFloatGrid> grids = readGrids(dir.file("s.vdb"));
+        CHECK(grids[0].background == Approx(band * h).epsilon(1e-6));
+        const GridReport r = measure(grids[0],
                                      [&](const Vec3& p) { return sdfSphere(p, c, 1.0); },
                                      c - Vec3(1.4), c + Vec3(1.4));
         requireAccurate(r, 0.03, band);
@@ -207,12 +191,12 @@ TEST_CASE("voxelize/box and a CSG difference: one grid each, named by order") {
         h, dir.file("b.vdb"));
     REQUIRE(stats.skipped.size() == 1);
     CHECK(stats.skipped[0].object == 1);
-    const openvdb::GridPtrVecPtr grids = readGrids(dir.file("b.vdb"));
-    REQUIRE(grids->size() == 2);
-    requireLevelSet((*grids)[0], "object_0", h);
-    requireLevelSet((*grids)[1], "object_2", h);
+    const std::vector<VdbFloatGrid> grids = readGrids(dir.file("b.vdb"));
+    REQUIRE(grids.size() == 2);
+    requireLevelSet(grids[0], "object_0", h);
+    requireLevelSet(grids[1], "object_2", h);
     SECTION("box: flat faces, sharp edges and corners") {
-        const GridReport r = measure(floatGrid((*grids)[0]),
+        const GridReport r = measure(grids[0],
                                      [&](const Vec3& p) { return sdfBox(p, lo, hi); },
                                      lo - Vec3(0.2), hi + Vec3(0.2));
         requireAccurate(r, 0.02);
@@ -222,7 +206,7 @@ TEST_CASE("voxelize/box and a CSG difference: one grid each, named by order") {
             return std::max(sdfSphere(p, c, 1.0), -sdfSphere(p, c, 0.55));
         };
         const GridReport r =
-            measure(floatGrid((*grids)[1]), shell, c - Vec3(1.2), c + Vec3(1.2));
+            measure(grids[1], shell, c - Vec3(1.2), c + Vec3(1.2));
         // The inner sphere is 13 voxels in radius: flat triangles with edges up to 1.4 voxels
         // stand up to e²/8r ≈ 0.02 voxel off it (measured 0.021).
         requireAccurate(r, 0.03);
@@ -245,9 +229,9 @@ TEST_CASE("voxelize/a model scaled by 1e-3 or 1e6 voxelizes alike at a scaled vo
                       k * scales[s], 0.9317 * scales[s], 0.6131 * scales[s]);
         const VoxelizeStats stats = voxelize(model, h * scales[s], dir.file("s.vdb"));
         REQUIRE(stats.grids.size() == 1);
-        const openvdb::GridPtrVecPtr grids = readGrids(dir.file("s.vdb"));
-        for (auto it = floatGrid((*grids)[0]).cbeginValueOn(); it; ++it)
-            values[s].push_back(double(*it) / (h * scales[s]));
+        const std::vector<VdbFloatGrid> grids = readGrids(dir.file("s.vdb"));
+        grids[0].forEachActive(
+            [&](int, int, int, float value) { values[s].push_back(double(value) / (h * scales[s])); });
     }
     // The same voxels, the same distances in voxels to float precision.
     REQUIRE(values[0].size() > 1000);
@@ -266,11 +250,11 @@ TEST_CASE("voxelize/an empty solid is an empty level set") {
         "object intersection { sphere { center <-2, 0, 0> radius 1 } sphere { center <2, 0, 0> radius 1 } };",
         0.1, dir.file("e.vdb"));
     REQUIRE(stats.grids.size() == 1);
-    const openvdb::GridPtrVecPtr grids = readGrids(dir.file("e.vdb"));
-    REQUIRE(grids->size() == 1);
-    requireLevelSet((*grids)[0], "object_0", 0.1);
-    CHECK((*grids)[0]->activeVoxelCount() == 0);
-    CHECK(floatGrid((*grids)[0]).tree().getValue(openvdb::Coord(0, 0, 0)) > 0.0f);  // outside
+    const std::vector<VdbFloatGrid> grids = readGrids(dir.file("e.vdb"));
+    REQUIRE(grids.size() == 1);
+    requireLevelSet(grids[0], "object_0", 0.1);
+    CHECK(grids[0].activeVoxelCount() == 0);
+    CHECK(grids[0].value(0, 0, 0) > 0.0f);  // outside
 }
 
 TEST_CASE("voxelize/the same file whatever the thread count") {
@@ -331,12 +315,12 @@ TEST_CASE("figures/voxelize: a unit sphere's file against the exact distance", "
         WARN("set KERF_VOXELIZE_SPHERE_VDB to the file to measure");
         return;
     }
-    const openvdb::GridPtrVecPtr grids = readGrids(path);
-    REQUIRE(grids->size() == 1);
-    const openvdb::FloatGrid& grid = floatGrid((*grids)[0]);
+    const std::vector<VdbFloatGrid> grids = readGrids(path);
+    REQUIRE(grids.size() == 1);
+    const VdbFloatGrid& grid = grids[0];
     const GridReport r = measure(grid, [](const Vec3& p) { return glm::length(p) - 1.0; },
                                  Vec3(-1.1), Vec3(1.1));
-    WARN("h " << grid.voxelSize()[0] << ": " << grid.activeVoxelCount() << " active voxels; value error up to "
+    WARN("h " << grid.voxelSize.x << ": " << grid.activeVoxelCount() << " active voxels; value error up to "
               << r.maxValueError << " voxels; active voxels up to " << r.maxActiveDistance
               << " voxels from the surface; " << r.missing << " missing; " << r.wrongSigns
               << " wrong signs; " << r.crossings << " crossings of the interpolant up to "
