@@ -18,7 +18,7 @@
 // difference from the flat sum. Timings: median of --runs of thread CPU time and of wall time,
 // the storages interleaved within each run so that a busy machine slows all of them alike.
 //
-// Build: cmake -S bench -B build/bench-reference -DKERF_BRICK_BENCH=ON
+// Build: cmake -S bench -B build/bench-reference
 //        cmake --build build/bench-reference --target kerf_brick_bench
 // Run:   kerf_brick_bench [--size N] [--runs R] [--rays K] [--points K] [--slices K] [--brick B]
 //        [--macro M] [--only WORKLOAD] [--ahead-flat V] [--ahead-brick V] [--camera P]

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The bricked-storage benchmark of issue 14 §1 (docs/BENCHMARKS.md, "Bricked storage"): builds
-# kerf_brick_bench (bench/CMakeLists.txt with -DKERF_BRICK_BENCH=ON, which adds kerf's volume
+# kerf_brick_bench (bench/CMakeLists.txt, which adds kerf's volume
 # library) and runs it: a 512³ float field as a flat x-fastest array, a BrickGrid and an
 # OpenVDB FloatGrid read through a ValueAccessor, in one process (1.6 GiB: three copies). About
 # 5 minutes on this 2-core machine. Prints a markdown table and writes it, with the machine's
@@ -22,7 +22,7 @@ command -v cmake >/dev/null || { echo "run_brick_bench.sh: 'cmake' is missing (a
 bench_build="${BENCH_BUILD:-$root/build/bench-reference}"
 mkdir -p bench/out
 # The configure's chatter (kerf's dependencies) goes to a log, shown only when it fails.
-cmake -S bench -B "$bench_build" -DCMAKE_BUILD_TYPE=Release -DKERF_BRICK_BENCH=ON >bench/out/configure.log 2>&1 ||
+cmake -S bench -B "$bench_build" -DCMAKE_BUILD_TYPE=Release >bench/out/configure.log 2>&1 ||
     { cat bench/out/configure.log >&2; exit 1; }
 cmake --build "$bench_build" --target kerf_brick_bench -j"$(nproc)" >/dev/null
 

@@ -31,9 +31,8 @@ inline NodePtr firstObject(const std::string& text) {
     return c.scene->objects[0];
 }
 
-/// The text compiles with exactly one error, at line:col, whose message contains `message`.
-inline void requireOneError(const std::string& text, int line, int col, const std::string& message) {
-    const Compiled c = compileText(text);
+/// The compilation failed with exactly one error, at line:col, whose message contains `message`.
+inline void requireOneError(const Compiled& c, int line, int col, const std::string& message) {
     INFO(c.sink.format());
     REQUIRE_FALSE(c.scene.has_value());
     REQUIRE(c.sink.errorCount() == 1);
@@ -41,6 +40,11 @@ inline void requireOneError(const std::string& text, int line, int col, const st
     CHECK_THAT(d.message, Catch::Matchers::Contains(message));
     CHECK(d.loc.line == line);
     CHECK(d.loc.col == col);
+}
+
+/// The text compiles with exactly one error, at line:col, whose message contains `message`.
+inline void requireOneError(const std::string& text, int line, int col, const std::string& message) {
+    requireOneError(compileText(text), line, col, message);
 }
 
 }  // namespace kerf::test

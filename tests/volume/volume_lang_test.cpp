@@ -42,17 +42,6 @@ const LevelSetGrid* gridBelow(const Node* n) {
     return std::get<VolumeParams>(n->params()).grid.get();
 }
 
-/// One error at line:col containing `message`.
-void requireError(const Compiled& c, int line, int col, const std::string& message) {
-    INFO(c.sink.format());
-    REQUIRE_FALSE(c.scene.has_value());
-    REQUIRE(c.sink.errorCount() == 1);
-    const Diagnostic& d = c.sink.diagnostics().front();
-    CHECK_THAT(d.message, Catch::Matchers::Contains(message));
-    CHECK(d.loc.line == line);
-    CHECK(d.loc.col == col);
-}
-
 }  // namespace
 
 TEST_CASE("volume lang: a level set under transforms and in CSG", "[volume]") {
@@ -90,18 +79,18 @@ TEST_CASE("volume lang: a level set under transforms and in CSG", "[volume]") {
 
 TEST_CASE("volume lang: each mistake is one error at its string", "[volume]") {
     VolumeFolder f;
-    requireError(compileText("object volume \"parts/none.vdb\";\n", f.model()), 1, 15,
+    requireOneError(compileText("object volume \"parts/none.vdb\";\n", f.model()), 1, 15,
                  "cannot use volume 'parts/none.vdb' as a solid: no such file");
-    requireError(compileText("object union {\n  volume \"parts/many.vdb\" grid \"solid\"\n  sphere { radius 1 } };\n",
+    requireOneError(compileText("object union {\n  volume \"parts/many.vdb\" grid \"solid\"\n  sphere { radius 1 } };\n",
                              f.model()),
                  2, 32,
                  "it has no grid named 'solid'; its grids: 'density' (float, fog volume), 'surface' (float, "
                  "level set), 'vel' (vec3s, unknown class)");
-    requireError(compileText("object volume \"parts/many.vdb\" grid \"density\";\n", f.model()), 1, 37,
+    requireOneError(compileText("object volume \"parts/many.vdb\" grid \"density\";\n", f.model()), 1, 37,
                  "grid 'density' is a fog volume (grid class fog volume), not a level set");
-    requireError(compileText("object volume \"parts/many.vdb\" grid \"vel\";\n", f.model()), 1, 37,
+    requireOneError(compileText("object volume \"parts/many.vdb\" grid \"vel\";\n", f.model()), 1, 37,
                  "grid 'vel' holds vec3s values; a solid needs a float level set");
-    requireError(compileText("object volume \"parts/sphere.vdb\" grid 3;\n", f.model()), 1, 39,
+    requireOneError(compileText("object volume \"parts/sphere.vdb\" grid 3;\n", f.model()), 1, 39,
                  "grid expects the grid's name in quotes");
 }
 
