@@ -3,14 +3,14 @@
 /// against one reference per scene (accuracy/measure.h).
 #pragma once
 
-#include "volume/accelerate.h"
 #include <functional>
 #include <string>
 #include <vector>
+#include "volume/octree/accelerate.h"
 
-#include "scene/scene.h"
-#include "accuracy/measure.h"
 #include "accuracy/catalogue.h"
+#include "accuracy/measure.h"
+#include "scene/scene.h"
 
 namespace kerf {
 

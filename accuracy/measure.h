@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "csg/reference.h"
-#include "csg/scene_geometry.h"
+#include "csg/bvh/scene_geometry.h"
+#include "csg/primitives/reference.h"
 #include "csg/trace_context.h"
 #include "render/camera.h"
 
@@ -15,8 +15,8 @@ namespace kerf {
 /// The pixel-centre rays of a width × height image, row by row from the top.
 std::vector<Ray> primaryRays(const Camera& camera, int width, int height);
 
-/// The reference first hit of every ray (csg/reference.h), computed once per scene and shared
-/// by every measurement of it. Computed in parallel (it is deterministic per ray).
+/// The reference first hit of every ray (csg/primitives/reference.h), computed once per scene and
+/// shared by every measurement of it. Computed in parallel (it is deterministic per ray).
 struct ReferenceImage {
     std::vector<ReferenceHit> hits;  ///< one per ray, in the order of the rays
     double seconds = 0;              ///< wall time spent computing it

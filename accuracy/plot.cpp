@@ -19,12 +19,9 @@ const char* const kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
 
 const char* dashFor(TraceMethod method) {
     switch (method) {
-        case TraceMethod::Closed:
-            return "";
-        case TraceMethod::Interval:
-            return "8,4";
-        case TraceMethod::SphereTrace:
-            return "2,3";
+        case TraceMethod::Closed: return "";
+        case TraceMethod::Interval: return "8,4";
+        case TraceMethod::SphereTrace: return "2,3";
     }
     return "";
 }

@@ -79,11 +79,28 @@ std::string defaultTable(const AccuracyBenchResult& result) {
 namespace {
 
 std::vector<std::string> csvColumns() {
-    return {"scene", "method", "tolerance", "is_default", "width", "height", "rays", "runs",
-            "median_seconds", "ns_per_ray", "rays_per_second", "root_steps_per_ray", "both_hit",
-            "max_rel_error", "mean_rel_error", "p99_rel_error", "max_normal_error_deg",
-            "over_tolerance", "over_tolerance_not_thin", "hit_miss_mismatches",
-            "mismatches_not_thin", "uncertain_rays"};
+    return {"scene",
+            "method",
+            "tolerance",
+            "is_default",
+            "width",
+            "height",
+            "rays",
+            "runs",
+            "median_seconds",
+            "ns_per_ray",
+            "rays_per_second",
+            "root_steps_per_ray",
+            "both_hit",
+            "max_rel_error",
+            "mean_rel_error",
+            "p99_rel_error",
+            "max_normal_error_deg",
+            "over_tolerance",
+            "over_tolerance_not_thin",
+            "hit_miss_mismatches",
+            "mismatches_not_thin",
+            "uncertain_rays"};
 }
 
 }  // namespace
@@ -97,12 +114,27 @@ std::string accuracyCsv(const AccuracyBenchResult& result) {
     const auto i = [](long long v) { return std::to_string(v); };
     for (const AccuracyRow& row : result.rows) {
         const AccuracyMeasurement& m = row.m;
-        table.addRow({row.scene, traceMethodName(row.method), g(row.tolerance),
-                      i(row.isDefaultTolerance ? 1 : 0), i(row.width), i(row.height), i(m.rays),
-                      i(m.runs), e(m.medianSeconds), g(m.nsPerRay), g(m.raysPerSecond),
-                      g(m.rootStepsPerRay), i(m.bothHit), e(m.maxRelError), e(m.meanRelError),
-                      e(m.p99RelError), e(m.maxNormalErrorDegrees), i(m.overTolerance),
-                      i(m.overToleranceNotThin), i(m.hitMissMismatches), i(m.mismatchesNotThin),
+        table.addRow({row.scene,
+                      traceMethodName(row.method),
+                      g(row.tolerance),
+                      i(row.isDefaultTolerance ? 1 : 0),
+                      i(row.width),
+                      i(row.height),
+                      i(m.rays),
+                      i(m.runs),
+                      e(m.medianSeconds),
+                      g(m.nsPerRay),
+                      g(m.raysPerSecond),
+                      g(m.rootStepsPerRay),
+                      i(m.bothHit),
+                      e(m.maxRelError),
+                      e(m.meanRelError),
+                      e(m.p99RelError),
+                      e(m.maxNormalErrorDegrees),
+                      i(m.overTolerance),
+                      i(m.overToleranceNotThin),
+                      i(m.hitMissMismatches),
+                      i(m.mismatchesNotThin),
                       i(m.uncertainRays)});
     }
     return table.text();

@@ -45,7 +45,8 @@ std::string lowerExtension(const std::string& path) {
 Part readPart(const std::string& path) {
     const std::string ext = lowerExtension(path);
     if (ext == ".png" || ext == ".jpg" || ext == ".jpeg")
-        throw UsageError("part '" + path + "': a PNG or JPEG file holds the region alone, not its "
+        throw UsageError("part '" + path +
+                         "': a PNG or JPEG file holds the region alone, not its "
                          "place in the full image; render the regions to .exr (or .tif)");
     Part part;
     part.path = path;
@@ -111,9 +112,8 @@ void checkTiling(const std::vector<Part>& parts) {
     for (const Part& p : parts) {
         if (p.window.fullWidth != width || p.window.fullHeight != height)
             throw UsageError("parts of different images: '" + first.path + "' is part of a " +
-                             std::to_string(width) + "x" + std::to_string(height) +
-                             " image, '" + p.path + "' of a " +
-                             std::to_string(p.window.fullWidth) + "x" +
+                             std::to_string(width) + "x" + std::to_string(height) + " image, '" +
+                             p.path + "' of a " + std::to_string(p.window.fullWidth) + "x" +
                              std::to_string(p.window.fullHeight) + " one");
         if (p.image.channels != first.image.channels)
             throw UsageError("parts with different channels: '" + first.path + "' has " +
@@ -179,10 +179,10 @@ int runAssemble(const AssembleCommandLine& line) {
     Image full(first.window.fullWidth, first.window.fullHeight, first.image.channels);
     for (const Part& p : parts)
         for (int y = 0; y < p.image.height; ++y)
-            std::copy_n(&p.image.pixels[size_t(y) * p.image.width * p.image.channels],
-                        size_t(p.image.width) * p.image.channels,
-                        &full.pixels[(size_t(p.window.y + y) * full.width + p.window.x) *
-                                     full.channels]);
+            std::copy_n(
+                &p.image.pixels[size_t(y) * p.image.width * p.image.channels],
+                size_t(p.image.width) * p.image.channels,
+                &full.pixels[(size_t(p.window.y + y) * full.width + p.window.x) * full.channels]);
     writeImage(full, line.output);
     return kExitSuccess;
 }

@@ -5,11 +5,11 @@
 #include <filesystem>
 #include <iostream>
 
-#include "app/exit_codes.h"
-#include "app/model_loader.h"
 #include "accuracy/bench.h"
 #include "accuracy/plot.h"
 #include "accuracy/report.h"
+#include "app/exit_codes.h"
+#include "app/model_loader.h"
 #include "io/atomic_file.h"
 #include "io/text_file.h"
 

@@ -1,7 +1,7 @@
 /// @file app/cli_bench.h
 /// @brief `kerf bench accuracy [--out DIR] [--width W] [--height H] [--runs N]
-/// [--scenes a,b,…] [--methods closed,interval,sphere-trace] [--accel A] [--scene-dir DIR] [--quick]`:
-/// the speed-against-error report (accuracy/bench.h) as CSV, SVG plot and Markdown.
+/// [--scenes a,b,…] [--methods closed,interval,sphere-trace] [--accel A] [--scene-dir DIR]
+/// [--quick]`: the speed-against-error report (accuracy/bench.h) as CSV, SVG plot and Markdown.
 #pragma once
 
 #include <string>

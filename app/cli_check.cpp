@@ -1,14 +1,14 @@
 /// @file app/cli_check.cpp
 #include "app/cli_check.h"
 
-#include "csg/surfaces.h"
+#include "csg/primitives/surfaces.h"
 
 #include "app/exit_codes.h"
 #include "app/model_loader.h"
 #include "csg/format.h"
-#include "csg/tree_stats.h"
+#include "csg/tree/tree_stats.h"
 #include "mesh/mesh_shape.h"
-#include "volume/level_set_grid.h"
+#include "volume/grids/level_set_grid.h"
 
 #include <CLI/CLI.hpp>
 
@@ -44,8 +44,8 @@ std::string describeBounds(const Bounds3& b) {
     double scale = 0.0;  // the largest finite coordinate
     for (const double v : {b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z})
         if (std::isfinite(v)) scale = std::max(scale, std::fabs(v));
-    return "x " + axisRange(b.lo.x, b.hi.x, scale) + "  y " + axisRange(b.lo.y, b.hi.y, scale) + "  z " +
-           axisRange(b.lo.z, b.hi.z, scale);
+    return "x " + axisRange(b.lo.x, b.hi.x, scale) + "  y " + axisRange(b.lo.y, b.hi.y, scale) +
+           "  z " + axisRange(b.lo.z, b.hi.z, scale);
 }
 
 /// The distinct shared data (`get` of a node) of the scene's leaves of one kind, in the order
@@ -57,7 +57,8 @@ std::vector<const T*> distinctLeafData(const Scene& scene, NodeKind kind, Get ge
     std::unordered_set<const Node*> seen;
     std::unordered_set<const T*> seenData;
     std::vector<const Node*> stack;
-    for (auto it = scene.objects.rbegin(); it != scene.objects.rend(); ++it) stack.push_back(it->get());
+    for (auto it = scene.objects.rbegin(); it != scene.objects.rend(); ++it)
+        stack.push_back(it->get());
     while (!stack.empty()) {
         const Node* node = stack.back();
         stack.pop_back();
@@ -74,14 +75,16 @@ std::vector<const T*> distinctLeafData(const Scene& scene, NodeKind kind, Get ge
 
 /// The distinct mesh shapes of the scene (`mesh "file"`).
 std::vector<const MeshShape*> meshShapes(const Scene& scene) {
-    return distinctLeafData<MeshShape>(scene, NodeKind::Mesh,
-                                       [](const Node& n) { return std::get<MeshParams>(n.params()).shape.get(); });
+    return distinctLeafData<MeshShape>(scene, NodeKind::Mesh, [](const Node& n) {
+        return std::get<MeshParams>(n.params()).shape.get();
+    });
 }
 
 /// The distinct level sets of the scene (`volume "file.vdb"`).
 std::vector<const LevelSetGrid*> levelSets(const Scene& scene) {
-    return distinctLeafData<LevelSetGrid>(scene, NodeKind::Volume,
-                                          [](const Node& n) { return std::get<VolumeParams>(n.params()).grid.get(); });
+    return distinctLeafData<LevelSetGrid>(scene, NodeKind::Volume, [](const Node& n) {
+        return std::get<VolumeParams>(n.params()).grid.get();
+    });
 }
 
 }  // namespace
@@ -95,9 +98,10 @@ void printVolumeReports(const Scene& scene, std::ostream& out) {
         if (h.y != h.x || h.z != h.x) out << " x " << number(h.y, h.y) << " x " << number(h.z, h.z);
         out << "\n";
         out << "    active voxels:        " << info.activeVoxels << "\n";
-        out << "    bounds (file space):  " << describeBounds(info.worldFromIndex.map(grid->insideBounds()))
-            << "\n";
-        out << "    bricks:               " << grid->brickCount() << " (" << grid->memoryBytes() / 1024 << " KiB)\n";
+        out << "    bounds (file space):  "
+            << describeBounds(info.worldFromIndex.map(grid->insideBounds())) << "\n";
+        out << "    bricks:               " << grid->brickCount() << " ("
+            << grid->memoryBytes() / 1024 << " KiB)\n";
     }
 }
 
@@ -109,11 +113,13 @@ void printMeshReports(const Scene& scene, std::ostream& out) {
         out << "    triangles:            " << r.triangles << "\n";
         out << "    boundary edges:       " << r.boundaryEdges << "\n";
         out << "    non-manifold edges:   " << r.nonManifoldEdges << "\n";
-        out << "    inconsistent edges:   " << r.inconsistentEdges << " (two faces running an edge the same way)\n";
+        out << "    inconsistent edges:   " << r.inconsistentEdges
+            << " (two faces running an edge the same way)\n";
         out << "    degenerate triangles: " << r.degenerateTriangles << "\n";
-        out << "    solid:                " << (r.solid ? "yes" : "no (renders as a surface; not a CSG operand)")
-            << "\n";
-        if (r.firstBadEdge) out << "    first bad edge:       " << describeBadEdge(*r.firstBadEdge) << "\n";
+        out << "    solid:                "
+            << (r.solid ? "yes" : "no (renders as a surface; not a CSG operand)") << "\n";
+        if (r.firstBadEdge)
+            out << "    first bad edge:       " << describeBadEdge(*r.firstBadEdge) << "\n";
         out << "    BVH nodes:            " << shape->bvh().nodeCount() << "\n";
     }
 }
@@ -137,19 +143,19 @@ void printSceneSummary(const std::string& model, const Scene& scene, std::ostrea
 
     out << model << ": ok\n";
     out << "  objects:     " << scene.objects.size() << "\n";
-    size_t surfaces = 0;  // csg/surfaces.h: rendered, but not sliced nor meshed
+    size_t surfaces = 0;  // csg/primitives/surfaces.h: rendered, but not sliced nor meshed
     for (const NodePtr& object : scene.objects) surfaces += isSurfaceTree(*object) ? 1 : 0;
     if (surfaces > 0) out << "  surfaces:    " << surfaces << " (no inside: left out of slices)\n";
     out << "  materials:   " << declaredMaterials << " (plus the default)\n";
     out << "  lights:      " << scene.lights.size() << "\n";
     // Instanced first: what a ray may meet, as the tree would be written out in full.
-    out << "  primitives:  " << (trees.instancesSaturated ? "more than " : "") << trees.instances << " ("
-        << trees.primitives << " unique)\n";
+    out << "  primitives:  " << (trees.instancesSaturated ? "more than " : "") << trees.instances
+        << " (" << trees.primitives << " unique)\n";
     out << "  csg depth:   " << trees.depth << "\n";
     out << "  bounds:      " << describeBounds(bounds) << "\n";
     out << "  mist:        " << (scene.mist.enabled ? "yes" : "no") << "\n";
-    out << "  render:      " << r.width << " x " << r.height << ", spp " << r.spp
-        << ", max depth " << r.maxDepth << "\n";
+    out << "  render:      " << r.width << " x " << r.height << ", spp " << r.spp << ", max depth "
+        << r.maxDepth << "\n";
     printMeshReports(scene, out);
     printVolumeReports(scene, out);
 }

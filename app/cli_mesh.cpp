@@ -6,7 +6,7 @@
 #include "app/option_text.h"
 #include "app/output_paths.h"
 #include "io/mesh_writers.h"
-#include "volume/mesh_export.h"
+#include "volume/export/mesh_export.h"
 
 #include <CLI/CLI.hpp>
 
@@ -49,7 +49,8 @@ void printMeshStats(const MeshExportStats& s, const TriangleMesh& mesh, double s
                   "  hausdorff (mesh to surface): %.3e (%.4f voxels), mean %.3e, over %llu points "
                   "(vertices, edge midpoints, centroids), %llu first-order\n",
                   s.distance.hausdorff, s.distance.hausdorff / voxel, s.distance.mean,
-                  (unsigned long long)s.distance.samples, (unsigned long long)s.distance.firstOrder);
+                  (unsigned long long)s.distance.samples,
+                  (unsigned long long)s.distance.firstOrder);
     out << line;
     std::snprintf(line, sizeof line, "  volume:               mesh %.9g, model in [%.9g, %.9g]\n",
                   s.meshVolume, s.modelVolume.lo, s.modelVolume.hi);
@@ -88,12 +89,15 @@ int runMesh(const MeshCommandLine& line) {
     options.adaptivity = parseNumber("--adaptivity", line.adaptivity);
     options.measure = line.stats;
     if (!std::isfinite(options.voxel) || !(options.voxel > 0.0))
-        throw UsageError("--voxel must be a finite number greater than 0 (got '" + line.voxel + "')");
+        throw UsageError("--voxel must be a finite number greater than 0 (got '" + line.voxel +
+                         "')");
     if (!(options.adaptivity >= 0.0 && options.adaptivity <= 1.0))
-        throw UsageError("--adaptivity must be a number from 0 to 1 (got '" + line.adaptivity + "')");
+        throw UsageError("--adaptivity must be a number from 0 to 1 (got '" + line.adaptivity +
+                         "')");
     MeshFormat format;
     if (!meshFormatFromPath(line.output, format))
-        throw UsageError("-o: the mesh file must end in .obj, .ply or .stl (got '" + line.output + "')");
+        throw UsageError("-o: the mesh file must end in .obj, .ply or .stl (got '" + line.output +
+                         "')");
     if (samePath(line.output, line.model))
         throw UsageError("-o: the output '" + line.output + "' is the model file");
     checkOutputWritable(line.output);  // before any work: exit 1, nothing done
@@ -114,8 +118,8 @@ int runMesh(const MeshCommandLine& line) {
         std::cerr << "kerf: warning: left out " << stats.unboundedSkipped
                   << " unbounded object(s) (such as half-spaces): a mesh must be closed\n";
     if (mesh.triangles.empty())
-        std::cerr << "kerf: warning: the solid has no surface at this voxel size; '"
-                  << line.output << "' holds an empty mesh\n";
+        std::cerr << "kerf: warning: the solid has no surface at this voxel size; '" << line.output
+                  << "' holds an empty mesh\n";
 
     const auto writeStart = std::chrono::steady_clock::now();
     MeshArrays arrays;

@@ -1,6 +1,6 @@
 /// @file app/cli_mesh.h
 /// @brief `kerf mesh FILE -o OUT.{obj,ply,stl} --voxel H [--adaptivity A] [--stats] [--quiet]`:
-/// a watertight triangle mesh of the model's bounded objects (volume/mesh_export.h).
+/// a watertight triangle mesh of the model's bounded objects (volume/export/mesh_export.h).
 #pragma once
 
 #include <string>
@@ -14,7 +14,7 @@ namespace kerf::app {
 struct MeshCommandLine {
     std::string model;
     std::string output;
-    std::string voxel;       ///< parsed here, so "nan" or "-1" get kerf's own message
+    std::string voxel;  ///< parsed here, so "nan" or "-1" get kerf's own message
     std::string adaptivity = "0";
     bool stats = false;
     bool quiet = false;

@@ -10,8 +10,8 @@
 #include "app/region_option.h"
 #include "app/render_setup.h"
 #include "app/stats_report.h"
-#include "io/image.h"
 #include "csg/normalize.h"
+#include "io/image.h"
 #include "render/render.h"
 #include "scene/limits.h"
 
@@ -69,7 +69,8 @@ void checkNumbers(const RenderCommandLine& line) {
 /// --section: `x=V`, `y=V` or `z=V` (the plane at that coordinate, the side above it
 /// removed), or `PX,PY,PZ:NX,NY,NZ` (a point and the normal towards the removed side).
 SectionPlane parseSection(const std::string& spec, const Vec3& color) {
-    const std::string usage = "--section expects x=V, y=V, z=V or PX,PY,PZ:NX,NY,NZ (got '" + spec + "')";
+    const std::string usage =
+        "--section expects x=V, y=V, z=V or PX,PY,PZ:NX,NY,NZ (got '" + spec + "')";
     SectionPlane plane;
     plane.color = color;
     if (const auto axisSpec = parseAxisSpec(spec)) {
@@ -100,21 +101,23 @@ std::vector<SectionPlane> sectionPlanes(const RenderCommandLine& line) {
     if (!line.sectionColor.empty()) {
         const std::optional<Vec3> c = parseTriple(line.sectionColor);
         if (!c || c->x < 0 || c->y < 0 || c->z < 0)
-            throw UsageError("--section-color expects R,G,B, each 0 or more (got '" + line.sectionColor + "')");
+            throw UsageError("--section-color expects R,G,B, each 0 or more (got '" +
+                             line.sectionColor + "')");
         color = *c;
     }
     std::vector<SectionPlane> planes;
     for (const std::string& spec : line.sections) planes.push_back(parseSection(spec, color));
     if (planes.size() > size_t(kMaxSections))
-        throw UsageError("--section: at most " + std::to_string(kMaxSections) + " section planes (got " +
-                         std::to_string(planes.size()) + ")");
+        throw UsageError("--section: at most " + std::to_string(kMaxSections) +
+                         " section planes (got " + std::to_string(planes.size()) + ")");
     return planes;
 }
 
 OutputPlan planOutputs(const RenderCommandLine& line) {
     OutputPlan plan;
     // One frame of a sequence comes with its own name (app/frame_sequence.h).
-    plan.color = line.outputOption->count() > 0 || line.frame ? line.output : defaultOutputPath(line.model);
+    plan.color =
+        line.outputOption->count() > 0 || line.frame ? line.output : defaultOutputPath(line.model);
     if (plan.color.empty()) throw UsageError("-o: the output file name is empty");
     for (const std::string& spec : line.aovs) plan.aovs.push_back(parseAovSpec(spec));
     checkOutputPlan(plan, line.model);
@@ -152,11 +155,13 @@ RenderOptions renderOptions(const RenderCommandLine& line, const OutputPlan& pla
     if (!line.filter.empty()) {
         options.filter = parseFilter(line.filter);
         if (!options.filter)
-            throw UsageError("--filter must be box, gaussian or mitchell (got '" + line.filter + "')");
+            throw UsageError("--filter must be box, gaussian or mitchell (got '" + line.filter +
+                             "')");
     }
     if (line.noiseOption && line.noiseOption->count() > 0) {
         if (!(line.noise >= 0.0 && std::isfinite(line.noise)))
-            throw UsageError("--noise must be a standard error of 0 or more (got " + std::to_string(line.noise) + ")");
+            throw UsageError("--noise must be a standard error of 0 or more (got " +
+                             std::to_string(line.noise) + ")");
         options.noise = line.noise;
     }
     if (!line.sampler.empty()) {
@@ -177,13 +182,14 @@ RenderOptions renderOptions(const RenderCommandLine& line, const OutputPlan& pla
 CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
     CLI::App* cmd = parent.add_subcommand("render", "Render a model file to an image");
     cmd->add_option("FILE", line.model, "The model file (.kerf)")->required();
-    line.outputOption = cmd->add_option(
-        "-o,--output", line.output,
-        "Output image; the format follows the extension: .png .jpg (8-bit sRGB), "
-        ".exr .tif (float linear). Default: the model's base name with .png, here");
+    line.outputOption =
+        cmd->add_option("-o,--output", line.output,
+                        "Output image; the format follows the extension: .png .jpg (8-bit sRGB), "
+                        ".exr .tif (float linear). Default: the model's base name with .png, here");
     line.widthOption = cmd->add_option("--width", line.width, "Image width in pixels");
     line.heightOption = cmd->add_option("--height", line.height, "Image height in pixels");
-    line.sppOption = cmd->add_option("--spp", line.spp, "Samples per pixel, exactly (placed by --sampler)");
+    line.sppOption =
+        cmd->add_option("--spp", line.spp, "Samples per pixel, exactly (placed by --sampler)");
     line.threadsOption =
         cmd->add_option("--threads", line.threads, "Worker threads; 0 uses every hardware thread");
     line.toleranceOption = cmd->add_option(
@@ -233,13 +239,15 @@ CLI::App* addRenderCommand(CLI::App& parent, RenderCommandLine& line) {
     cmd->add_option("--section-color", line.sectionColor,
                     "The colour of the caps of --section planes (default 0.85,0.2,0.15)")
         ->type_name("R,G,B");
-    line.regionOption = cmd->add_option("--region", line.region,
-                    "Render only the pixels [X0, X1) x [Y0, Y1) of the full image, each equal bit "
-                    "for bit to the same pixel of a full render. An .exr or .tif output keeps "
-                    "the region's place (its data window inside the full display window) and "
-                    "'kerf assemble' stitches such parts; a .png or .jpg holds the region alone "
-                    "and loses its place (assemble refuses it)")
-        ->type_name("X0,Y0,X1,Y1");
+    line.regionOption =
+        cmd->add_option(
+               "--region", line.region,
+               "Render only the pixels [X0, X1) x [Y0, Y1) of the full image, each equal bit "
+               "for bit to the same pixel of a full render. An .exr or .tif output keeps "
+               "the region's place (its data window inside the full display window) and "
+               "'kerf assemble' stitches such parts; a .png or .jpg holds the region alone "
+               "and loses its place (assemble refuses it)")
+            ->type_name("X0,Y0,X1,Y1");
     cmd->add_flag("--stats", line.stats, "Print statistics to stderr");
     cmd->add_flag("-q,--quiet", line.quiet, "No progress bar and no echo lines from the model");
     addFrameOptions(*cmd, line);
@@ -255,7 +263,8 @@ int runRender(const RenderCommandLine& line) {
     const OutputPlan plan = planOutputs(line);
 
     const auto compileStart = Clock::now();
-    std::optional<Scene> scene = loadModel(line.model, std::cerr, line.quiet, line.frame.value_or(SequenceFrame{}));
+    std::optional<Scene> scene =
+        loadModel(line.model, std::cerr, line.quiet, line.frame.value_or(SequenceFrame{}));
     if (!scene) return kExitUsage;
     if (scene->sections.size() + sections.size() > size_t(kMaxSections))
         throw UsageError("--section: the model's " + std::to_string(scene->sections.size()) +
@@ -291,8 +300,9 @@ int runRender(const RenderCommandLine& line) {
         report.width = result.color.width;
         report.height = result.color.height;
         report.spp = options.spp > 0 ? options.spp : scene->settings.spp;
-        report.threads = options.threads > 0 ? options.threads
-                                             : int(std::max(1u, std::thread::hardware_concurrency()));
+        report.threads = options.threads > 0
+                             ? options.threads
+                             : int(std::max(1u, std::thread::hardware_concurrency()));
         report.render = result.stats;
         report.secondsCompile = secondsCompile;
         report.secondsWrite = secondsWrite;
@@ -314,7 +324,8 @@ RenderSetup setUpRender(const RenderCommandLine& line, bool probeOutputs) {
     if (probeOutputs) {
         setup.plan = planOutputs(line);
     } else {
-        setup.plan.color = line.outputOption->count() > 0 ? line.output : defaultOutputPath(line.model);
+        setup.plan.color =
+            line.outputOption->count() > 0 ? line.output : defaultOutputPath(line.model);
         for (const std::string& spec : line.aovs) setup.plan.aovs.push_back(parseAovSpec(spec));
     }
     setup.options = renderOptions(line, setup.plan);

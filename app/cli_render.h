@@ -35,7 +35,7 @@ struct RenderCommandLine {
     std::string filter;   ///< empty: the model's render settings
     double noise = -1.0;  ///< < 0: the model's render settings
     std::vector<std::string> aovs;
-    std::string frames;    ///< --frames A-B or N: a sequence (app/frame_sequence.h); empty: one image
+    std::string frames;  ///< --frames A-B or N: a sequence (app/frame_sequence.h); empty: one image
     std::string sequence;  ///< --sequence A-B: the frames `time` runs across; empty: --frames
     /// Set by the frame loop for each frame it hands to runRender: the model's `frame` and
     /// `time`, with `output` and `aovs` already that frame's file names.

@@ -1,6 +1,6 @@
 /// @file app/cli_slice.h
-/// @brief `kerf slice FILE (--plane A=V | --point P --normal N | --stack A=FROM:TO:STEP [--layers A-B])
-/// -o OUT.{svg,dxf,png} [--tolerance E] [--outline] [--width W | --pixel H] [--stats] [-q]`:
+/// @brief `kerf slice FILE (--plane A=V | --point P --normal N | --stack A=FROM:TO:STEP [--layers
+/// A-B]) -o OUT.{svg,dxf,png} [--tolerance E] [--outline] [--width W | --pixel H] [--stats] [-q]`:
 /// the section of a model's solids by a plane (slice/), written by the output's extension.
 #pragma once
 
@@ -15,12 +15,13 @@ namespace kerf::app {
 
 struct SliceCommandLine {
     std::string model;
-    std::string output;   ///< for --stack, a pattern with one %d (e.g. cut_%04d.svg)
-    std::string plane;    ///< "z=0.5"
-    std::string point;    ///< "x,y,z" with --normal
+    std::string output;  ///< for --stack, a pattern with one %d (e.g. cut_%04d.svg)
+    std::string plane;   ///< "z=0.5"
+    std::string point;   ///< "x,y,z" with --normal
     std::string normal;
-    std::string stack;    ///< "z=0:2.4:0.05"
-    std::string layers;   ///< with --stack: "A-B" or "N", the layers kept (numbered from 0); empty: all
+    std::string stack;  ///< "z=0:2.4:0.05"
+    std::string
+        layers;  ///< with --stack: "A-B" or "N", the layers kept (numbered from 0); empty: all
     double tolerance = 1e-7;  ///< relative to the model's size
     bool outline = false;     ///< SVG: strokes only
     int width = 0;            ///< PNG: pixels across the section (default 1024 for the longer side)

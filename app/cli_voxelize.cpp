@@ -6,7 +6,7 @@
 #include "app/option_text.h"
 #include "app/output_paths.h"
 #include "io/atomic_file.h"
-#include "volume/voxelize.h"
+#include "volume/export/voxelize.h"
 
 #include <CLI/CLI.hpp>
 
@@ -37,15 +37,17 @@ void printVoxelizeStats(const VoxelizeStats& s, double secondsCompile, double se
     char line[320];
     out << "kerf voxelize statistics\n";
     for (const VoxelizedGrid& g : s.grids) {
-        std::snprintf(line, sizeof line,
-                      "  %s: %llu active voxels (estimated %llu), dense alternative %.4g voxels "
-                      "(%.4g x the active ones); %llu cells classified, %llu boundary blocks of "
-                      "8^3, %llu triangles, %llu distance queries; %.3f s (mesh %.3f s, band %.3f s)\n",
-                      g.name.c_str(), (unsigned long long)g.activeVoxels,
-                      (unsigned long long)g.estimatedVoxels, g.denseVoxels,
-                      g.activeVoxels ? g.denseVoxels / double(g.activeVoxels) : 0.0,
-                      (unsigned long long)g.cellsClassified, (unsigned long long)g.boundaryBlocks,
-                      (unsigned long long)g.triangles, (unsigned long long)g.distanceQueries, g.seconds, g.secondsMesh, g.secondsBand);
+        std::snprintf(
+            line, sizeof line,
+            "  %s: %llu active voxels (estimated %llu), dense alternative %.4g voxels "
+            "(%.4g x the active ones); %llu cells classified, %llu boundary blocks of "
+            "8^3, %llu triangles, %llu distance queries; %.3f s (mesh %.3f s, band %.3f s)\n",
+            g.name.c_str(), (unsigned long long)g.activeVoxels,
+            (unsigned long long)g.estimatedVoxels, g.denseVoxels,
+            g.activeVoxels ? g.denseVoxels / double(g.activeVoxels) : 0.0,
+            (unsigned long long)g.cellsClassified, (unsigned long long)g.boundaryBlocks,
+            (unsigned long long)g.triangles, (unsigned long long)g.distanceQueries, g.seconds,
+            g.secondsMesh, g.secondsBand);
         out << line;
     }
     std::snprintf(line, sizeof line, "  time: compile %.3f s, write %.3f s, total %.3f s\n",
@@ -80,9 +82,11 @@ int runVoxelize(const VoxelizeCommandLine& line) {
     options.voxel = parseNumber("--voxel", line.voxel);
     options.band = parseNumber("--band", line.band);
     if (!std::isfinite(options.voxel) || !(options.voxel > 0.0))
-        throw UsageError("--voxel must be a finite number greater than 0 (got '" + line.voxel + "')");
+        throw UsageError("--voxel must be a finite number greater than 0 (got '" + line.voxel +
+                         "')");
     if (!(options.band >= kVoxelizeMinBand && options.band <= kVoxelizeMaxBand))
-        throw UsageError("--band must be a number of voxels from 1 to 16 (got '" + line.band + "')");
+        throw UsageError("--band must be a number of voxels from 1 to 16 (got '" + line.band +
+                         "')");
     if (!line.maxVoxels.empty()) {
         const double n = parseNumber("--max-voxels", line.maxVoxels);
         if (!(n >= 1.0 && n <= 9.0e18) || n != std::floor(n))

@@ -1,6 +1,6 @@
 /// @file app/cli_voxelize.h
 /// @brief `kerf voxelize FILE -o OUT.vdb --voxel H [--band W] [--max-voxels N] [--stats]
-/// [--quiet]`: each solid object as an OpenVDB narrow-band level set (volume/voxelize.h).
+/// [--quiet]`: each solid object as an OpenVDB narrow-band level set (volume/export/voxelize.h).
 #pragma once
 
 #include <string>

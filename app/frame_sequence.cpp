@@ -36,17 +36,22 @@ std::string expandAovSpec(const std::string& spec, int64_t n) {
 }  // namespace
 
 void addFrameOptions(CLI::App& render, RenderCommandLine& line) {
-    line.framesOption = render.add_option(
-        "--frames", line.frames,
-        "Render a sequence: frames A to B (or the one frame N), each compiled with the model's "
-        "`frame` = its number and `time` = (frame - first) / count; -o and each --aov file need "
-        "a %04d-style number (default: the model's name with _%04d.png)")
-        ->type_name("A-B|N");
-    line.sequenceOption = render.add_option(
-        "--sequence", line.sequence,
-        "With --frames: the whole sequence `time` runs across (default: the --frames range); a "
-        "farm that splits 1-240 into jobs gives each its --frames part and --sequence 1-240")
-        ->type_name("A-B");
+    line.framesOption =
+        render
+            .add_option("--frames", line.frames,
+                        "Render a sequence: frames A to B (or the one frame N), each compiled with "
+                        "the model's "
+                        "`frame` = its number and `time` = (frame - first) / count; -o and each "
+                        "--aov file need "
+                        "a %04d-style number (default: the model's name with _%04d.png)")
+            ->type_name("A-B|N");
+    line.sequenceOption = render
+                              .add_option("--sequence", line.sequence,
+                                          "With --frames: the whole sequence `time` runs across "
+                                          "(default: the --frames range); a "
+                                          "farm that splits 1-240 into jobs gives each its "
+                                          "--frames part and --sequence 1-240")
+                              ->type_name("A-B");
 }
 
 bool wantsFrameSequence(const RenderCommandLine& line) {
@@ -64,16 +69,19 @@ SequenceFrame sequenceFrame(int64_t n, int64_t first, int64_t count) {
     return f;
 }
 
-int renderFrames(const RenderCommandLine& line, const std::function<int(const RenderCommandLine&)>& renderOne) {
+int renderFrames(const RenderCommandLine& line,
+                 const std::function<int(const RenderCommandLine&)>& renderOne) {
     const NumberRange frames = parseNumberRange(line.frames, "--frames");
     if (frames.count() > kMaxFramesPerRun)
-        throw UsageError("--frames " + line.frames + ": at most " + std::to_string(kMaxFramesPerRun) +
+        throw UsageError("--frames " + line.frames + ": at most " +
+                         std::to_string(kMaxFramesPerRun) +
                          " frames in one run; split the range into jobs (see --sequence)");
     NumberRange sequence = frames;
     if (line.sequenceOption && line.sequenceOption->count() > 0) {
         sequence = parseNumberRange(line.sequence, "--sequence");
         if (!sequence.contains(frames.first) || !sequence.contains(frames.last))
-            throw UsageError("--frames " + line.frames + " is not inside --sequence " + line.sequence);
+            throw UsageError("--frames " + line.frames + " is not inside --sequence " +
+                             line.sequence);
     }
     const bool outputGiven = line.outputOption && line.outputOption->count() > 0;
     const std::string pattern = outputGiven ? line.output : defaultFramePattern(line.model);
@@ -106,12 +114,15 @@ int renderFrames(const RenderCommandLine& line, const std::function<int(const Re
     for (size_t i = 0; i < lines.size(); ++i) {
         const RenderCommandLine& one = lines[i];
         if (!line.quiet || line.stats)
-            std::cerr << "kerf: frame " << one.frame->frame << " (" << i + 1 << " of " << lines.size()
-                      << ", time " << one.frame->time << "): " << one.output << "\n";
+            std::cerr << "kerf: frame " << one.frame->frame << " (" << i + 1 << " of "
+                      << lines.size() << ", time " << one.frame->time << "): " << one.output
+                      << "\n";
         const int code = renderOne(one);
         if (code != kExitSuccess) {
             std::cerr << "kerf: error: frame " << one.frame->frame << " failed";
-            if (i > 0) std::cerr << "; frames " << frames.first << " to " << one.frame->frame - 1 << " were written";
+            if (i > 0)
+                std::cerr << "; frames " << frames.first << " to " << one.frame->frame - 1
+                          << " were written";
             std::cerr << "\n";
             return code;
         }

@@ -32,6 +32,7 @@ SequenceFrame sequenceFrame(int64_t n, int64_t first, int64_t count);
 /// names, printing a line per frame (unless --quiet) and a header before each frame's --stats.
 /// Stops at the first frame that fails and returns its exit code. Throws UsageError for bad
 /// options.
-int renderFrames(const RenderCommandLine& line, const std::function<int(const RenderCommandLine&)>& renderOne);
+int renderFrames(const RenderCommandLine& line,
+                 const std::function<int(const RenderCommandLine&)>& renderOne);
 
 }  // namespace kerf::app

@@ -11,8 +11,8 @@
 #include "app/exit_codes.h"
 #include "io/image.h"
 
-#include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
+#include <CLI/CLI.hpp>
 
 #include <exception>
 #include <iostream>
@@ -25,9 +25,10 @@ using namespace kerf::app;
 /// Parses and runs; usage and write errors become their exit codes here, anything else
 /// propagates to main().
 int run(int argc, char** argv) {
-    CLI::App cli("kerf: a solid-modelling ray tracer. Model files (.kerf) describe CSG trees of "
-                 "implicit solids, traced exactly and rendered Whitted-style.",
-                 "kerf");
+    CLI::App cli(
+        "kerf: a solid-modelling ray tracer. Model files (.kerf) describe CSG trees of "
+        "implicit solids, traced exactly and rendered Whitted-style.",
+        "kerf");
     cli.set_version_flag("--version", std::string("kerf ") + KERF_VERSION);
     cli.require_subcommand(1);
 

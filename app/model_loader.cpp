@@ -28,16 +28,19 @@ std::string unreadableReason(const std::string& path) {
 
 }  // namespace
 
-std::optional<Scene> loadModel(const std::string& path, std::ostream& err, bool quiet, SequenceFrame frame) {
+std::optional<Scene> loadModel(const std::string& path, std::ostream& err, bool quiet,
+                               SequenceFrame frame) {
     const std::string reason = unreadableReason(path);
     if (!reason.empty()) {
         err << "kerf: error: cannot read model file '" << path << "': " << reason << "\n";
         return std::nullopt;
     }
     DiagnosticSink sink;
-    // OpenSCAD's exported CSG trees (.csg) have their own reader; everything else is kerf's language.
-    std::optional<Scene> scene = isOpenScadCsgPath(path) ? compileOpenScadFile(path, sink)
-                                                        : compileFile(path, sink, EvalLimits{}, frame);
+    // OpenSCAD's exported CSG trees (.csg) have their own reader; everything else is kerf's
+    // language.
+    std::optional<Scene> scene = isOpenScadCsgPath(path)
+                                     ? compileOpenScadFile(path, sink)
+                                     : compileFile(path, sink, EvalLimits{}, frame);
     if (!sink.diagnostics().empty()) err << sink.format(!quiet);  // --quiet silences echo
     if (!scene && !sink.hasErrors()) {
         // The contract says errors are reported; never fail silently if one was not.

@@ -13,8 +13,8 @@
 namespace kerf::app {
 
 /// Compiles the model at `path` (an OpenSCAD .csg export when its extension is .csg,
-/// lang/openscad_csg.h; else a .kerf model). On failure prints to `err` either `kerf: error: cannot read
-/// model file …` or the compiler's diagnostics, and returns nullopt (the caller exits with
+/// lang/openscad_csg.h; else a .kerf model). On failure prints to `err` either `kerf: error: cannot
+/// read model file …` or the compiler's diagnostics, and returns nullopt (the caller exits with
 /// kExitUsage). Warnings are printed too when the model compiles.
 /// `quiet` leaves out the model's echo lines (errors and warnings are always printed).
 /// `frame` sets the predefined `frame` and `time` of a .kerf model (`kerf render --frames`).

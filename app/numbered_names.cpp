@@ -41,7 +41,8 @@ NumberRange parseNumberRange(const std::string& text, const std::string& option)
     }
     if (range.first < 0 || range.last < 0) throw UsageError(usage);
     if (range.first > range.last)
-        throw UsageError(option + ": the range " + text + " is empty (the first number is above the last)");
+        throw UsageError(option + ": the range " + text +
+                         " is empty (the first number is above the last)");
     return range;
 }
 
@@ -54,9 +55,11 @@ namespace {
 
 /// The single conversion of a pattern, or a UsageError naming `option`.
 Conversion findConversion(const std::string& pattern, const std::string& option) {
-    const std::string usage = option + ": the name needs exactly one %d or %0Nd (N from 1 to 9) for the number, "
-                                       "e.g. out/turntable_%04d.png, and %% for a percent sign; got '" +
-                              pattern + "'";
+    const std::string usage =
+        option +
+        ": the name needs exactly one %d or %0Nd (N from 1 to 9) for the number, "
+        "e.g. out/turntable_%04d.png, and %% for a percent sign; got '" +
+        pattern + "'";
     Conversion found;
     int conversions = 0;
     for (size_t i = 0; i < pattern.size(); ++i) {
@@ -70,7 +73,8 @@ Conversion findConversion(const std::string& pattern, const std::string& option)
         size_t j = i + 1;
         if (j < pattern.size() && pattern[j] == '0') {
             ++j;
-            if (j >= pattern.size() || !std::isdigit(static_cast<unsigned char>(pattern[j])) || pattern[j] == '0')
+            if (j >= pattern.size() || !std::isdigit(static_cast<unsigned char>(pattern[j])) ||
+                pattern[j] == '0')
                 throw UsageError(usage);
             c.width = pattern[j] - '0';
             ++j;
@@ -105,7 +109,8 @@ std::string expandNumberPattern(const std::string& pattern, int64_t number) {
     const Conversion c = findConversion(pattern, "the name");
     std::string digits = std::to_string(number);
     if (digits.size() < size_t(c.width)) digits.insert(0, size_t(c.width) - digits.size(), '0');
-    return unescapePercent(pattern.substr(0, c.begin)) + digits + unescapePercent(pattern.substr(c.end));
+    return unescapePercent(pattern.substr(0, c.begin)) + digits +
+           unescapePercent(pattern.substr(c.end));
 }
 
 }  // namespace kerf::app

@@ -30,7 +30,8 @@ std::optional<PixelRect> parseRegion(const CLI::Option* option, const std::strin
     if (option == nullptr || option->count() == 0) return std::nullopt;
     const std::string usage =
         "--region expects X0,Y0,X1,Y1: whole pixel numbers, the half-open rectangle "
-        "[X0, X1) x [Y0, Y1) (got '" + text + "')";
+        "[X0, X1) x [Y0, Y1) (got '" +
+        text + "')";
     std::vector<int> v;
     size_t start = 0;
     for (;;) {
@@ -51,10 +52,10 @@ std::optional<PixelRect> parseRegion(const CLI::Option* option, const std::strin
 void checkRegionInside(const PixelRect& r, int width, int height) {
     if (r.x1 > width || r.y1 > height)
         throw UsageError("--region " + std::to_string(r.x0) + "," + std::to_string(r.y0) + "," +
-                         std::to_string(r.x1) + "," + std::to_string(r.y1) +
-                         " is not inside the " + std::to_string(width) + "x" +
-                         std::to_string(height) + " image (X1 at most " + std::to_string(width) +
-                         ", Y1 at most " + std::to_string(height) + ")");
+                         std::to_string(r.x1) + "," + std::to_string(r.y1) + " is not inside the " +
+                         std::to_string(width) + "x" + std::to_string(height) +
+                         " image (X1 at most " + std::to_string(width) + ", Y1 at most " +
+                         std::to_string(height) + ")");
 }
 
 ImageWindow windowOf(const RenderResult& result) {

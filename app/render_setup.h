@@ -14,7 +14,7 @@
 namespace kerf::app {
 
 struct RenderSetup {
-    std::optional<PixelRect> region;    ///< --region, checked against the image once known
+    std::optional<PixelRect> region;     ///< --region, checked against the image once known
     std::vector<SectionPlane> sections;  ///< --section planes
     OutputPlan plan;
     RenderOptions options;  ///< without region and progress

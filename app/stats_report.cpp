@@ -35,13 +35,13 @@ void printStats(const RunReport& report, std::ostream& out) {
     std::string samples = std::to_string(s.samplesPerPixel);
     if (s.samplesPerPixel != report.spp)
         samples += " (requested " + std::to_string(report.spp) + ")";
-    out << line("samples per pixel", samples + ", " + samplerName(s.sampler) + ", " +
-                                         filterName(s.filter) + " filter");
+    out << line("samples per pixel",
+                samples + ", " + samplerName(s.sampler) + ", " + filterName(s.filter) + " filter");
     const uint64_t pixels = uint64_t(report.width) * uint64_t(report.height);
     if (pixels > 0 && s.samplesTaken != pixels * uint64_t(std::max(s.samplesPerPixel, 1)))
-        out << line("samples taken", count(s.samplesTaken) +
-                                         formatDouble(" (%.3g per pixel, adaptive)",
-                                                      double(s.samplesTaken) / double(pixels)));
+        out << line("samples taken",
+                    count(s.samplesTaken) + formatDouble(" (%.3g per pixel, adaptive)",
+                                                         double(s.samplesTaken) / double(pixels)));
     out << line("threads", std::to_string(report.threads));
     out << line("tolerance", formatDouble("%.3g (relative)", s.tolerance));
     out << line("camera rays", count(s.cameraRays));
@@ -71,24 +71,28 @@ void printStats(const RunReport& report, std::ostream& out) {
                         formatDouble("%.3g", double(o.prunedTapeOps) / double(o.boundaryCells)) +
                             formatDouble(" of %.3g ops per cell",
                                          double(o.fullTapeOps) / double(o.boundaryCells)));
-        out << line("cells visited / ray", formatDouble("%.3g", double(s.trace.cellsVisited) /
-                                                                      double(std::max<uint64_t>(rays, 1))));
-        out << line("octree build", seconds(s.secondsAccel) + " (coarse levels; bricks during trace)");
+        out << line("cells visited / ray",
+                    formatDouble("%.3g", double(s.trace.cellsVisited) /
+                                             double(std::max<uint64_t>(rays, 1))));
+        out << line("octree build",
+                    seconds(s.secondsAccel) + " (coarse levels; bricks during trace)");
     }
     if (s.beamsUsed && s.beams.pixels > 0)
-        out << line("camera beams", count(s.beams.slices) + " slices classified, " +
-                                        formatDouble("%.3g per pixel", double(s.beams.slices) /
-                                                                           double(s.beams.pixels)) +
-                                        formatDouble(", mean start %.3g", s.beams.startSum /
-                                                                              double(s.beams.pixels)));
+        out << line(
+            "camera beams",
+            count(s.beams.slices) + " slices classified, " +
+                formatDouble("%.3g per pixel", double(s.beams.slices) / double(s.beams.pixels)) +
+                formatDouble(", mean start %.3g", s.beams.startSum / double(s.beams.pixels)));
     // Only scenes with meshes walk a triangle BVH (its root is visited by any ray that reaches
     // a mesh's box): others print nothing more.
     if (s.trace.meshNodes > 0 || s.trace.triangleTests > 0) {
         const double perRay = 1.0 / double(std::max<uint64_t>(rays, 1));
-        out << line("mesh BVH nodes", count(s.trace.meshNodes) +
-                                          formatDouble(" (%.3g per ray)", double(s.trace.meshNodes) * perRay));
-        out << line("triangle tests", count(s.trace.triangleTests) +
-                                          formatDouble(" (%.3g per ray)", double(s.trace.triangleTests) * perRay));
+        out << line("mesh BVH nodes",
+                    count(s.trace.meshNodes) +
+                        formatDouble(" (%.3g per ray)", double(s.trace.meshNodes) * perRay));
+        out << line("triangle tests",
+                    count(s.trace.triangleTests) +
+                        formatDouble(" (%.3g per ray)", double(s.trace.triangleTests) * perRay));
     }
     if (rays > 0)
         out << line("interval evals / ray",
@@ -97,7 +101,8 @@ void printStats(const RunReport& report, std::ostream& out) {
     out << line("setup", seconds(s.secondsSetup));
     out << line("trace", seconds(s.secondsTrace));
     out << line("write", seconds(report.secondsWrite));
-    const double total = report.secondsCompile + s.secondsSetup + s.secondsTrace + report.secondsWrite;
+    const double total =
+        report.secondsCompile + s.secondsSetup + s.secondsTrace + report.secondsWrite;
     out << line("total", seconds(total));
     if (s.secondsTrace > 0) {
         out << line("rays per second", formatDouble("%.4g", double(rays) / s.secondsTrace));

@@ -13,7 +13,7 @@
 //   - samples: trilinear samples at random points, summed;
 //   - slice x / y / z: whole planes normal to x, y, z, every voxel read, summed.
 // The three storages read the same floats and interpolate with the same formula
-// (volume/brick_grid.h trilinear(), the same cell choice), so their sums must agree bit for
+// (volume/grids/brick_grid.h trilinear(), the same cell choice), so their sums must agree bit for
 // bit; OpenVDB's own BoxSampler (its own formula) is timed too on the march, with its
 // difference from the flat sum. Timings: median of --runs of thread CPU time and of wall time,
 // the storages interleaved within each run so that a busy machine slows all of them alike.
@@ -40,7 +40,7 @@
 #include <string>
 #include <vector>
 
-#include "volume/brick_grid.h"
+#include "volume/grids/brick_grid.h"
 
 using namespace kerf;
 
@@ -300,15 +300,9 @@ double slices(const S& s, int axis, int count, int n) {
         for (int b = 0; b < n; ++b)
             for (int a = 0; a < n; ++a) {
                 switch (axis) {
-                    case 0:
-                        sum += s.voxel(c, a, b);
-                        break;
-                    case 1:
-                        sum += s.voxel(a, c, b);
-                        break;
-                    default:
-                        sum += s.voxel(a, b, c);
-                        break;
+                    case 0: sum += s.voxel(c, a, b); break;
+                    case 1: sum += s.voxel(a, c, b); break;
+                    default: sum += s.voxel(a, b, c); break;
                 }
             }
     }

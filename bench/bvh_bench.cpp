@@ -2,7 +2,8 @@
 // throughput (1 thread, CPU and wall time; 2 threads, wall time) on three generated meshes,
 // with a brute-force check of a sample of the rays (the same watertight test over every
 // triangle: hit and t must agree bit for bit; shadow rays: occluded or not).
-// Built only when asked: cmake --build build --target kerf_bvh_bench; run: build/mesh/kerf_bvh_bench
+// Built only when asked: cmake --build build --target kerf_bvh_bench; run:
+// build/mesh/kerf_bvh_bench
 // [--size N] (image N×N rays per mesh, default 1024) [--only sphere|city|fan]
 // [--traversal-cost C] [--leaf N] (build options, to tune) [--check RAYS] (brute-force rays
 // per mesh; default as many as 2e8 triangle tests allow) [--scalar] (no AVX2 lanes)
@@ -55,8 +56,8 @@ TriangleMesh bumpySphere(int rows, int cols) {
     for (int i = 1; i < rows; ++i)
         for (int j = 0; j < cols; ++j) {
             const double th = M_PI * i / rows, ph = 2.0 * M_PI * j / cols, r = radius(th, ph);
-            m.positions.push_back(r * Vec3(std::sin(th) * std::cos(ph),
-                                           std::sin(th) * std::sin(ph), std::cos(th)));
+            m.positions.push_back(
+                r * Vec3(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)));
         }
     m.positions.push_back({0, 0, -radius(M_PI, 0)});
     const uint32_t south = uint32_t(m.positions.size() - 1);
@@ -129,8 +130,7 @@ struct Camera {
 BvhBuildOptions gOptions;
 long gCheck = -1;  // brute-force rays per mesh; -1: as many as 2e8 triangle tests allow
 
-void run(const char* name, const TriangleMesh& mesh, const Camera& cam, const Vec3& light,
-         int n) {
+void run(const char* name, const TriangleMesh& mesh, const Camera& cam, const Vec3& light, int n) {
     double build1 = 0, build2 = 0, build1Cpu = 0;
     {
         tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
@@ -207,8 +207,10 @@ void run(const char* name, const TriangleMesh& mesh, const Camera& cam, const Ve
     }
 
     // Brute force on a sample of the primary rays and of the shadow rays: the reference.
-    const size_t sample = gCheck >= 0 ? std::min<size_t>(rays.size(), size_t(gCheck))
-                                      : std::max<size_t>(1, std::min<size_t>(rays.size(), 2e8 / mesh.triangles.size()));
+    const size_t sample =
+        gCheck >= 0
+            ? std::min<size_t>(rays.size(), size_t(gCheck))
+            : std::max<size_t>(1, std::min<size_t>(rays.size(), 2e8 / mesh.triangles.size()));
     size_t mismatches = 0;
     for (size_t s = 0; s < sample; ++s) {
         const size_t i = (s * 7919) % rays.size();
@@ -244,25 +246,28 @@ void run(const char* name, const TriangleMesh& mesh, const Camera& cam, const Ve
                 bvh.nodeCount(), bvh.depth());
     std::printf("  build: %.3f s (1 thread; CPU time %.3f s), %.3f s (2 threads)\n", build1,
                 build1Cpu, build2);
-    std::printf("  primary: %zu rays, %zu hits, %.3f s, %.2f M rays/s (CPU time %.3f s, "
-                "%.2f M rays/s); per ray %.1f nodes, %.1f triangles\n",
-                rays.size(), hitCount, primary, rays.size() / primary * 1e-6, primaryCpu,
-                rays.size() / primaryCpu * 1e-6,
-                double(primaryStats.nodesVisited) / rays.size(),
-                double(primaryStats.trianglesTested) / rays.size());
-    std::printf("  shadow: %zu rays, %zu occluded, %.3f s, %.2f M rays/s (CPU time %.3f s, "
-                "%.2f M rays/s); per ray %.1f nodes, %.1f triangles\n",
-                shadowRays.size(), shadowed, shadow, shadowRays.size() / shadow * 1e-6, shadowCpu,
-                shadowRays.size() / shadowCpu * 1e-6,
-                double(shadowStats.nodesVisited) / std::max<size_t>(1, shadowRays.size()),
-                double(shadowStats.trianglesTested) / std::max<size_t>(1, shadowRays.size()));
-    std::printf("  2 threads: primary %.3f s, %.2f M rays/s; shadow %.3f s, %.2f M rays/s "
-                "(wall time); %zu answers differ from 1 thread\n",
-                primary2, rays.size() / primary2 * 1e-6, shadow2,
-                shadowRays.size() / std::max(shadow2, 1e-12) * 1e-6, differ2);
-    std::printf("  brute force on %zu primary rays: %zu differ (hit or t, bitwise); on %zu shadow "
-                "rays: %zu differ\n",
-                sample, mismatches, shadowSample, shadowMismatches);
+    std::printf(
+        "  primary: %zu rays, %zu hits, %.3f s, %.2f M rays/s (CPU time %.3f s, "
+        "%.2f M rays/s); per ray %.1f nodes, %.1f triangles\n",
+        rays.size(), hitCount, primary, rays.size() / primary * 1e-6, primaryCpu,
+        rays.size() / primaryCpu * 1e-6, double(primaryStats.nodesVisited) / rays.size(),
+        double(primaryStats.trianglesTested) / rays.size());
+    std::printf(
+        "  shadow: %zu rays, %zu occluded, %.3f s, %.2f M rays/s (CPU time %.3f s, "
+        "%.2f M rays/s); per ray %.1f nodes, %.1f triangles\n",
+        shadowRays.size(), shadowed, shadow, shadowRays.size() / shadow * 1e-6, shadowCpu,
+        shadowRays.size() / shadowCpu * 1e-6,
+        double(shadowStats.nodesVisited) / std::max<size_t>(1, shadowRays.size()),
+        double(shadowStats.trianglesTested) / std::max<size_t>(1, shadowRays.size()));
+    std::printf(
+        "  2 threads: primary %.3f s, %.2f M rays/s; shadow %.3f s, %.2f M rays/s "
+        "(wall time); %zu answers differ from 1 thread\n",
+        primary2, rays.size() / primary2 * 1e-6, shadow2,
+        shadowRays.size() / std::max(shadow2, 1e-12) * 1e-6, differ2);
+    std::printf(
+        "  brute force on %zu primary rays: %zu differ (hit or t, bitwise); on %zu shadow "
+        "rays: %zu differ\n",
+        sample, mismatches, shadowSample, shadowMismatches);
     std::fflush(stdout);
 }
 
@@ -272,8 +277,10 @@ int main(int argc, char** argv) {
     int n = 1024;
     std::string only;
     for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--size") && i + 1 < argc) n = std::atoi(argv[++i]);
-        else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
+        if (!std::strcmp(argv[i], "--size") && i + 1 < argc)
+            n = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--only") && i + 1 < argc)
+            only = argv[++i];
         else if (!std::strcmp(argv[i], "--traversal-cost") && i + 1 < argc)
             gOptions.traversalCost = std::atof(argv[++i]);
         else if (!std::strcmp(argv[i], "--check") && i + 1 < argc)
@@ -285,7 +292,10 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--leaf") && i + 1 < argc)
             gOptions.maxLeafSize = std::atoi(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: kerf_bvh_bench [--size N] [--only sphere|city|fan] [--traversal-cost C] [--leaf N] [--check RAYS] [--scalar] [--split-depth N]\n");
+            std::fprintf(
+                stderr,
+                "usage: kerf_bvh_bench [--size N] [--only sphere|city|fan] [--traversal-cost C] "
+                "[--leaf N] [--check RAYS] [--scalar] [--split-depth N]\n");
             return 2;
         }
     }

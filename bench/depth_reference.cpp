@@ -50,18 +50,29 @@ Options parseArguments(int argc, char** argv) {
             if (i + 1 >= argc) throw std::runtime_error(arg + " needs a value");
             return argv[++i];
         };
-        if (arg == "--width") o.width = std::stoi(value());
-        else if (arg == "--height") o.height = std::stoi(value());
-        else if (arg == "--threads") o.threads = std::stoi(value());
-        else if (arg == "--compare") o.compare = value();
-        else if (arg == "--write") o.write = value();
-        else if (arg == "--list") o.list = value();
-        else if (arg == "--tolerance") o.tolerance = std::stod(value());
-        else if (!arg.empty() && arg[0] != '-' && o.scene.empty()) o.scene = arg;
-        else throw std::runtime_error("unknown argument " + arg);
+        if (arg == "--width")
+            o.width = std::stoi(value());
+        else if (arg == "--height")
+            o.height = std::stoi(value());
+        else if (arg == "--threads")
+            o.threads = std::stoi(value());
+        else if (arg == "--compare")
+            o.compare = value();
+        else if (arg == "--write")
+            o.write = value();
+        else if (arg == "--list")
+            o.list = value();
+        else if (arg == "--tolerance")
+            o.tolerance = std::stod(value());
+        else if (!arg.empty() && arg[0] != '-' && o.scene.empty())
+            o.scene = arg;
+        else
+            throw std::runtime_error("unknown argument " + arg);
     }
-    if (o.scene.empty()) throw std::runtime_error("usage: depth_reference SCENE.ref --width W "
-                                                  "--height H [--compare KERF.exr] [--write REF.exr]");
+    if (o.scene.empty())
+        throw std::runtime_error(
+            "usage: depth_reference SCENE.ref --width W "
+            "--height H [--compare KERF.exr] [--write REF.exr]");
     if (o.width < 1 || o.height < 1) throw std::runtime_error("bad image size");
     return o;
 }
@@ -135,16 +146,16 @@ void listDisagreements(const std::string& path, const RefImage& image,
     if (!out) throw std::runtime_error(path + ": cannot write");
     for (size_t k = 0; k < ref.size(); ++k) {
         const bool refHit = std::isfinite(ref[k]), kerfHit = std::isfinite(kerf[k]);
-        const bool differ = refHit != kerfHit ||
-                            (refHit && std::fabs(Real(kerf[k]) - ref[k]) > 1e-6L * ref[k]);
+        const bool differ =
+            refHit != kerfHit || (refHit && std::fabs(Real(kerf[k]) - ref[k]) > 1e-6L * ref[k]);
         if (differ)
             std::fprintf(out.get(), "%ld %ld %.12Lg %.12g %.3Lg\n", long(k % width),
                          long(k / width), ref[k], double(kerf[k]), image.thickness[k]);
     }
 }
 
-void printComparison(const RefImage& image, const std::vector<float>& kerf, int width,
-                     int height, double tolerance, double seconds) {
+void printComparison(const RefImage& image, const std::vector<float>& kerf, int width, int height,
+                     double tolerance, double seconds) {
     const std::vector<Real>& ref = image.depth;
     long refOnly = 0, kerfOnly = 0, both = 0, missBoth = 0, offSurface = 0, floatExact = 0;
     long beyondTolerance = 0, thin = 0;
@@ -153,11 +164,16 @@ void printComparison(const RefImage& image, const std::vector<float>& kerf, int 
     long worstPixel = -1;
     for (size_t k = 0; k < ref.size(); ++k) {
         const bool refHit = std::isfinite(ref[k]), kerfHit = std::isfinite(kerf[k]);
-        if (!refHit && !kerfHit) { ++missBoth; continue; }
+        if (!refHit && !kerfHit) {
+            ++missBoth;
+            continue;
+        }
         const bool refThin = refHit && image.thickness[k] <= Real(tolerance) * ref[k];
         if (refHit != kerfHit) {
-            if (refThin) ++thin;
-            else (refHit ? refOnly : kerfOnly)++;
+            if (refThin)
+                ++thin;
+            else
+                (refHit ? refOnly : kerfOnly)++;
             continue;
         }
         ++both;
@@ -175,16 +191,17 @@ void printComparison(const RefImage& image, const std::vector<float>& kerf, int 
         std::nth_element(errors.begin(), errors.begin() + long(at), errors.end());
         p99 = errors[at];
     }
-    std::printf("{\"pixels\": %ld, \"both_hit\": %ld, \"both_miss\": %ld, "
-                "\"ref_hit_kerf_miss\": %ld, \"kerf_hit_ref_miss\": %ld, "
-                "\"rel_max\": %.3e, \"rel_mean\": %.3e, \"rel_p99\": %.3e, "
-                "\"worst_pixel\": [%ld, %ld], \"over_1e-6\": %ld, \"tolerance\": %.3g, "
-                "\"over_tolerance\": %ld, \"thin\": %ld, \"float_exact\": %ld, "
-                "\"reference_seconds\": %.2f}\n",
-                long(width) * height, both, missBoth, refOnly, kerfOnly, worst,
-                both ? sum / double(both) : 0.0, p99, worstPixel < 0 ? -1 : worstPixel % width,
-                worstPixel < 0 ? -1 : worstPixel / width, offSurface, tolerance, beyondTolerance,
-                thin, floatExact, seconds);
+    std::printf(
+        "{\"pixels\": %ld, \"both_hit\": %ld, \"both_miss\": %ld, "
+        "\"ref_hit_kerf_miss\": %ld, \"kerf_hit_ref_miss\": %ld, "
+        "\"rel_max\": %.3e, \"rel_mean\": %.3e, \"rel_p99\": %.3e, "
+        "\"worst_pixel\": [%ld, %ld], \"over_1e-6\": %ld, \"tolerance\": %.3g, "
+        "\"over_tolerance\": %ld, \"thin\": %ld, \"float_exact\": %ld, "
+        "\"reference_seconds\": %.2f}\n",
+        long(width) * height, both, missBoth, refOnly, kerfOnly, worst,
+        both ? sum / double(both) : 0.0, p99, worstPixel < 0 ? -1 : worstPixel % width,
+        worstPixel < 0 ? -1 : worstPixel / width, offSurface, tolerance, beyondTolerance, thin,
+        floatExact, seconds);
 }
 
 }  // namespace

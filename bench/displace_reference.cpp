@@ -11,7 +11,7 @@
 ///
 /// The solid is what lang/lower_displace.cpp builds: {|p − c| − R − D·h(p − c) ≤ 0}, with
 /// h(q) = noise(q/S, K) for noise and 2·Σₒ|noise(2ᵒq/S, K + o)|/2ᵒ / Σₒ2⁻ᵒ − 1 for turbulence.
-/// The noise itself is kerf's long-double gradientNoise (csg/noise.cpp, compiled in): the
+/// The noise itself is kerf's long-double gradientNoise (csg/tape/noise.cpp, compiled in): the
 /// oracle checks kerf's root finding on its own function, not the noise's definition.
 ///
 /// Root finding is sound by a Lipschitz bound: |∂noise/∂xᵢ| ≤ kNoiseSlopeBound, so
@@ -30,7 +30,7 @@
 #include <thread>
 #include <vector>
 
-#include "csg/noise.h"
+#include "csg/tape/noise.h"
 
 namespace {
 

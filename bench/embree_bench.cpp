@@ -2,7 +2,8 @@
 // (issue 12 §3; docs/BENCHMARKS.md, "Meshes against Embree"). A bench-only peer: Embree is
 // never linked into kerf. For each PLY file (bench/gen_bench_meshes.py writes the three):
 //   - build time on 1 and 2 threads: kerf's TriangleBvh under a TBB global_control, Embree's
-//     scene with RTC_BUILD_QUALITY_HIGH on a device configured "threads=N" (median of --build-runs);
+//     scene with RTC_BUILD_QUALITY_HIGH on a device configured "threads=N" (median of
+//     --build-runs);
 //   - primary rays (a pinhole camera framing the mesh, N × N jittered rays, closestHit against
 //     rtcIntersect1) and shadow rays (from kerf's primary hits toward a point light, anyHit
 //     against rtcOccluded1) on 1 and 2 threads: single rays, as a renderer calls them; the
@@ -18,7 +19,8 @@
 // against the same triangles; kerf computes in double, Embree in float.
 //
 // Build: cmake --build build/bench-reference --target kerf_embree_bench (bench/CMakeLists.txt)
-// Run:   kerf_embree_bench [--size N] [--fan-size N] [--runs R] [--build-runs R] [--robust] MESH.ply...
+// Run:   kerf_embree_bench [--size N] [--fan-size N] [--runs R] [--build-runs R] [--robust]
+// MESH.ply...
 #include "mesh/mesh_loader.h"
 #include "mesh/triangle_bvh.h"
 
@@ -44,11 +46,11 @@ using namespace kerf;
 namespace {
 
 struct Options {
-    int size = 1024;     ///< N: N × N primary rays per mesh
-    int fanSize = 128;   ///< N for meshes named fan (both are slow there: keep runs short)
-    int runs = 5;        ///< ray timings: median of this many
-    int buildRuns = 3;   ///< build timings: median of this many
-    bool robust = false; ///< RTC_SCENE_FLAG_ROBUST (watertight Embree), to explain mismatches
+    int size = 1024;      ///< N: N × N primary rays per mesh
+    int fanSize = 128;    ///< N for meshes named fan (both are slow there: keep runs short)
+    int runs = 5;         ///< ray timings: median of this many
+    int buildRuns = 3;    ///< build timings: median of this many
+    bool robust = false;  ///< RTC_SCENE_FLAG_ROBUST (watertight Embree), to explain mismatches
 };
 
 double secondsSince(std::chrono::steady_clock::time_point t0) {
@@ -97,15 +99,16 @@ public:
         RTCGeometry g = rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
         rtcSetGeometryBuildQuality(g, RTC_BUILD_QUALITY_HIGH);
         // vertices holds one float more than 3 per vertex: Embree reads 16 bytes at a time.
-        rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                   vertices.data(), 0, 3 * sizeof(float), vertices.size() / 3);
-        rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices.data(),
-                                   0, 3 * sizeof(uint32_t), indices.size() / 3);
+        rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, vertices.data(),
+                                   0, 3 * sizeof(float), vertices.size() / 3);
+        rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, indices.data(), 0,
+                                   3 * sizeof(uint32_t), indices.size() / 3);
         rtcCommitGeometry(g);
         rtcAttachGeometry(mScene, g);
         rtcReleaseGeometry(g);
         rtcCommitScene(mScene);
-        if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE) embreeFail(device.get(), "the build");
+        if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE)
+            embreeFail(device.get(), "the build");
     }
     ~EmbreeScene() { rtcReleaseScene(mScene); }
     EmbreeScene(const EmbreeScene&) = delete;
@@ -131,8 +134,8 @@ std::vector<Ray> primaryRays(const TriangleMesh& mesh, const Bounds3& box, const
     for (const Vec3& p : mesh.positions) {
         const Vec3 q = p - eye;
         const double depth = glm::dot(q, forward);
-        halfTan = std::max({halfTan, std::fabs(glm::dot(q, right0)) / depth,
-                            std::fabs(glm::dot(q, up0)) / depth});
+        halfTan = std::max(
+            {halfTan, std::fabs(glm::dot(q, right0)) / depth, std::fabs(glm::dot(q, up0)) / depth});
     }
     const Vec3 right = halfTan * right0, up = halfTan * up0;
     std::mt19937_64 rng(2);
@@ -262,8 +265,12 @@ double edgeGap(const TriangleMesh& mesh, uint32_t triangle, const Ray& ray, doub
 // signed volumes carry 64 bits: far finer than either library's answer.
 double bruteForce(const TriangleMesh& mesh, const Ray& ray) {
     using L = long double;
-    struct V { L x, y, z; };
-    auto sub = [](const Vec3& p, const Vec3& o) { return V{L(p.x) - L(o.x), L(p.y) - L(o.y), L(p.z) - L(o.z)}; };
+    struct V {
+        L x, y, z;
+    };
+    auto sub = [](const Vec3& p, const Vec3& o) {
+        return V{L(p.x) - L(o.x), L(p.y) - L(o.y), L(p.z) - L(o.z)};
+    };
     auto det = [](const V& a, const V& b, const V& c) {  // a · (b × c)
         return a.x * (b.y * c.z - b.z * c.y) + a.y * (b.z * c.x - b.x * c.z) +
                a.z * (b.x * c.y - b.y * c.x);
@@ -271,7 +278,8 @@ double bruteForce(const TriangleMesh& mesh, const Ray& ray) {
     const V d{L(ray.dir.x), L(ray.dir.y), L(ray.dir.z)};
     L best = std::numeric_limits<L>::infinity();
     for (const auto& tri : mesh.triangles) {
-        const V a = sub(mesh.positions[tri[0]], ray.origin), b = sub(mesh.positions[tri[1]], ray.origin),
+        const V a = sub(mesh.positions[tri[0]], ray.origin),
+                b = sub(mesh.positions[tri[1]], ray.origin),
                 c = sub(mesh.positions[tri[2]], ray.origin);
         const L w0 = det(d, b, c), w1 = det(d, c, a), w2 = det(d, a, b);
         if ((w0 < 0 || w1 < 0 || w2 < 0) && (w0 > 0 || w1 > 0 || w2 > 0)) continue;
@@ -284,9 +292,9 @@ double bruteForce(const TriangleMesh& mesh, const Ray& ray) {
 }
 
 struct Figures {
-    double build[2][3];     ///< [kerf, Embree][threads] in s (index 1, 2)
-    double primary[2][3];   ///< M rays/s; index 0: 1 thread by CPU time
-    double shadow[2][3];    ///< M rays/s; index 0: 1 thread by CPU time
+    double build[2][3];    ///< [kerf, Embree][threads] in s (index 1, 2)
+    double primary[2][3];  ///< M rays/s; index 0: 1 thread by CPU time
+    double shadow[2][3];   ///< M rays/s; index 0: 1 thread by CPU time
 };
 
 void runMesh(const std::string& path, const Options& opt) {
@@ -294,7 +302,8 @@ void runMesh(const std::string& path, const Options& opt) {
     const std::string stem = name.substr(0, name.find('.'));
     const TriangleMesh mesh = loadMesh(path);
     std::vector<float> vertices;
-    for (const Vec3& p : mesh.positions) vertices.insert(vertices.end(), {float(p.x), float(p.y), float(p.z)});
+    for (const Vec3& p : mesh.positions)
+        vertices.insert(vertices.end(), {float(p.x), float(p.y), float(p.z)});
     vertices.push_back(0.0f);
     std::vector<uint32_t> indices;
     for (const auto& t : mesh.triangles) indices.insert(indices.end(), t.begin(), t.end());
@@ -305,30 +314,40 @@ void runMesh(const std::string& path, const Options& opt) {
     for (int run = 0; run < opt.buildRuns; ++run)
         for (int threads = 1; threads <= 2; ++threads) {
             tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-            const EmbreeDevice device(threads);  // made before the clock starts, as a renderer would
+            const EmbreeDevice device(
+                threads);  // made before the clock starts, as a renderer would
             auto t0 = std::chrono::steady_clock::now();
-            { const TriangleBvh bvh(mesh); builds[0][threads].push_back(secondsSince(t0)); }
+            {
+                const TriangleBvh bvh(mesh);
+                builds[0][threads].push_back(secondsSince(t0));
+            }
             t0 = std::chrono::steady_clock::now();
-            { const EmbreeScene scene(device, vertices, indices, opt.robust);
-              builds[1][threads].push_back(secondsSince(t0)); }
+            {
+                const EmbreeScene scene(device, vertices, indices, opt.robust);
+                builds[1][threads].push_back(secondsSince(t0));
+            }
         }
     for (int lib = 0; lib < 2; ++lib)
-        for (int threads = 1; threads <= 2; ++threads) f.build[lib][threads] = median(builds[lib][threads]);
+        for (int threads = 1; threads <= 2; ++threads)
+            f.build[lib][threads] = median(builds[lib][threads]);
 
     const TriangleBvh bvh(mesh);
     const EmbreeDevice device(2);
     const EmbreeScene embree(device, vertices, indices, opt.robust);
     const Bounds3 box = bvh.bounds();
     // The view and the light: from the front, a little to the side and above.
-    const Vec3 view = stem == "city" ? Vec3(-0.6, -0.7, 0.4)
-                      : stem == "fan" ? Vec3(0.2, -0.5, 1.0) : Vec3(0.3, -1.6, 1.0);
+    const Vec3 view = stem == "city"  ? Vec3(-0.6, -0.7, 0.4)
+                      : stem == "fan" ? Vec3(0.2, -0.5, 1.0)
+                                      : Vec3(0.3, -1.6, 1.0);
     const int n = stem == "fan" ? opt.fanSize : opt.size;
     const std::vector<Ray> rays = primaryRays(mesh, box, view, n);
     const double radius = 0.5 * glm::length(box.extent());
     const Vec3 light = toFloat(box.center() + 3.0 * radius * glm::normalize(Vec3(0.5, -0.3, 1.0)));
 
     Hits kh(rays.size()), eh(rays.size());
-    struct alignas(64) ThreadStats : BvhStats { uint64_t rays = 0; };  // a cache line each
+    struct alignas(64) ThreadStats : BvhStats {
+        uint64_t rays = 0;
+    };  // a cache line each
     std::vector<ThreadStats> stats(2);
     auto kerfPrimary = [&](int k, size_t a, size_t b) {
         stats[k].rays += b - a;
@@ -366,7 +385,8 @@ void runMesh(const std::string& path, const Options& opt) {
     std::vector<char> kerfOccluded(shadowRays.size()), embreeOccluded(shadowRays.size());
     auto kerfShadow = [&](int k, size_t a, size_t b) {
         stats[k].rays += b - a;
-        for (size_t i = a; i < b; ++i) kerfOccluded[i] = bvh.anyHit(shadowRays[i], kShadowStart, 1.0, stats[k]);
+        for (size_t i = a; i < b; ++i)
+            kerfOccluded[i] = bvh.anyHit(shadowRays[i], kShadowStart, 1.0, stats[k]);
     };
     auto embreeShadow = [&](int, size_t a, size_t b) {
         RTCIntersectContext context;
@@ -390,9 +410,8 @@ void runMesh(const std::string& path, const Options& opt) {
     double maxRel = 0.0, maxRelInside = 0.0;  // the latter over rays grazing no edge
     for (size_t i = 0; i < rays.size(); ++i) {
         const bool k = kh.t[i] < kInf, e = eh.t[i] < kInf;
-        const double edge =
-            std::min(k ? edgeGap(mesh, kh.triangle[i], rays[i], kh.t[i]) : kInf,
-                     e ? edgeGap(mesh, eh.triangle[i], rays[i], eh.t[i]) : kInf);
+        const double edge = std::min(k ? edgeGap(mesh, kh.triangle[i], rays[i], kh.t[i]) : kInf,
+                                     e ? edgeGap(mesh, eh.triangle[i], rays[i], eh.t[i]) : kInf);
         kerfHits += k;
         if (k != e) {
             (k ? onlyKerf : onlyEmbree)++;
@@ -425,8 +444,10 @@ void runMesh(const std::string& path, const Options& opt) {
         const double ref = bruteForce(mesh, rays[i]);
         const double t[2] = {kh.t[i], eh.t[i]};
         for (int lib = 0; lib < 2; ++lib) {
-            if ((t[lib] < kInf) != (ref < kInf)) ++wrongHit[lib];
-            else if (ref < kInf) worstDepth[lib] = std::max(worstDepth[lib], std::fabs(t[lib] - ref) / ref);
+            if ((t[lib] < kInf) != (ref < kInf))
+                ++wrongHit[lib];
+            else if (ref < kInf)
+                worstDepth[lib] = std::max(worstDepth[lib], std::fabs(t[lib] - ref) / ref);
         }
     }
 
@@ -436,12 +457,14 @@ void runMesh(const std::string& path, const Options& opt) {
         occluded += kerfOccluded[i];
     }
 
-    std::printf("## %s: %zu triangles; %d x %d primary rays (%zu hit in kerf), %zu shadow rays "
-                "(%zu occluded in kerf); kerf visits %.1f nodes per primary ray, %.1f per shadow ray; "
-                "load average %s\n",
-                stem.c_str(), mesh.triangles.size(), n, n, kerfHits, shadowRays.size(), occluded,
-                kerfNodes, kerfShadowNodes, loadAverage().c_str());
-    std::printf("| %-6s | threads | kerf | Embree | kerf/Embree |\n|---|---|---|---|---|\n", stem.c_str());
+    std::printf(
+        "## %s: %zu triangles; %d x %d primary rays (%zu hit in kerf), %zu shadow rays "
+        "(%zu occluded in kerf); kerf visits %.1f nodes per primary ray, %.1f per shadow ray; "
+        "load average %s\n",
+        stem.c_str(), mesh.triangles.size(), n, n, kerfHits, shadowRays.size(), occluded, kerfNodes,
+        kerfShadowNodes, loadAverage().c_str());
+    std::printf("| %-6s | threads | kerf | Embree | kerf/Embree |\n|---|---|---|---|---|\n",
+                stem.c_str());
     for (int threads = 1; threads <= 2; ++threads)
         std::printf("| build (s) | %d | %.3f | %.3f | %.2f |\n", threads, f.build[0][threads],
                     f.build[1][threads], f.build[0][threads] / f.build[1][threads]);
@@ -454,22 +477,25 @@ void runMesh(const std::string& path, const Options& opt) {
         std::printf("| shadow (M rays/s) | %s | %.3g | %.3g | %.2f |\n", threadsLabel[threads],
                     f.shadow[0][threads], f.shadow[1][threads],
                     f.shadow[0][threads] / f.shadow[1][threads]);
-    std::printf("agreement: %zu pixels hit by kerf only, %zu by Embree only; %zu pixels on "
-                "another triangle; depth: max relative difference %.3g (%.3g on rays grazing no edge), "
-                "%zu pixels over 1e-5; disagreements not grazing an edge: %zu; shadow rays "
-                "disagreeing: %zu\n",
-                onlyKerf, onlyEmbree, otherTriangle, maxRel, maxRelInside, deeper, notGrazing,
-                shadowDiffer);
-    std::printf("reference (long double, every triangle) on %zu rays (%zu disagreeing, the rest "
-                "spread): kerf misjudges hit or miss on %zu, Embree on %zu; max relative depth "
-                "error kerf %.3g, Embree %.3g\n\n",
-                checked.size(), disagreeing, wrongHit[0], wrongHit[1], worstDepth[0], worstDepth[1]);
+    std::printf(
+        "agreement: %zu pixels hit by kerf only, %zu by Embree only; %zu pixels on "
+        "another triangle; depth: max relative difference %.3g (%.3g on rays grazing no edge), "
+        "%zu pixels over 1e-5; disagreements not grazing an edge: %zu; shadow rays "
+        "disagreeing: %zu\n",
+        onlyKerf, onlyEmbree, otherTriangle, maxRel, maxRelInside, deeper, notGrazing,
+        shadowDiffer);
+    std::printf(
+        "reference (long double, every triangle) on %zu rays (%zu disagreeing, the rest "
+        "spread): kerf misjudges hit or miss on %zu, Embree on %zu; max relative depth "
+        "error kerf %.3g, Embree %.3g\n\n",
+        checked.size(), disagreeing, wrongHit[0], wrongHit[1], worstDepth[0], worstDepth[1]);
     std::fflush(stdout);
 }
 
 int usage() {
-    std::fprintf(stderr, "usage: kerf_embree_bench [--size N] [--fan-size N] [--runs R] "
-                         "[--build-runs R] [--robust] MESH.ply...\n");
+    std::fprintf(stderr,
+                 "usage: kerf_embree_bench [--size N] [--fan-size N] [--runs R] "
+                 "[--build-runs R] [--robust] MESH.ply...\n");
     return 2;
 }
 
@@ -485,26 +511,35 @@ int main(int argc, char** argv) {
             char* end = nullptr;
             const long v = std::strtol(argv[++i], &end, 10);
             if (*end || v < lo || v > hi) {
-                std::fprintf(stderr, "kerf_embree_bench: %s must be a whole number %d..%d, not '%s'\n",
+                std::fprintf(stderr,
+                             "kerf_embree_bench: %s must be a whole number %d..%d, not '%s'\n",
                              a.c_str(), lo, hi, argv[i]);
                 std::exit(2);
             }
             out = int(v);
             return true;
         };
-        if (a == "--size") { if (!number(opt.size, 1, 8192)) return usage(); }
-        else if (a == "--fan-size") { if (!number(opt.fanSize, 1, 8192)) return usage(); }
-        else if (a == "--runs") { if (!number(opt.runs, 1, 99)) return usage(); }
-        else if (a == "--build-runs") { if (!number(opt.buildRuns, 1, 99)) return usage(); }
-        else if (a == "--robust") opt.robust = true;
-        else if (!a.empty() && a[0] == '-') return usage();
-        else files.push_back(a);
+        if (a == "--size") {
+            if (!number(opt.size, 1, 8192)) return usage();
+        } else if (a == "--fan-size") {
+            if (!number(opt.fanSize, 1, 8192)) return usage();
+        } else if (a == "--runs") {
+            if (!number(opt.runs, 1, 99)) return usage();
+        } else if (a == "--build-runs") {
+            if (!number(opt.buildRuns, 1, 99)) return usage();
+        } else if (a == "--robust")
+            opt.robust = true;
+        else if (!a.empty() && a[0] == '-')
+            return usage();
+        else
+            files.push_back(a);
     }
     if (files.empty()) return usage();
-    std::printf("kerf_embree_bench: Embree %s, %s scenes; medians of %d build runs and %d ray "
-                "runs; %u hardware threads\n\n", RTC_VERSION_STRING,
-                opt.robust ? "robust" : "default", opt.buildRuns, opt.runs,
-                std::thread::hardware_concurrency());
+    std::printf(
+        "kerf_embree_bench: Embree %s, %s scenes; medians of %d build runs and %d ray "
+        "runs; %u hardware threads\n\n",
+        RTC_VERSION_STRING, opt.robust ? "robust" : "default", opt.buildRuns, opt.runs,
+        std::thread::hardware_concurrency());
     try {
         for (const std::string& file : files) runMesh(file, opt);
     } catch (const MeshError& e) {

@@ -46,7 +46,8 @@ struct Counts {
 bool readChannel(const std::string& path, int channel, Mask& out) {
     OIIO::ImageBuf image(path);
     if (!image.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
-        std::fprintf(stderr, "hit_mask: cannot read %s: %s\n", path.c_str(), image.geterror().c_str());
+        std::fprintf(stderr, "hit_mask: cannot read %s: %s\n", path.c_str(),
+                     image.geterror().c_str());
         return false;
     }
     const OIIO::ImageSpec& spec = image.spec();
@@ -109,7 +110,8 @@ Counts compare(const Mask& a, const Mask& b, bool depths, double tolerance) {
     return c;
 }
 
-bool writeList(const std::string& path, const Mask& a, const Mask& b, bool depths, double tolerance) {
+bool writeList(const std::string& path, const Mask& a, const Mask& b, bool depths,
+               double tolerance) {
     FILE* f = std::fopen(path.c_str(), "w");
     if (!f) {
         std::fprintf(stderr, "hit_mask: cannot write %s\n", path.c_str());
@@ -118,8 +120,10 @@ bool writeList(const std::string& path, const Mask& a, const Mask& b, bool depth
     for (int j = 0; j < a.height; ++j)
         for (int i = 0; i < a.width; ++i) {
             const size_t k = size_t(j) * a.width + i;
-            const bool differ = a.hit[k] != b.hit[k] ||
-                (depths && a.hit[k] && std::fabs(double(a.value[k]) - b.value[k]) > tolerance * b.value[k]);
+            const bool differ =
+                a.hit[k] != b.hit[k] ||
+                (depths && a.hit[k] &&
+                 std::fabs(double(a.value[k]) - b.value[k]) > tolerance * b.value[k]);
             if (differ) std::fprintf(f, "%d %d %.9g %.9g\n", i, j, a.value[k], b.value[k]);
         }
     return std::fclose(f) == 0;
@@ -132,9 +136,12 @@ bool writeDiff(const std::string& path, const Mask& a, const Mask& b) {
         for (int i = 0; i < a.width; ++i) {
             const size_t k = size_t(j) * a.width + i;
             float rgb[3] = {0, 0, 0};
-            if (a.hit[k] && b.hit[k]) rgb[0] = rgb[1] = rgb[2] = 0.35f;
-            else if (a.hit[k]) rgb[0] = 1;
-            else if (b.hit[k]) rgb[1] = 1;
+            if (a.hit[k] && b.hit[k])
+                rgb[0] = rgb[1] = rgb[2] = 0.35f;
+            else if (a.hit[k])
+                rgb[0] = 1;
+            else if (b.hit[k])
+                rgb[1] = 1;
             out.setpixel(i, j, rgb);
         }
     if (!out.write(path)) {
@@ -158,7 +165,10 @@ int selfTest() {
     const float inf = INFINITY;
     int failures = 0;
     auto expect = [&](bool ok, const char* what) {
-        if (!ok) { std::fprintf(stderr, "hit_mask self-test failed: %s\n", what); ++failures; }
+        if (!ok) {
+            std::fprintf(stderr, "hit_mask self-test failed: %s\n", what);
+            ++failures;
+        }
     };
     // First: 8 hits (the centre missed); second: the centre and the corner (0,0) missed, one
     // depth 10 % off. Expect both 7, firstOnly 1 (the corner), secondOnly 0, relMax 0.1.
@@ -180,10 +190,12 @@ int selfTest() {
 }
 
 int usage() {
-    std::fprintf(stderr, "usage: hit_mask depth TEST.exr REFERENCE.exr [--tolerance T] [--diff OUT.png] [--list OUT.txt]\n"
-                         "       hit_mask coverage KERF.exr POV.png [--diff OUT.png] [--list OUT.txt]\n"
-                         "       hit_mask alpha REFERENCE.png TEST.png [--diff OUT.png] [--list OUT.txt]\n"
-                         "       hit_mask --self-test\n");
+    std::fprintf(stderr,
+                 "usage: hit_mask depth TEST.exr REFERENCE.exr [--tolerance T] [--diff OUT.png] "
+                 "[--list OUT.txt]\n"
+                 "       hit_mask coverage KERF.exr POV.png [--diff OUT.png] [--list OUT.txt]\n"
+                 "       hit_mask alpha REFERENCE.png TEST.png [--diff OUT.png] [--list OUT.txt]\n"
+                 "       hit_mask --self-test\n");
     return 2;
 }
 
@@ -198,16 +210,22 @@ int main(int argc, char** argv) {
     double tolerance = 0.0;
     std::string diff, list;
     for (int k = 4; k < argc; ++k) {
-        if (std::strcmp(argv[k], "--tolerance") == 0 && k + 1 < argc) tolerance = std::atof(argv[++k]);
-        else if (std::strcmp(argv[k], "--diff") == 0 && k + 1 < argc) diff = argv[++k];
-        else if (std::strcmp(argv[k], "--list") == 0 && k + 1 < argc) list = argv[++k];
-        else return usage();
+        if (std::strcmp(argv[k], "--tolerance") == 0 && k + 1 < argc)
+            tolerance = std::atof(argv[++k]);
+        else if (std::strcmp(argv[k], "--diff") == 0 && k + 1 < argc)
+            diff = argv[++k];
+        else if (std::strcmp(argv[k], "--list") == 0 && k + 1 < argc)
+            list = argv[++k];
+        else
+            return usage();
     }
     const bool depths = mode == "depth";
     Mask a, b;
-    if (!readChannel(argv[2], alphas ? -1 : 0, a) || !readChannel(argv[3], depths ? 0 : -1, b)) return 1;
+    if (!readChannel(argv[2], alphas ? -1 : 0, a) || !readChannel(argv[3], depths ? 0 : -1, b))
+        return 1;
     if (a.width != b.width || a.height != b.height) {
-        std::fprintf(stderr, "hit_mask: sizes differ (%dx%d, %dx%d)\n", a.width, a.height, b.width, b.height);
+        std::fprintf(stderr, "hit_mask: sizes differ (%dx%d, %dx%d)\n", a.width, a.height, b.width,
+                     b.height);
         return 1;
     }
     alphas ? alphaHits(a) : depthHits(a);
@@ -216,20 +234,23 @@ int main(int argc, char** argv) {
     if (!diff.empty() && !writeDiff(diff, a, b)) return 1;
     if (!list.empty() && !writeList(list, a, b, depths, tolerance)) return 1;
     if (depths)
-        std::printf("{\"pixels\": %ld, \"test_hit\": %ld, \"reference_hit\": %ld, \"both\": %ld, "
-                    "\"test_only\": %ld, \"reference_only\": %ld, \"rel_max\": %.9g, "
-                    "\"tolerance\": %.9g, \"over_tolerance\": %ld}\n",
-                    long(a.value.size()), c.firstHit, c.secondHit, c.both, c.firstOnly,
-                    c.secondOnly, c.relMax, tolerance, c.overTolerance);
+        std::printf(
+            "{\"pixels\": %ld, \"test_hit\": %ld, \"reference_hit\": %ld, \"both\": %ld, "
+            "\"test_only\": %ld, \"reference_only\": %ld, \"rel_max\": %.9g, "
+            "\"tolerance\": %.9g, \"over_tolerance\": %ld}\n",
+            long(a.value.size()), c.firstHit, c.secondHit, c.both, c.firstOnly, c.secondOnly,
+            c.relMax, tolerance, c.overTolerance);
     else if (alphas)
-        std::printf("{\"pixels\": %ld, \"reference_hit\": %ld, \"test_hit\": %ld, \"both\": %ld, "
-                    "\"test_missed\": %ld, \"test_missed_interior\": %ld, \"test_extra\": %ld}\n",
-                    long(a.value.size()), c.firstHit, c.secondHit, c.both, c.firstOnly,
-                    c.firstOnlyInterior, c.secondOnly);
+        std::printf(
+            "{\"pixels\": %ld, \"reference_hit\": %ld, \"test_hit\": %ld, \"both\": %ld, "
+            "\"test_missed\": %ld, \"test_missed_interior\": %ld, \"test_extra\": %ld}\n",
+            long(a.value.size()), c.firstHit, c.secondHit, c.both, c.firstOnly, c.firstOnlyInterior,
+            c.secondOnly);
     else
-        std::printf("{\"pixels\": %ld, \"kerf_hit\": %ld, \"pov_hit\": %ld, \"both\": %ld, "
-                    "\"pov_missed\": %ld, \"pov_missed_interior\": %ld, \"pov_extra\": %ld}\n",
-                    long(a.value.size()), c.firstHit, c.secondHit, c.both, c.firstOnly,
-                    c.firstOnlyInterior, c.secondOnly);
+        std::printf(
+            "{\"pixels\": %ld, \"kerf_hit\": %ld, \"pov_hit\": %ld, \"both\": %ld, "
+            "\"pov_missed\": %ld, \"pov_missed_interior\": %ld, \"pov_extra\": %ld}\n",
+            long(a.value.size()), c.firstHit, c.secondHit, c.both, c.firstOnly, c.firstOnlyInterior,
+            c.secondOnly);
     return 0;
 }

@@ -58,8 +58,10 @@ int writeFog(const char* out, int n) {
                 // An off-centre lumpy cloud: a falloff from a centre shifted up and left,
                 // modulated by two octaves of noise.
                 const double r = std::sqrt((x + 0.15) * (x + 0.15) + (y - 0.1) * (y - 0.1) + z * z);
-                const double fbm = valueNoise(4 * x + 10, 4 * y, 4 * z) + 0.5 * valueNoise(8 * x, 8 * y + 5, 8 * z);
-                const double d = std::min(1.0, std::max(0.0, 1.6 * (0.8 - r) + 0.6 * (fbm - 0.75)) * 2.0);
+                const double fbm = valueNoise(4 * x + 10, 4 * y, 4 * z) +
+                                   0.5 * valueNoise(8 * x, 8 * y + 5, 8 * z);
+                const double d =
+                    std::min(1.0, std::max(0.0, 1.6 * (0.8 - r) + 0.6 * (fbm - 0.75)) * 2.0);
                 if (d > 0.0) acc.setValue(openvdb::Coord(i, j, k), float(d));
             }
     openvdb::io::File file(out);
@@ -92,7 +94,8 @@ bool read(const char* path, Image& im) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc >= 3 && !std::strcmp(argv[1], "write-fog")) return writeFog(argv[2], argc > 3 ? std::atoi(argv[3]) : 256);
+    if (argc >= 3 && !std::strcmp(argv[1], "write-fog"))
+        return writeFog(argv[2], argc > 3 ? std::atoi(argv[3]) : 256);
     if (argc >= 4 && !std::strcmp(argv[1], "const")) {
         Image im;
         if (!read(argv[2], im)) return 1;

@@ -1,5 +1,5 @@
-// kerf's level-set solid (volume/level_set_node.h) against OpenVDB's LevelSetRayIntersector on
-// the same grids and the same rays, one thread, same run (issue 14 §3; docs/BENCHMARKS.md,
+// kerf's level-set solid (volume/grids/level_set_node.h) against OpenVDB's LevelSetRayIntersector
+// on the same grids and the same rays, one thread, same run (issue 14 §3; docs/BENCHMARKS.md,
 // "Level sets against OpenVDB"). A sphere level set of 517³ voxels and a torus, written with
 // OpenVDB and read back by kerf's loader; a pinhole camera's primary rays; hit position and
 // normal from both. Reports rays/s (median of the runs), the depth error in voxels against the
@@ -7,9 +7,9 @@
 // the torus shrunk by one voxel is hit (kerf's closed-form torus) but the level set is missed.
 //
 //   kerf_vdb_ray_bench [--out DIR] [--size N] [--runs R] [--radius-voxels V]
-#include "csg/solids.h"
-#include "volume/level_set_node.h"
-#include "volume/vdb_level_set.h"
+#include "csg/tree/solids.h"
+#include "volume/grids/level_set_node.h"
+#include "volume/grids/vdb_level_set.h"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/LevelSetSphere.h>
@@ -31,9 +31,9 @@ namespace {
 
 struct Options {
     std::string out = "bench/out/vdb";
-    int size = 512;            // image side in pixels
+    int size = 512;  // image side in pixels
     int runs = 5;
-    int radiusVoxels = 256;    // 256 voxels + a 3-voxel band: active voxels span 517³
+    int radiusVoxels = 256;  // 256 voxels + a 3-voxel band: active voxels span 517³
 };
 
 struct Pixel {
@@ -52,7 +52,8 @@ std::vector<Ray> cameraRays(const Vec3& eye, const Vec3& target, double half, in
     rays.reserve(size_t(size) * size);
     for (int j = 0; j < size; ++j)
         for (int i = 0; i < size; ++i) {
-            const double x = (2 * (i + 0.5) / size - 1) * scale, y = (2 * (j + 0.5) / size - 1) * scale;
+            const double x = (2 * (i + 0.5) / size - 1) * scale,
+                         y = (2 * (j + 0.5) / size - 1) * scale;
             rays.push_back({eye, glm::normalize(w + x * u + y * v)});
         }
     return rays;
@@ -81,7 +82,8 @@ double traceKerf(const NodePtr& solid, const std::vector<Ray>& rays, std::vector
 }
 
 /// The same with OpenVDB's LevelSetRayIntersector (world position and normal, as kerf gives).
-double traceVdb(const openvdb::FloatGrid& grid, const std::vector<Ray>& rays, std::vector<Pixel>& px) {
+double traceVdb(const openvdb::FloatGrid& grid, const std::vector<Ray>& rays,
+                std::vector<Pixel>& px) {
     px.assign(rays.size(), {});
     openvdb::tools::LevelSetRayIntersector<openvdb::FloatGrid> lsri(grid);
     const auto start = std::chrono::steady_clock::now();
@@ -124,8 +126,8 @@ struct Result {
 };
 
 /// Runs both tracers `runs` times, alternating; the median rays/s of each.
-Result race(const NodePtr& solid, const openvdb::FloatGrid& grid, const std::vector<Ray>& rays, int runs,
-            std::vector<Pixel>& kerfPx, std::vector<Pixel>& vdbPx) {
+Result race(const NodePtr& solid, const openvdb::FloatGrid& grid, const std::vector<Ray>& rays,
+            int runs, std::vector<Pixel>& kerfPx, std::vector<Pixel>& vdbPx) {
     std::vector<double> k, v;
     for (int i = 0; i < runs; ++i) {
         k.push_back(rays.size() / traceKerf(solid, rays, kerfPx));
@@ -151,8 +153,8 @@ bool sphereT(const Ray& ray, double radius, long double& t) {
     return true;
 }
 
-void depthErrors(const std::vector<Ray>& rays, const std::vector<Pixel>& px, double radius, double voxel,
-                 double& mean, double& worst, int& missed, int& shrunkHits) {
+void depthErrors(const std::vector<Ray>& rays, const std::vector<Pixel>& px, double radius,
+                 double voxel, double& mean, double& worst, int& missed, int& shrunkHits) {
     double sum = 0.0;
     int n = 0;
     worst = 0.0;
@@ -178,10 +180,14 @@ int main(int argc, char** argv) {
     Options o;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
-        if (a == "--out") o.out = argv[i + 1];
-        else if (a == "--size") o.size = std::atoi(argv[i + 1]);
-        else if (a == "--runs") o.runs = std::atoi(argv[i + 1]);
-        else if (a == "--radius-voxels") o.radiusVoxels = std::atoi(argv[i + 1]);
+        if (a == "--out")
+            o.out = argv[i + 1];
+        else if (a == "--size")
+            o.size = std::atoi(argv[i + 1]);
+        else if (a == "--runs")
+            o.runs = std::atoi(argv[i + 1]);
+        else if (a == "--radius-voxels")
+            o.radiusVoxels = std::atoi(argv[i + 1]);
         else {
             std::fprintf(stderr, "kerf_vdb_ray_bench: unknown option %s\n", a.c_str());
             return 2;
@@ -194,8 +200,8 @@ int main(int argc, char** argv) {
     // The sphere.
     const std::string spherePath = o.out + "/sphere.vdb";
     {
-        auto g = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(float(radius), openvdb::Vec3f(0.f),
-                                                                          float(voxel), 3.f);
+        auto g = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(
+            float(radius), openvdb::Vec3f(0.f), float(voxel), 3.f);
         g->setName("sphere");
         openvdb::io::File(spherePath).write({g});
     }
@@ -207,10 +213,12 @@ int main(int argc, char** argv) {
     const auto kerfSphere = loadLevelSet(spherePath);
     const double loadSeconds = seconds(start);
     const openvdb::CoordBBox box = sphere->evalActiveVoxelBoundingBox();
-    std::printf("sphere: %d³ active voxels (%llu), OpenVDB %.1f MiB in memory (%.1f MiB file); kerf: load "
-                "%.2f s, %.1f MiB\n",
-                box.dim().x(), (unsigned long long)sphere->activeVoxelCount(), sphere->memUsage() / 1048576.0,
-                std::filesystem::file_size(spherePath) / 1048576.0, loadSeconds, kerfSphere->memoryBytes() / 1048576.0);
+    std::printf(
+        "sphere: %d³ active voxels (%llu), OpenVDB %.1f MiB in memory (%.1f MiB file); kerf: load "
+        "%.2f s, %.1f MiB\n",
+        box.dim().x(), (unsigned long long)sphere->activeVoxelCount(),
+        sphere->memUsage() / 1048576.0, std::filesystem::file_size(spherePath) / 1048576.0,
+        loadSeconds, kerfSphere->memoryBytes() / 1048576.0);
     const std::vector<Ray> sphereRays = cameraRays(Vec3(0.3, 0.4, 3.0), Vec3(0.0), radius, o.size);
     std::vector<Pixel> kp, vp;
     const Result s = race(levelSetSolid(kerfSphere), *sphere, sphereRays, o.runs, kp, vp);
@@ -233,12 +241,13 @@ int main(int argc, char** argv) {
         const auto torus = torusGrid(R, r, h);
         openvdb::io::File(torusPath).write({torus});
         const auto kerfTorus = loadLevelSet(torusPath);
-        const std::vector<Ray> torusRays = cameraRays(Vec3(0.5, 1.6, 2.6), Vec3(0.0), R + r, o.size);
+        const std::vector<Ray> torusRays =
+            cameraRays(Vec3(0.5, 1.6, 2.6), Vec3(0.0), R + r, o.size);
         std::vector<Pixel> kt, vt;
         TorusResult tr;
         const openvdb::CoordBBox tb = torus->evalActiveVoxelBoundingBox();
-        tr.label = "torus " + std::to_string(tb.dim().x()) + "×" + std::to_string(tb.dim().y()) + "×" +
-                   std::to_string(tb.dim().z());
+        tr.label = "torus " + std::to_string(tb.dim().x()) + "×" + std::to_string(tb.dim().y()) +
+                   "×" + std::to_string(tb.dim().z());
         tr.race = race(levelSetSolid(kerfTorus), *torus, torusRays, o.runs, kt, vt);
         const NodePtr shrunkTorus = makeTorus(R, r - h);
         TraceContext ctx;
@@ -254,20 +263,27 @@ int main(int argc, char** argv) {
     }
 
     std::printf("\n%d×%d rays, one thread, median of %d runs\n\n", o.size, o.size, o.runs);
-    std::printf("| grid | method | rays/s | hits | hits the other misses | mean depth error (voxel) | max depth error (voxel) | missed (shrunk surface hit) |\n");
+    std::printf(
+        "| grid | method | rays/s | hits | hits the other misses | mean depth error (voxel) | max "
+        "depth error (voxel) | missed (shrunk surface hit) |\n");
     std::printf("|---|---|---:|---:|---:|---:|---:|---:|\n");
-    std::printf("| sphere %d³ | kerf volume | %.3g M | %d | %d | %.5f | %.4f | %d of %d |\n", box.dim().x(), s.kerfRate / 1e6,
-                s.kerfHits, s.kerfOnly, kMean, kMax, kMissed, shrunk);
-    std::printf("| sphere %d³ | LevelSetRayIntersector | %.3g M | %d | %d | %.5f | %.4f | %d of %d |\n", box.dim().x(),
-                s.vdbRate / 1e6, s.vdbHits, s.vdbOnly, vMean, vMax, vMissed, shrunk);
+    std::printf("| sphere %d³ | kerf volume | %.3g M | %d | %d | %.5f | %.4f | %d of %d |\n",
+                box.dim().x(), s.kerfRate / 1e6, s.kerfHits, s.kerfOnly, kMean, kMax, kMissed,
+                shrunk);
+    std::printf(
+        "| sphere %d³ | LevelSetRayIntersector | %.3g M | %d | %d | %.5f | %.4f | %d of %d |\n",
+        box.dim().x(), s.vdbRate / 1e6, s.vdbHits, s.vdbOnly, vMean, vMax, vMissed, shrunk);
     for (const TorusResult& tr : tori) {
-        std::printf("| %s | kerf volume | %.3g M | %d | %d | | | %d of %d |\n", tr.label.c_str(), tr.race.kerfRate / 1e6,
-                    tr.race.kerfHits, tr.race.kerfOnly, tr.kerfMissed, tr.shrunk);
-        std::printf("| %s | LevelSetRayIntersector | %.3g M | %d | %d | | | %d of %d |\n", tr.label.c_str(),
-                    tr.race.vdbRate / 1e6, tr.race.vdbHits, tr.race.vdbOnly, tr.vdbMissed, tr.shrunk);
+        std::printf("| %s | kerf volume | %.3g M | %d | %d | | | %d of %d |\n", tr.label.c_str(),
+                    tr.race.kerfRate / 1e6, tr.race.kerfHits, tr.race.kerfOnly, tr.kerfMissed,
+                    tr.shrunk);
+        std::printf("| %s | LevelSetRayIntersector | %.3g M | %d | %d | | | %d of %d |\n",
+                    tr.label.c_str(), tr.race.vdbRate / 1e6, tr.race.vdbHits, tr.race.vdbOnly,
+                    tr.vdbMissed, tr.shrunk);
     }
     std::printf("\nkerf / OpenVDB speed: sphere %.2f×", s.kerfRate / s.vdbRate);
-    for (const TorusResult& tr : tori) std::printf(", %s %.2f×", tr.label.c_str(), tr.race.kerfRate / tr.race.vdbRate);
+    for (const TorusResult& tr : tori)
+        std::printf(", %s %.2f×", tr.label.c_str(), tr.race.kerfRate / tr.race.vdbRate);
     std::printf("\n");
     return 0;
 }

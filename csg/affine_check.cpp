@@ -41,8 +41,8 @@ void scaleColumns(Mat3& n, int colExp[3]) {
 /// row or column.
 double hadamardRatio(const Mat3& n) {
     const double lengths = glm::length(n[0]) * glm::length(n[1]) * glm::length(n[2]);
-    const double rowLengths = glm::length(glm::row(n, 0)) * glm::length(glm::row(n, 1)) *
-                              glm::length(glm::row(n, 2));
+    const double rowLengths =
+        glm::length(glm::row(n, 0)) * glm::length(glm::row(n, 1)) * glm::length(glm::row(n, 2));
     if (!(lengths > 0) || !(rowLengths > 0)) return 0.0;
     return std::fabs(glm::determinant(n)) / lengths;
 }

@@ -25,7 +25,8 @@ inline std::string formatDouble(const char* pattern, double value) {
 /// exact value is 0; the digits %g shows are far coarser. The value itself is not changed, and
 /// the rule is relative, so a scene scaled by 1e-300 prints the same digits.
 inline std::string formatDoubleAtScale(const char* pattern, double value, double scale) {
-    if (std::fabs(value) <= 16 * DBL_EPSILON * std::fabs(scale)) value = 0.0;  // also turns -0 into 0
+    if (std::fabs(value) <= 16 * DBL_EPSILON * std::fabs(scale))
+        value = 0.0;  // also turns -0 into 0
     return formatDouble(pattern, value);
 }
 

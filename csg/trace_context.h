@@ -3,7 +3,7 @@
 /// the reusable span storage.
 #pragma once
 
-#include "csg/span.h"
+#include "csg/tree/span.h"
 
 #include <cstdint>
 #include <memory>
@@ -15,13 +15,13 @@ namespace kerf {
 
 /// Counters kept per thread and summed at the end (`--stats`).
 struct TraceStats {
-    uint64_t primitiveTests = 0;   ///< calls of a primitive's span computation
-    uint64_t boundsTests = 0;      ///< ray–box tests of node bounds and BVH nodes
-    uint64_t rootSteps = 0;        ///< interval subdivisions and polish iterations
-    uint64_t intervalEvals = 0;    ///< interval evaluations of implicit functions
-    uint64_t cellsVisited = 0;     ///< octree cells and skipped blocks a ray walked through
-    uint64_t meshNodes = 0;        ///< triangle-BVH nodes visited (mesh/triangle_bvh.h)
-    uint64_t triangleTests = 0;    ///< ray–triangle tests
+    uint64_t primitiveTests = 0;  ///< calls of a primitive's span computation
+    uint64_t boundsTests = 0;     ///< ray–box tests of node bounds and BVH nodes
+    uint64_t rootSteps = 0;       ///< interval subdivisions and polish iterations
+    uint64_t intervalEvals = 0;   ///< interval evaluations of implicit functions
+    uint64_t cellsVisited = 0;    ///< octree cells and skipped blocks a ray walked through
+    uint64_t meshNodes = 0;       ///< triangle-BVH nodes visited (mesh/triangle_bvh.h)
+    uint64_t triangleTests = 0;   ///< ray–triangle tests
 
     TraceStats& operator+=(const TraceStats& o) {
         primitiveTests += o.primitiveTests;

@@ -2,7 +2,7 @@
 #include "csg/types.h"
 
 #include "csg/affine_check.h"
-#include "csg/clip_ray.h"
+#include "csg/bvh/clip_ray.h"
 
 #include <algorithm>
 
@@ -37,8 +37,7 @@ namespace {
 /// reciprocal overflows or ranges that reach below t = 0, where RayReciprocal's margins do not
 /// hold. The division's rounding (≤ 3 ulps of t) must not cull a box the exact segment meets.
 template <class T>
-bool clipRayWidened(const RayReciprocal& r, const T* lo, const T* hi, double& tmin,
-                    double& tmax) {
+bool clipRayWidened(const RayReciprocal& r, const T* lo, const T* hi, double& tmin, double& tmax) {
     double t0 = -kInf, t1 = kInf;
     for (int a = 0; a < 3; ++a) {
         const double o = r.origin[a], d = r.dir[a];
@@ -61,12 +60,12 @@ bool clipRayWidened(const RayReciprocal& r, const T* lo, const T* hi, double& tm
 }  // namespace
 
 bool Bounds3::clipRayDividing(const RayReciprocal& r, const float* lo, const float* hi,
-                           double& tmin, double& tmax) {
+                              double& tmin, double& tmax) {
     return clipRayWidened(r, lo, hi, tmin, tmax);
 }
 
 bool Bounds3::clipRayDividing(const RayReciprocal& r, const double* lo, const double* hi,
-                           double& tmin, double& tmax) {
+                              double& tmin, double& tmax) {
     return clipRayWidened(r, lo, hi, tmin, tmax);
 }
 

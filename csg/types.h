@@ -60,8 +60,14 @@ struct Bounds3 {
     bool finite() const;
     Vec3 center() const { return 0.5 * (lo + hi); }
     Vec3 extent() const { return hi - lo; }
-    void extend(const Vec3& p) { lo = glm::min(lo, p); hi = glm::max(hi, p); }
-    void extend(const Bounds3& b) { lo = glm::min(lo, b.lo); hi = glm::max(hi, b.hi); }
+    void extend(const Vec3& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    void extend(const Bounds3& b) {
+        lo = glm::min(lo, b.lo);
+        hi = glm::max(hi, b.hi);
+    }
     static Bounds3 hull(const Bounds3& a, const Bounds3& b);
     static Bounds3 overlap(const Bounds3& a, const Bounds3& b);
     bool contains(const Vec3& p) const;
@@ -80,16 +86,16 @@ struct Bounds3 {
     }
     /// The same for a box given as lo[3], hi[3] of any floating type (the BVH's float nodes).
     template <class T>
-    static bool clipRayConservative(const RayReciprocal& r, const T* lo, const T* hi,
-                                    double& tmin, double& tmax);
+    static bool clipRayConservative(const RayReciprocal& r, const T* lo, const T* hi, double& tmin,
+                                    double& tmax);
 
 private:
     /// clipRay for a box given as lo[3], hi[3], widened by a few ulps of t: the fallback of
     /// clipRayConservative.
     static bool clipRayDividing(const RayReciprocal& r, const float* lo, const float* hi,
-                             double& tmin, double& tmax);
+                                double& tmin, double& tmax);
     static bool clipRayDividing(const RayReciprocal& r, const double* lo, const double* hi,
-                             double& tmin, double& tmax);
+                                double& tmin, double& tmax);
 };
 
 template <class T>

@@ -157,8 +157,7 @@ InkBounds segmentBounds(const PathSegment& s) {
     include(b, s.start());
     include(b, s.end());
     switch (s.kind) {
-        case PathSegment::Kind::Line:
-            break;
+        case PathSegment::Kind::Line: break;
         case PathSegment::Kind::Quadratic:
             // Per axis the derivative 2[(1-t)(p1-p0) + t(p2-p1)] vanishes once.
             for (int a = 0; a < 2; ++a) {
@@ -320,21 +319,15 @@ TextOutline layoutText(const TextSpec& spec) {
     Vec2 shift{0.0, 0.0};
     bool ink = !out.ink.empty();
     switch (spec.halign) {
-        case TextSpec::HAlign::Left:
-            break;
-        case TextSpec::HAlign::Right:
-            shift.x = -out.advance;
-            break;
+        case TextSpec::HAlign::Left: break;
+        case TextSpec::HAlign::Right: shift.x = -out.advance; break;
         case TextSpec::HAlign::Center:
             if (ink) shift.x = -0.5 * (out.ink.lo.x + out.ink.hi.x);
             break;
-        case TextSpec::HAlign::AdvanceCenter:
-            shift.x = -0.5 * out.advance;
-            break;
+        case TextSpec::HAlign::AdvanceCenter: shift.x = -0.5 * out.advance; break;
     }
     switch (spec.valign) {
-        case TextSpec::VAlign::Baseline:
-            break;
+        case TextSpec::VAlign::Baseline: break;
         case TextSpec::VAlign::Top:
             if (ink) shift.y = -out.ink.hi.y;
             break;

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "csg/profile_path.h"
+#include "csg/profiles/profile_path.h"
 
 namespace kerf {
 
@@ -73,9 +73,9 @@ struct TextOutline {
     /// touch, or one holds the other): then the even-odd `shape` would show the overlap as a
     /// hole, and a caller should take the union of `glyphs` instead.
     bool glyphsOverlap = false;
-    std::string fontFile;         ///< the file the font came from
+    std::string fontFile;           ///< the file the font came from
     std::string substitutedFamily;  ///< the family used instead of the one asked for, if any
-    bool fontHasKerning = false;  ///< the font has a 'kern' table FreeType reads
+    bool fontHasKerning = false;    ///< the font has a 'kern' table FreeType reads
 };
 
 /// Lays out `spec`. Throws FontError: a font fontconfig does not know or silently replaces

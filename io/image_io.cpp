@@ -56,12 +56,12 @@ std::string encode(const KerfImagePlugin& plugin, const Image& image, const std:
     if (encoding == Encoding::Srgb8) {
         std::vector<uint8_t> codes(image.pixels.size());
         std::transform(image.pixels.begin(), image.pixels.end(), codes.begin(), srgbByte);
-        failed = plugin.encodeWindow(path.c_str(), image.width, image.height, image.channels,
-                                     1, codes.data(), "sRGB", w.x, w.y, w.fullWidth,
-                                     w.fullHeight, keepBytes, &bytes, error, sizeof error);
+        failed = plugin.encodeWindow(path.c_str(), image.width, image.height, image.channels, 1,
+                                     codes.data(), "sRGB", w.x, w.y, w.fullWidth, w.fullHeight,
+                                     keepBytes, &bytes, error, sizeof error);
     } else {
-        failed = plugin.encodeWindow(path.c_str(), image.width, image.height, image.channels,
-                                     0, image.pixels.data(), "Linear", w.x, w.y, w.fullWidth,
+        failed = plugin.encodeWindow(path.c_str(), image.width, image.height, image.channels, 0,
+                                     image.pixels.data(), "Linear", w.x, w.y, w.fullWidth,
                                      w.fullHeight, keepBytes, &bytes, error, sizeof error);
     }
     if (!failed) return "";
@@ -92,7 +92,8 @@ void writeImage(const Image& image, const std::string& path, const ImageWindow& 
     const std::string ext = lowercaseExtension(path);
     const Encoding encoding = encodingFor(ext);
     if (encoding == Encoding::Unknown)
-        fail(path, "unknown image format '" + ext + "' (use .png, .jpg, .jpeg, .exr, .tif or .tiff)");
+        fail(path,
+             "unknown image format '" + ext + "' (use .png, .jpg, .jpeg, .exr, .tif or .tiff)");
     if (image.width <= 0 || image.height <= 0 || image.channels <= 0 ||
         image.pixels.size() != size_t(image.width) * image.height * image.channels)
         fail(path, "the image is empty or its pixel buffer does not match its size");

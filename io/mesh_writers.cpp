@@ -69,10 +69,12 @@ std::string encodeStl(const MeshArrays& m) {
     for (size_t t = 0; t < m.triangleCount; ++t) {
         double p[3][3];
         for (int k = 0; k < 3; ++k)
-            for (int a = 0; a < 3; ++a) p[k][a] = m.xyz[3 * size_t(m.indices[3 * t + size_t(k)]) + size_t(a)];
+            for (int a = 0; a < 3; ++a)
+                p[k][a] = m.xyz[3 * size_t(m.indices[3 * t + size_t(k)]) + size_t(a)];
         const double u[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
         const double v[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
-        double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                       u[0] * v[1] - u[1] * v[0]};
         const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         for (double& c : n) c = len > 0.0 ? c / len : 0.0;
         for (const double c : n) put(out, float(c));
@@ -92,10 +94,14 @@ bool meshFormatFromPath(const std::string& path, MeshFormat& format) {
     std::string ext = path.substr(dot + 1);
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
-    if (ext == "obj") format = MeshFormat::Obj;
-    else if (ext == "ply") format = MeshFormat::Ply;
-    else if (ext == "stl") format = MeshFormat::Stl;
-    else return false;
+    if (ext == "obj")
+        format = MeshFormat::Obj;
+    else if (ext == "ply")
+        format = MeshFormat::Ply;
+    else if (ext == "stl")
+        format = MeshFormat::Stl;
+    else
+        return false;
     return true;
 }
 

@@ -5,7 +5,7 @@
 /// within rounding of each other.
 #pragma once
 
-#include "csg/profile_path.h"
+#include "csg/profiles/profile_path.h"
 
 namespace kerf {
 

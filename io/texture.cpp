@@ -84,8 +84,8 @@ std::array<float, 3> Texture::lookup(double s, double t, double dsdx, double dtd
     limitAxis(dsdx, dtdx);
     limitAxis(dsdy, dtdy);
     mPlugin->textureLookup(mHandle, coordinate(s, wrapS), coordinate(t, wrapT), float(dsdx),
-                           float(dtdx), float(dsdy), float(dtdy), wrapCode(wrapS),
-                           wrapCode(wrapT), rgb.data());
+                           float(dtdx), float(dsdy), float(dtdy), wrapCode(wrapS), wrapCode(wrapT),
+                           rgb.data());
     return rgb;
 }
 

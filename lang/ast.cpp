@@ -9,7 +9,8 @@ namespace kerf {
 static_assert(sizeof(Expr) % 8 == 0 && sizeof(Solid) % 8 == 0 && sizeof(Property) % 8 == 0 &&
                   sizeof(Modifier) % 8 == 0,
               "node sizes are multiples of 8, so the scratch arena's count bounds the copy");
-static_assert(alignof(Expr) <= 8 && alignof(Solid) <= 8 && alignof(Property) <= 8 && alignof(Modifier) <= 8);
+static_assert(alignof(Expr) <= 8 && alignof(Solid) <= 8 && alignof(Property) <= 8 &&
+              alignof(Modifier) <= 8);
 
 /// Deep copy of a statement's nodes into one block, each list again side by side.
 class TreeCopier {
@@ -53,7 +54,8 @@ private:
     template <class T>
     T* take(size_t n) {
         const size_t bytes = n * sizeof(T);
-        if (mUsed + bytes > mCapacity) throw std::logic_error("Statement::takeTree: bound too small");
+        if (mUsed + bytes > mCapacity)
+            throw std::logic_error("Statement::takeTree: bound too small");
         T* p = reinterpret_cast<T*>(mOut + mUsed);
         mUsed += bytes;
         return p;

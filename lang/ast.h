@@ -70,25 +70,26 @@ struct Expr {
     };
     Kind kind = Kind::Number;
     char op = 0;
-    uint16_t depth = 1;       ///< height of this subtree, bounded by the parser (kMaxExpressionDepth)
-    uint32_t count = 0;       ///< Number: bytes of the literal (DiagnosticSink::textAt); else of args
-    SourcePos loc;            ///< the literal, the name, the operator, or the function name
-    SourcePos start;          ///< the first token of the whole expression
+    uint16_t depth = 1;  ///< height of this subtree, bounded by the parser (kMaxExpressionDepth)
+    uint32_t count = 0;  ///< Number: bytes of the literal (DiagnosticSink::textAt); else of args
+    SourcePos loc;       ///< the literal, the name, the operator, or the function name
+    SourcePos start;     ///< the first token of the whole expression
     union {
-        double number = 0.0;        ///< Number
-        const std::string* ident;   ///< Name, Call, String, Member, Comprehension, NamedArg (interned)
+        double number = 0.0;  ///< Number
+        const std::string*
+            ident;  ///< Name, Call, String, Member, Comprehension, NamedArg (interned)
         const struct Solid* solid;  ///< SolidValue
     };
     const Expr* first = nullptr;  ///< the operands, `count` of them side by side
 
     bool hasIdent() const {
-        return kind == Kind::Name || kind == Kind::Call || kind == Kind::String || kind == Kind::Member ||
-               kind == Kind::Comprehension || kind == Kind::NamedArg;
+        return kind == Kind::Name || kind == Kind::Call || kind == Kind::String ||
+               kind == Kind::Member || kind == Kind::Comprehension || kind == Kind::NamedArg;
     }
     Name name() const { return Name(hasIdent() ? ident : nullptr); }
     ExprList args() const {
-        return kind == Kind::Number || kind == Kind::Name || kind == Kind::Bool || kind == Kind::String ||
-                       kind == Kind::SolidValue
+        return kind == Kind::Number || kind == Kind::Name || kind == Kind::Bool ||
+                       kind == Kind::String || kind == Kind::SolidValue
                    ? ExprList()
                    : ExprList(first, count);
     }
@@ -111,10 +112,20 @@ struct Property {
 /// A modifier after a solid: `translate v`, `rotate v`, `scale s|v`, `matrix [12 numbers]`,
 /// `material NAME`, `displace PATTERN by DEPTH`.
 struct Modifier {
-    /// Move and Spin: motion over scene time (csg/motion.h), `move <v>`, `spin <degrees>`.
+    /// Move and Spin: motion over scene time (csg/tree/motion.h), `move <v>`, `spin <degrees>`.
     /// Displace: the solid's surface moved by a pattern (args[0] is the depth).
-    /// Interior: `interior MATERIAL`, the material of a back side (csg/surfaces.h).
-    enum class Kind : uint8_t { Translate, Rotate, Scale, Matrix, Material, Move, Spin, Displace, Interior };
+    /// Interior: `interior MATERIAL`, the material of a back side (csg/primitives/surfaces.h).
+    enum class Kind : uint8_t {
+        Translate,
+        Rotate,
+        Scale,
+        Matrix,
+        Material,
+        Move,
+        Spin,
+        Displace,
+        Interior
+    };
     Kind kind = Kind::Translate;
     SourcePos loc;  ///< of the keyword
     ExprList args;  ///< one, or twelve for matrix
@@ -136,8 +147,8 @@ struct Solid {
         Else,       ///< `else { children }` (an `else if` is one If child)
     };
     Kind kind = Kind::Primitive;
-    SourcePos loc;     ///< of the kind keyword or the name
-    Name name;         ///< the primitive kind, the Boolean operation, or the referenced name
+    SourcePos loc;  ///< of the kind keyword or the name
+    Name name;      ///< the primitive kind, the Boolean operation, or the referenced name
     ArenaList<Property> properties;
     ArenaList<Solid> children;
     ArenaList<Modifier> modifiers;
@@ -155,7 +166,16 @@ struct Block {
 
 struct Statement {
     enum class Kind : uint8_t {
-        Let, SolidDef, Object, Material, Camera, Light, Mist, Background, Render, Include,
+        Let,
+        SolidDef,
+        Object,
+        Material,
+        Camera,
+        Light,
+        Mist,
+        Background,
+        Render,
+        Include,
         For,              ///< name: the variable, expr: the range or list, block->body
         If,               ///< expr: the condition, block->body and block->elseBody
         Function,         ///< `fn name(params) = expr;` params are properties (expr: the default)
@@ -168,11 +188,11 @@ struct Statement {
     /// A definition whose body had a syntax error (already reported): its name exists, so
     /// uses are not reported again, but it is not lowered.
     bool broken = false;
-    SourcePos loc;      ///< of the keyword
-    std::string name;   ///< let/solid/material name, the light kind, or the include path
+    SourcePos loc;     ///< of the keyword
+    std::string name;  ///< let/solid/material name, the light kind, or the include path
     SourcePos nameLoc;
-    ExprPtr expr = nullptr;  ///< let, background
-    SolidPtr solid = nullptr;  ///< solid, object
+    ExprPtr expr = nullptr;          ///< let, background
+    SolidPtr solid = nullptr;        ///< solid, object
     ArenaList<Property> properties;  ///< material, camera, light, mist, render, section
     std::unique_ptr<Block> block;    ///< for, if
     /// The statement's own nodes (expr, solid, properties and all below), in one exact-size

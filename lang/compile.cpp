@@ -56,7 +56,8 @@ private:
             mSink.error(s.loc, "include needs a file name");
             return;
         }
-        const std::string name = (fs::path(includer).parent_path() / s.name).lexically_normal().string();
+        const std::string name =
+            (fs::path(includer).parent_path() / s.name).lexically_normal().string();
         const std::string id = identity(name);
         for (size_t i = 0; i < mStack.size(); ++i) {
             if (mStack[i].first != id) continue;
@@ -68,8 +69,10 @@ private:
         if (mRead.count(id)) return;  // each file is read once
         // The include recursion is as deep as the chain of files: bound it before going deeper.
         if (mStack.size() >= static_cast<size_t>(kMaxIncludeDepth)) {
-            mSink.error(s.loc, "includes nested too deeply (more than " + std::to_string(kMaxIncludeDepth) +
-                                   " files, from " + mStack.front().second + ")",
+            mSink.error(s.loc,
+                        "includes nested too deeply (more than " +
+                            std::to_string(kMaxIncludeDepth) + " files, from " +
+                            mStack.front().second + ")",
                         "include the parts from one file instead of from each other");
             return;
         }
@@ -90,8 +93,8 @@ private:
     std::vector<std::pair<std::string, std::string>> mStack;  // identity, name as shown
 };
 
-std::optional<Scene> compileSource(const SourceText& source, DiagnosticSink& sink, EvalLimits limits,
-                                   SequenceFrame frame) {
+std::optional<Scene> compileSource(const SourceText& source, DiagnosticSink& sink,
+                                   EvalLimits limits, SequenceFrame frame) {
     const int errorsBefore = sink.errorCount();
     const size_t diagnosticsBefore = sink.diagnostics().size();
     Program program;
@@ -113,7 +116,8 @@ std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink, 
     std::string why;
     auto bytes = readFileBytes(path, why);
     if (!bytes) {
-        sink.error(SourceLoc{std::make_shared<const std::string>(path), 0, 0}, "cannot read '" + path + "': " + why);
+        sink.error(SourceLoc{std::make_shared<const std::string>(path), 0, 0},
+                   "cannot read '" + path + "': " + why);
         return std::nullopt;
     }
     return compileSource(SourceText{std::make_shared<const std::string>(path),
@@ -121,11 +125,11 @@ std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink, 
                          sink, limits, frame);
 }
 
-std::optional<Scene> compileString(const std::string& text, const std::string& name, DiagnosticSink& sink,
-                                   EvalLimits limits, SequenceFrame frame) {
-    return compileSource(
-        SourceText{std::make_shared<const std::string>(name), std::make_shared<const std::string>(text)}, sink,
-        limits, frame);
+std::optional<Scene> compileString(const std::string& text, const std::string& name,
+                                   DiagnosticSink& sink, EvalLimits limits, SequenceFrame frame) {
+    return compileSource(SourceText{std::make_shared<const std::string>(name),
+                                    std::make_shared<const std::string>(text)},
+                         sink, limits, frame);
 }
 
 }  // namespace kerf

@@ -38,7 +38,8 @@ public:
                 mSolidStack.pop_back();
                 if (solid->kind == Solid::Kind::Reference) {
                     add(mSolids, solid->name, solid->loc, uses);
-                    if (!mSolids.count(solid->name)) add(mLets, solid->name, solid->loc, uses);  // a let holding a solid
+                    if (!mSolids.count(solid->name))
+                        add(mLets, solid->name, solid->loc, uses);  // a let holding a solid
                 }
                 for (const Property& p : solid->properties) {
                     if (p.expr) mExprs.push_back(p.expr);
@@ -64,14 +65,15 @@ public:
         std::reverse(uses.begin(), uses.end());
         std::vector<Use> unique;
         for (const Use& u : uses)
-            if (std::none_of(unique.begin(), unique.end(), [&](const Use& v) { return v.target == u.target; }))
+            if (std::none_of(unique.begin(), unique.end(),
+                             [&](const Use& v) { return v.target == u.target; }))
                 unique.push_back(u);
         return unique;
     }
 
 private:
-    void add(const std::map<std::string, const Statement*>& table, const std::string& name, SourcePos loc,
-             std::vector<Use>& uses) {
+    void add(const std::map<std::string, const Statement*>& table, const std::string& name,
+             SourcePos loc, std::vector<Use>& uses) {
         const auto it = table.find(name);
         if (it != table.end()) uses.push_back({mIndex.at(it->second), loc});
     }
@@ -85,9 +87,9 @@ private:
 
 }  // namespace
 
-std::vector<OrderedDefinition> definitionOrder(const std::map<std::string, const Statement*>& lets,
-                                               const std::map<std::string, const Statement*>& solids,
-                                               const DiagnosticSink& sink) {
+std::vector<OrderedDefinition> definitionOrder(
+    const std::map<std::string, const Statement*>& lets,
+    const std::map<std::string, const Statement*>& solids, const DiagnosticSink& sink) {
     // Definitions in statement order (line and column), so the walk (and what it reports)
     // follows the file.
     std::vector<std::pair<std::pair<int, int>, const Statement*>> keyed;
@@ -138,7 +140,8 @@ std::vector<OrderedDefinition> definitionOrder(const std::map<std::string, const
             }
             const int done = v;
             frames.pop_back();
-            if (!frames.empty()) low[frames.back().first] = std::min(low[frames.back().first], low[done]);
+            if (!frames.empty())
+                low[frames.back().first] = std::min(low[frames.back().first], low[done]);
             if (low[done] != order[done]) continue;
             // `done` roots a component: every definition it uses is already emitted.
             std::vector<int> component;

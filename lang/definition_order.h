@@ -28,8 +28,9 @@ struct OrderedDefinition {
 /// The definitions named in `lets` and `solids` (name → its first definition), each after
 /// every definition it uses. Definitions on a cycle of names, or that use one, are left out:
 /// lowering meets them in statement order and reports the cycle as it finds it.
-std::vector<OrderedDefinition> definitionOrder(const std::map<std::string, const Statement*>& lets,
-                                               const std::map<std::string, const Statement*>& solids,
-                                               const DiagnosticSink& sink);  ///< finds the lines
+std::vector<OrderedDefinition> definitionOrder(
+    const std::map<std::string, const Statement*>& lets,
+    const std::map<std::string, const Statement*>& solids,
+    const DiagnosticSink& sink);  ///< finds the lines
 
 }  // namespace kerf

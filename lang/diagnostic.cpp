@@ -26,7 +26,8 @@ void DiagnosticSink::rememberSource(std::shared_ptr<const std::string> file,
 uint32_t DiagnosticSink::sourceIndex(const std::shared_ptr<const std::string>& file,
                                      const std::shared_ptr<const std::string>& text) {
     for (size_t i = mSources.size(); i-- > 0;)
-        if (mSources[i].first == file && mSources[i].second == text) return static_cast<uint32_t>(i);
+        if (mSources[i].first == file && mSources[i].second == text)
+            return static_cast<uint32_t>(i);
     rememberSource(file, text);
     return static_cast<uint32_t>(mSources.size() - 1);
 }
@@ -45,7 +46,8 @@ SourceLoc DiagnosticSink::locate(SourcePos pos) const {
     // The last line start at or before the offset.
     const auto next = std::upper_bound(starts.begin(), starts.end(), pos.offset);
     const size_t line = static_cast<size_t>(next - starts.begin());
-    return SourceLoc{file, static_cast<int>(line), static_cast<int>(pos.offset - starts[line - 1]) + 1};
+    return SourceLoc{file, static_cast<int>(line),
+                     static_cast<int>(pos.offset - starts[line - 1]) + 1};
 }
 
 std::string DiagnosticSink::textAt(SourcePos pos, size_t length) const {
@@ -147,11 +149,13 @@ std::string DiagnosticSink::format(bool withEchoes) const {
     for (const Diagnostic& d : mDiagnostics) {
         const std::string fileName = d.loc.file ? *d.loc.file : std::string("<input>");
         if (d.severity == Severity::Echo) {
-            if (withEchoes) out += fileName + ':' + std::to_string(d.loc.line) + ": echo: " + d.message + '\n';
+            if (withEchoes)
+                out += fileName + ':' + std::to_string(d.loc.line) + ": echo: " + d.message + '\n';
             continue;
         }
         out += fileName;
-        if (d.loc.line > 0) out += ':' + std::to_string(d.loc.line) + ':' + std::to_string(d.loc.col);
+        if (d.loc.line > 0)
+            out += ':' + std::to_string(d.loc.line) + ':' + std::to_string(d.loc.col);
         out += std::string(": ") + severityName(d.severity) + ": " + d.message + '\n';
         if (d.loc.line > 0 && d.loc.file) {
             for (const auto& [file, text] : mSources) {

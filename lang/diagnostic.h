@@ -45,7 +45,8 @@ public:
     void report(Diagnostic d);
     void error(const SourceLoc& loc, std::string message, std::string hint = {});
     void error(SourcePos pos, std::string message, std::string hint = {});
-    void rememberSource(std::shared_ptr<const std::string> file, std::shared_ptr<const std::string> text);
+    void rememberSource(std::shared_ptr<const std::string> file,
+                        std::shared_ptr<const std::string> text);
 
     /// The index SourcePos uses for this file: the one it was remembered under (same name and
     /// text objects), else it is remembered now.
@@ -72,7 +73,8 @@ public:
 
 private:
     std::vector<Diagnostic> mDiagnostics;
-    std::vector<std::pair<std::shared_ptr<const std::string>, std::shared_ptr<const std::string>>> mSources;
+    std::vector<std::pair<std::shared_ptr<const std::string>, std::shared_ptr<const std::string>>>
+        mSources;
     /// Per remembered file, the offsets where its lines start; built by the first locate().
     mutable std::vector<std::vector<uint32_t>> mLineStarts;
     int mErrorCount = 0;

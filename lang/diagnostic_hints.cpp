@@ -41,14 +41,18 @@ const ForeignSolid kForeignSolids[] = {
     {"sor", "", "surfaces of revolution are not supported yet"},
     {"prism", "", "prisms are not supported yet"},
     {"sphere_sweep", "", "sphere sweeps are not supported yet"},
-    {"polygon", "", "a polygon is a 2-D profile: extrude { profile polygon { points [[0, 0], [1, 0], [0, 1]] } height 1 }"},
+    {"polygon", "",
+     "a polygon is a 2-D profile: extrude { profile polygon { points [[0, 0], [1, 0], [0, 1]] } "
+     "height 1 }"},
     {"triangle", "", "triangles are not supported (kerf's solids are closed)"},
     {"mesh", "", "kerf reads meshes from files: write mesh \"file.stl\" (OBJ, PLY, STL, glTF)"},
     {"mesh2", "", "kerf reads meshes from files: write mesh \"file.stl\" (OBJ, PLY, STL, glTF)"},
     {"polyhedron", "", "polyhedra are not supported yet"},
     {"height_field", "", "height fields are not supported yet"},
-    {"linear_extrude", "extrude", "write extrude { profile circle { radius 1 } height 2 twist 0 scale 1 }"},
-    {"rotate_extrude", "revolve", "write revolve { profile circle { center [2, 0] radius 1 } angle 360 }"},
+    {"linear_extrude", "extrude",
+     "write extrude { profile circle { radius 1 } height 2 twist 0 scale 1 }"},
+    {"rotate_extrude", "revolve",
+     "write revolve { profile circle { center [2, 0] radius 1 } angle 360 }"},
     {"hull", "", "hulls are not supported"},
     {"minkowski", "", "Minkowski sums are not supported"},
 };
@@ -121,14 +125,15 @@ const ForeignProperty kForeignProperties[] = {
 }  // namespace
 
 const std::vector<std::string>& primitiveKinds() {
-    static const std::vector<std::string> kinds = {"sphere", "box",       "cylinder", "cone",
-                                                   "torus",  "halfspace", "implicit", "extrude", "revolve"};
+    static const std::vector<std::string> kinds = {"sphere",   "box",     "cylinder",
+                                                   "cone",     "torus",   "halfspace",
+                                                   "implicit", "extrude", "revolve"};
     return kinds;
 }
 
 bool isProfileKind(const std::string& name) {
-    return name == "circle" || name == "rect" || name == "polygon" || name == "path" || name == "offset" ||
-           name == "text";
+    return name == "circle" || name == "rect" || name == "polygon" || name == "path" ||
+           name == "offset" || name == "text";
 }
 
 const std::vector<std::string>& booleanKinds() {

@@ -88,7 +88,10 @@ double parseNumber(const std::string& text) {
 class Lexer {
 public:
     Lexer(const SourceText& source, DiagnosticSink& sink)
-        : mSource(source), mText(*source.text), mSink(sink), mFile(sink.sourceIndex(source.name, source.text)) {
+        : mSource(source),
+          mText(*source.text),
+          mSink(sink),
+          mFile(sink.sourceIndex(source.name, source.text)) {
         if (mText.compare(0, 3, "\xEF\xBB\xBF") == 0) advance(3);  // UTF-8 byte order mark
     }
 

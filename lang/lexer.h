@@ -14,10 +14,34 @@
 namespace kerf {
 
 enum class TokenKind {
-    Number, String, Identifier,
-    Less, Greater, Comma, Semicolon, LBrace, RBrace, LParen, RParen, LBracket, RBracket,
-    Equals, Plus, Minus, Star, Slash, Caret, Percent,
-    Dot, DotDot, Question, Colon, EqualEqual, NotEqual, LessEqual, GreaterEqual,
+    Number,
+    String,
+    Identifier,
+    Less,
+    Greater,
+    Comma,
+    Semicolon,
+    LBrace,
+    RBrace,
+    LParen,
+    RParen,
+    LBracket,
+    RBracket,
+    Equals,
+    Plus,
+    Minus,
+    Star,
+    Slash,
+    Caret,
+    Percent,
+    Dot,
+    DotDot,
+    Question,
+    Colon,
+    EqualEqual,
+    NotEqual,
+    LessEqual,
+    GreaterEqual,
     Error,  ///< characters the lexer already reported; the parser stays silent about them
     End,
 };
@@ -27,8 +51,8 @@ struct Token {
     std::string text;     ///< identifier name, string contents (unquoted), or the spelling
     double number = 0.0;  ///< for numbers; +inf when the literal overflows a double
     SourceLoc loc;
-    SourcePos pos;   ///< the same place, as the syntax tree keeps it
-    int length = 0;  ///< bytes the token spans in the source (all tokens are on one line)
+    SourcePos pos;             ///< the same place, as the syntax tree keeps it
+    int length = 0;            ///< bytes the token spans in the source (all tokens are on one line)
     bool firstOnLine = false;  ///< nothing but white space or comments before it on its line
 };
 

@@ -2,7 +2,7 @@
 #include "lang/lower.h"
 
 #include "csg/format.h"
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 #include "lang/definition_order.h"
 
 #include <algorithm>
@@ -35,12 +35,14 @@ void Lowering::error(SourcePos loc, std::string message, std::string hint) {
         const size_t fromInside = mCalls.size() - 1 - i;
         if (mCalls.size() > kInner + kOuter + 1 && fromInside >= kInner && i >= kOuter) {
             if (fromInside == kInner)
-                d.notes.push_back("… " + std::to_string(mCalls.size() - kInner - kOuter) + " more calls …");
+                d.notes.push_back("… " + std::to_string(mCalls.size() - kInner - kOuter) +
+                                  " more calls …");
             continue;
         }
         const SourceLoc at = mSink.locate(mCalls[i].at);
-        d.notes.push_back("in call to " + *mCalls[i].name + " at " + (at.file ? *at.file : std::string("<input>")) +
-                          ":" + std::to_string(at.line) + ":" + std::to_string(at.col));
+        d.notes.push_back("in call to " + *mCalls[i].name + " at " +
+                          (at.file ? *at.file : std::string("<input>")) + ":" +
+                          std::to_string(at.line) + ":" + std::to_string(at.col));
     }
     mSink.report(std::move(d));
 }
@@ -64,7 +66,8 @@ std::optional<Scene> Lowering::lower(Program& program) {
     if (mDefaultMaterial) {
         // Materials nest innermost-first, so parts that name their own keep it.
         for (NodePtr& object : scene.objects)
-            if (object->kind() != NodeKind::Material) object = makeMaterial(object, *mDefaultMaterial);
+            if (object->kind() != NodeKind::Material)
+                object = makeMaterial(object, *mDefaultMaterial);
     }
     if (mSink.errorCount() > errorsBefore) return std::nullopt;
     return scene;
@@ -92,7 +95,8 @@ void Lowering::collectDefinitions(Program& program, Scene& scene) {
             case Statement::Kind::SolidDef: define(mSolids, s, "solid"); break;
             case Statement::Kind::Function: {
                 if (isBuiltinFunction(s.name)) {
-                    error(s.nameLoc, "'" + s.name + "' is a built-in function and cannot be redefined");
+                    error(s.nameLoc,
+                          "'" + s.name + "' is a built-in function and cannot be redefined");
                     break;
                 }
                 auto [it, inserted] = mFunctions.try_emplace(s.name, &s);
@@ -136,7 +140,8 @@ void Lowering::lowerDefinitions() {
     for (const auto& [name, entry] : mLets) lets[name] = entry.def;
     for (const auto& [name, entry] : mSolids) solids[name] = entry.def;
     const auto state = [&](const Statement* def) {
-        return def->kind == Statement::Kind::Let ? mLets[def->name].state : mSolids[def->name].state;
+        return def->kind == Statement::Kind::Let ? mLets[def->name].state
+                                                 : mSolids[def->name].state;
     };
     for (const OrderedDefinition& d : definitionOrder(lets, solids, mSink)) {
         const bool isLet = d.def->kind == Statement::Kind::Let;
@@ -149,19 +154,23 @@ void Lowering::lowerDefinitions() {
         }
         (isLet ? mLets[d.def->name].state : mSolids[d.def->name].state) = State::Failed;
         // One report, at the first definition too deep, unless what it uses failed already.
-        const bool usesOk = std::all_of(d.uses.begin(), d.uses.end(),
-                                        [&](const Statement* u) { return state(u) == State::Done; });
+        const bool usesOk = std::all_of(d.uses.begin(), d.uses.end(), [&](const Statement* u) {
+            return state(u) == State::Done;
+        });
         if (d.firstTooDeep && usesOk)
-            error(d.tooDeepAt, std::string(isLet ? "let '" : "solid '") + d.def->name +
-                                   "' is nested too deeply through named solids or lets (more than " +
-                                   std::to_string(kMaxNameDepth) + " levels)",
-                  "a definition may build on others at most " + std::to_string(kMaxNameDepth) + " levels deep");
+            error(d.tooDeepAt,
+                  std::string(isLet ? "let '" : "solid '") + d.def->name +
+                      "' is nested too deeply through named solids or lets (more than " +
+                      std::to_string(kMaxNameDepth) + " levels)",
+                  "a definition may build on others at most " + std::to_string(kMaxNameDepth) +
+                      " levels deep");
     }
 }
 
 bool Lowering::onlyOnce(const Statement& s, const Statement*& first, const char* what) {
     if (first) {
-        error(s.loc, std::string(what) + " given twice", "first given at " + where(mSink.locate(first->loc)));
+        error(s.loc, std::string(what) + " given twice",
+              "first given at " + where(mSink.locate(first->loc)));
         return false;
     }
     first = &s;

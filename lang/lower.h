@@ -17,16 +17,16 @@
 /// shadowing top-level names. A function body sees its parameters and the top level only.
 #pragma once
 
-#include "csg/expr.h"
-#include "csg/profile.h"
+#include "csg/profiles/profile.h"
+#include "csg/tape/expr.h"
 #include "io/font_outline.h"
-#include "scene/scene.h"
 #include "lang/ast.h"
 #include "lang/eval_limits.h"
 #include "lang/properties.h"
 #include "lang/sequence_frame.h"
 #include "lang/value.h"
 #include "scene/limits.h"
+#include "scene/scene.h"
 
 #include <functional>
 #include <map>
@@ -41,7 +41,8 @@ namespace kerf {
 
 class Lowering {
 public:
-    explicit Lowering(DiagnosticSink& sink, EvalLimits limits = {}) : mSink(sink), mLimits(limits) {}
+    explicit Lowering(DiagnosticSink& sink, EvalLimits limits = {})
+        : mSink(sink), mLimits(limits) {}
 
     /// Lowers the program; nullopt if it reported any error. The syntax tree of each `solid`
     /// definition and `object` is freed once it is lowered (Statement::releaseTree), so the
@@ -180,20 +181,22 @@ private:
     /// False, with an error at the mesh, when one of `operands` is (a transform, material or
     /// motion of) a mesh that is not a solid; `use` says what needs a solid ("an operand of
     /// difference"), written at `at`. Each such mesh is reported once.
-    bool checkSolidOperands(const std::vector<NodePtr>& operands, const std::string& use, SourcePos at);
+    bool checkSolidOperands(const std::vector<NodePtr>& operands, const std::string& use,
+                            SourcePos at);
     /// The same for the objects of a scene with section planes: an object a plane crosses is cut.
     void checkSectionedSurfaces(const Scene& scene);
     // lower_volume.cpp
-    /// `volume "FILE" grid NAME`: a level set read from a .vdb file (volume/vdb_level_set.h),
+    /// `volume "FILE" grid NAME`: a level set read from a .vdb file (volume/grids/vdb_level_set.h),
     /// each (file, grid) loaded once per compile and shared by its uses.
     NodePtr lowerVolume(const Solid& s);
     // lower_surfaces.cpp
-    /// `disc`, `triangle`, `surface SOLID`, `clip SURFACE by SOLID` (csg/surfaces.h).
+    /// `disc`, `triangle`, `surface SOLID`, `clip SURFACE by SOLID` (csg/primitives/surfaces.h).
     NodePtr lowerSurface(const Solid& s);
     /// A surface node made at `at`, remembered so that using it as a solid names it.
     NodePtr noteSurface(NodePtr surface, SourcePos at);
     /// checkSolidOperands' part for surfaces: false, with an error, when an operand is one.
-    bool checkSurfaceOperands(const std::vector<NodePtr>& operands, const std::string& use, SourcePos at);
+    bool checkSurfaceOperands(const std::vector<NodePtr>& operands, const std::string& use,
+                              SourcePos at);
     /// `interior MATERIAL`: makeInterior below any material modifiers (the innermost wins).
     NodePtr interiorOf(const NodePtr& node, int32_t material);
     // lower_text.cpp
@@ -223,7 +226,7 @@ private:
     /// `node`, or null with an error at `at` if its tree is deeper than kMaxCsgDepth.
     NodePtr limitDepth(NodePtr node, SourcePos at);
 
-    // lower_profiles.cpp: 2-D profiles (csg/profile.h) and the solids made from them.
+    // lower_profiles.cpp: 2-D profiles (csg/profiles/profile.h) and the solids made from them.
     /// circle, rect, polygon, path, offset, or a union / intersection / difference of them.
     std::optional<Profile> lowerProfile(const Solid& s);
     std::optional<Profile> lowerPath(const Solid& s);
@@ -280,7 +283,7 @@ private:
     std::map<std::string, MaterialEntry> mMaterials;
     std::vector<std::string> mBusyLets;    ///< lets being evaluated, innermost last
     std::vector<std::string> mBusySolids;  ///< solids being lowered, innermost last
-    int mDepth = 0;  ///< current recursion depth of lowering
+    int mDepth = 0;                        ///< current recursion depth of lowering
     /// heightOf's memo; holding the NodePtr keeps the key's address from being reused.
     std::unordered_map<const Node*, std::pair<NodePtr, int>> mHeights;
     bool mTooDeepReported = false;

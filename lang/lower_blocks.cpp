@@ -3,7 +3,7 @@
 // bodies (their bodies are solids), `assert` and `echo`.
 #include "lang/lower.h"
 
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 
 namespace kerf {
 
@@ -21,10 +21,10 @@ void Lowering::runBlock(const std::vector<Statement>& body, Scene& scene) {
                 // Block-local: visible to the statements after it. A failed one ends the block
                 // (its uses would only report it again as undefined).
                 const auto v = s.kind == Statement::Kind::Let ? evaluate(*s.expr, nullptr)
-                               : [&]() -> std::optional<Value> {
-                                     NodePtr node = lowerSolid(*s.solid);
-                                     return node ? std::optional<Value>(Value::ofSolid(node)) : std::nullopt;
-                                 }();
+                                                              : [&]() -> std::optional<Value> {
+                    NodePtr node = lowerSolid(*s.solid);
+                    return node ? std::optional<Value>(Value::ofSolid(node)) : std::nullopt;
+                }();
                 if (!v) {
                     mLocals.resize(mark);
                     return;
@@ -33,7 +33,8 @@ void Lowering::runBlock(const std::vector<Statement>& body, Scene& scene) {
                 break;
             }
             case Statement::Kind::Object:
-                if (NodePtr node = lowerSolid(*s.solid)) addObject(node, scene, s.name != "no_shadow");
+                if (NodePtr node = lowerSolid(*s.solid))
+                    addObject(node, scene, s.name != "no_shadow");
                 break;
             case Statement::Kind::Light:
                 if (auto light = lowerLight(s)) scene.lights.push_back(*light);
@@ -44,8 +45,10 @@ void Lowering::runBlock(const std::vector<Statement>& body, Scene& scene) {
             case Statement::Kind::Assert: runAssert(s); break;
             case Statement::Kind::Echo: runEcho(s); break;
             default:
-                error(s.loc, "this statement is allowed only at the top level, not inside for or if",
-                      "inside a block write let, solid, object, light, section, for, if, assert or echo");
+                error(s.loc,
+                      "this statement is allowed only at the top level, not inside for or if",
+                      "inside a block write let, solid, object, light, section, for, if, assert or "
+                      "echo");
                 break;
         }
     }
@@ -107,7 +110,9 @@ bool Lowering::expandChildren(const ArenaList<Solid>& children, std::vector<Node
     for (const Solid& c : children) {
         if (c.kind == Solid::Kind::For) {
             const Property& head = c.properties[0];
-            ok = iterate(*head.expr, head.name, head.loc, [&]() { return expandChildren(c.children, out); }) && ok;
+            ok = iterate(*head.expr, head.name, head.loc,
+                         [&]() { return expandChildren(c.children, out); }) &&
+                 ok;
         } else if (c.kind == Solid::Kind::If) {
             const auto v = evaluate(*c.properties[0].expr, nullptr);
             if (!v) {
@@ -116,14 +121,19 @@ bool Lowering::expandChildren(const ArenaList<Solid>& children, std::vector<Node
             }
             if (v->type != Value::Type::Bool) {
                 error(c.properties[0].expr->start,
-                      "the condition of 'if' must be a boolean, got " + typeName(v->type), "compare it, as in n > 0");
+                      "the condition of 'if' must be a boolean, got " + typeName(v->type),
+                      "compare it, as in n > 0");
                 ok = false;
                 continue;
             }
-            const bool hasElse = !c.children.empty() && c.children[c.children.size() - 1].kind == Solid::Kind::Else;
+            const bool hasElse =
+                !c.children.empty() && c.children[c.children.size() - 1].kind == Solid::Kind::Else;
             const size_t thenCount = c.children.size() - (hasElse ? 1 : 0);
             if (v->truth())
-                ok = expandChildren(ArenaList<Solid>(c.children.begin(), static_cast<uint32_t>(thenCount)), out) && ok;
+                ok = expandChildren(
+                         ArenaList<Solid>(c.children.begin(), static_cast<uint32_t>(thenCount)),
+                         out) &&
+                     ok;
             else if (hasElse)
                 ok = expandChildren(c.children[thenCount].children, out) && ok;
         } else {

@@ -25,7 +25,11 @@ bool appendKey(const Value& v, std::string& key) {
     switch (v.type) {
         case Value::Type::Number:
         case Value::Type::Bool: bits(v.number); return true;
-        case Value::Type::Vector: bits(v.vector.x); bits(v.vector.y); bits(v.vector.z); return true;
+        case Value::Type::Vector:
+            bits(v.vector.x);
+            bits(v.vector.y);
+            bits(v.vector.z);
+            return true;
         case Value::Type::String:
             key += std::to_string(v.string().size()) + ':' + v.string();
             return true;
@@ -52,14 +56,16 @@ const Value* Lowering::local(const std::string& name) const {
     return nullptr;
 }
 
-std::optional<Value> Lowering::callFunction(const Statement& fn, const Expr& call, ExprGraph* field) {
+std::optional<Value> Lowering::callFunction(const Statement& fn, const Expr& call,
+                                            ExprGraph* field) {
     if (fn.broken) return std::nullopt;  // its syntax error is reported
     const SourceLoc at = mSink.locate(call.loc);
     if (static_cast<int>(mCalls.size()) >= mLimits.callDepth) {
         if (!mLimitReported) {
             mLimitReported = true;
-            error(call.loc, "recursion deeper than " + std::to_string(mLimits.callDepth) + " in call to " + fn.name +
-                                " at line " + std::to_string(at.line),
+            error(call.loc,
+                  "recursion deeper than " + std::to_string(mLimits.callDepth) + " in call to " +
+                      fn.name + " at line " + std::to_string(at.line),
                   "a recursive function needs a case that stops, e.g. level == 0 ? … : …");
         }
         return std::nullopt;
@@ -81,7 +87,8 @@ std::optional<Value> Lowering::callFunction(const Statement& fn, const Expr& cal
                 for (const Property& p : params) names.push_back(p.name);
                 std::string hint = didYouMean(a.name(), names);
                 error(a.loc, "'" + fn.name + "' has no parameter '" + a.name() + "'",
-                      hint.empty() ? (names.empty() ? "it takes no arguments" : "its parameters are " + joinNames(names))
+                      hint.empty() ? (names.empty() ? "it takes no arguments"
+                                                    : "its parameters are " + joinNames(names))
                                    : hint);
                 return std::nullopt;
             }
@@ -95,8 +102,9 @@ std::optional<Value> Lowering::callFunction(const Statement& fn, const Expr& cal
                 return std::nullopt;
             }
             if (position >= params.size()) {
-                error(a.start, "'" + fn.name + "' takes " + std::to_string(params.size()) + " argument" +
-                                   (params.size() == 1 ? "" : "s") + ", got " + std::to_string(call.args().size()));
+                error(a.start, "'" + fn.name + "' takes " + std::to_string(params.size()) +
+                                   " argument" + (params.size() == 1 ? "" : "s") + ", got " +
+                                   std::to_string(call.args().size()));
                 return std::nullopt;
             }
             slot = position++;
@@ -153,8 +161,10 @@ std::optional<Value> Lowering::callFunction(const Statement& fn, const Expr& cal
     }
     auto result = evaluate(*fn.expr, field);
     leave();
-    if (result && result->type != Value::Type::Solid) mReturnsOther.insert(&fn);
-    else if (result && memo) mCallMemo.emplace(std::move(key), *result);
+    if (result && result->type != Value::Type::Solid)
+        mReturnsOther.insert(&fn);
+    else if (result && memo)
+        mCallMemo.emplace(std::move(key), *result);
     return result;
 }
 

@@ -1,14 +1,14 @@
 // Lowering, part 3c: `displace PATTERN by D`. The solid {f ≤ 0} becomes the implicit solid
 // {f − D·h ≤ 0}, h the pattern's value mapped to [−1, 1], written into one expression with the
-// solid's own implicit form (csg/tree_tape.h), so that tracing, the octree, shadows and CSG
+// solid's own implicit form (csg/tape/tree_tape.h), so that tracing, the octree, shadows and CSG
 // all see the displaced surface through the same interval machinery as any implicit: the
-// noise's enclosures (csg/noise.h) keep root isolation from ever stepping over it.
+// noise's enclosures (csg/tape/noise.h) keep root isolation from ever stepping over it.
 #include "lang/lower.h"
 
-#include "csg/clear_bound.h"
-#include "csg/implicit_expr.h"
-#include "csg/solids.h"
-#include "csg/tree_tape.h"
+#include "csg/primitives/clear_bound.h"
+#include "csg/primitives/implicit_expr.h"
+#include "csg/tape/tree_tape.h"
+#include "csg/tree/solids.h"
 
 #include <cmath>
 #include <variant>
@@ -65,9 +65,10 @@ NodePtr Lowering::displaced(const NodePtr& node, const Modifier& m) {
         return nullptr;
     }
     if (depthValue->type != Value::Type::Number || !std::isfinite(depthValue->number)) {
-        error(m.args[0].start, "the displacement's depth must be a finite number, got " +
-                                   (depthValue->type == Value::Type::Number ? formatNumber(depthValue->number)
-                                                                            : typeName(depthValue->type)));
+        error(m.args[0].start,
+              "the displacement's depth must be a finite number, got " +
+                  (depthValue->type == Value::Type::Number ? formatNumber(depthValue->number)
+                                                           : typeName(depthValue->type)));
         return nullptr;
     }
     const double depth = depthValue->number;
@@ -86,15 +87,19 @@ NodePtr Lowering::displaced(const NodePtr& node, const Modifier& m) {
     const ExprId x = graph.x(), y = graph.y(), z = graph.z();
     ExprId q[3];
     e.mapPoint(pattern->toPattern, x, y, z, q);
-    const ExprId f = e.sub(treeExpr(*node, graph, x, y, z), e.mul(e.c(depth), heightExpr(*pattern, e, q)));
+    const ExprId f =
+        e.sub(treeExpr(*node, graph, x, y, z), e.mul(e.c(depth), heightExpr(*pattern, e, q)));
     const std::shared_ptr<const Tape> tape = Tape::compile(graph, f);
     // The surface can leave the solid's bounds by |D| where f grows like a distance, more where
     // it grows slower (a scaled solid): the bound grows until its faces are proved clear.
     const double pad = std::fabs(depth) * 1.25 + 1e-9 * glm::length(inner.extent());
     const auto bound = grownClearBound(*tape, inner, pad, kBoundDoublings, kBoundBudget);
     if (!bound) {
-        error(m.loc, "cannot bound the displaced solid: its implicit form does not grow away from the solid",
-              "displace a solid whose implicit form grows with distance (primitives do), or a smaller depth");
+        error(
+            m.loc,
+            "cannot bound the displaced solid: its implicit form does not grow away from the solid",
+            "displace a solid whose implicit form grows with distance (primitives do), or a "
+            "smaller depth");
         return nullptr;
     }
     NodePtr out = makeImplicit(tape, *bound);

@@ -3,7 +3,7 @@
 // is a node of an ExprGraph, with constant subexpressions still folded.
 #include "lang/lower.h"
 
-#include "csg/noise.h"
+#include "csg/tape/noise.h"
 #include "lang/diagnostic_hints.h"
 #include "lang/names.h"
 
@@ -24,12 +24,13 @@ struct Function {
 };
 
 const std::array<Function, 20> kFunctions = {{
-    {"sin", 1, Op::Sin}, {"cos", 1, Op::Cos}, {"tan", 1, Op::Tan}, {"asin", 1, Op::Asin},
-    {"acos", 1, Op::Acos}, {"atan", 1, Op::Atan}, {"sqrt", 1, Op::Sqrt}, {"abs", 1, Op::Abs},
-    {"exp", 1, Op::Exp}, {"log", 1, Op::Log}, {"floor", 1, Op::Floor}, {"ceil", 1, Op::Ceil},
-    {"atan2", 2, Op::Atan2}, {"pow", 2, Op::Pow}, {"min", 2, Op::Min}, {"max", 2, Op::Max},
-    {"clamp", 3, Op::Min}, {"mix", 3, Op::Add}, {"noise", 3, Op::Noise},
-    {"pi", 0, Op::Const},  // pi is not callable
+    {"sin", 1, Op::Sin},     {"cos", 1, Op::Cos},     {"tan", 1, Op::Tan},
+    {"asin", 1, Op::Asin},   {"acos", 1, Op::Acos},   {"atan", 1, Op::Atan},
+    {"sqrt", 1, Op::Sqrt},   {"abs", 1, Op::Abs},     {"exp", 1, Op::Exp},
+    {"log", 1, Op::Log},     {"floor", 1, Op::Floor}, {"ceil", 1, Op::Ceil},
+    {"atan2", 2, Op::Atan2}, {"pow", 2, Op::Pow},     {"min", 2, Op::Min},
+    {"max", 2, Op::Max},     {"clamp", 3, Op::Min},   {"mix", 3, Op::Add},
+    {"noise", 3, Op::Noise}, {"pi", 0, Op::Const},  // pi is not callable
 }};
 
 double applyConstant(Op op, double a, double b) {
@@ -77,7 +78,8 @@ ExprId asField(const Value& v, ExprGraph& graph) {
 /// a^b in the graph: an integer constant exponent becomes PowInt (exact for negative bases).
 ExprId powerField(ExprGraph& graph, const Value& a, const Value& b) {
     const ExprId base = asField(a, graph);
-    if (b.type == Value::Type::Number && b.number == std::floor(b.number) && std::fabs(b.number) <= 64) {
+    if (b.type == Value::Type::Number && b.number == std::floor(b.number) &&
+        std::fabs(b.number) <= 64) {
         const int n = static_cast<int>(b.number);
         if (n == 0) return graph.constant(1.0);
         if (n == 1) return base;
@@ -92,7 +94,8 @@ ExprId powerField(ExprGraph& graph, const Value& a, const Value& b) {
 bool isBuiltinFunction(const std::string& name) {
     for (const Function& f : kFunctions)
         if (f.arity > 0 && name == f.name) return true;
-    for (const char* b : {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
+    for (const char* b :
+         {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
         if (name == b) return true;
     return false;
 }
@@ -102,12 +105,11 @@ std::optional<Value> Lowering::finite(Value v, SourcePos at, const std::string& 
 }
 
 bool Lowering::isFinite(const Value& v) {
-    return v.type == Value::Type::Number   ? std::isfinite(v.number)
-           : v.type == Value::Type::Vector ? std::isfinite(v.vector.x) && std::isfinite(v.vector.y) &&
-                                                 std::isfinite(v.vector.z)
-                                           : true;
+    return v.type == Value::Type::Number ? std::isfinite(v.number)
+           : v.type == Value::Type::Vector
+               ? std::isfinite(v.vector.x) && std::isfinite(v.vector.y) && std::isfinite(v.vector.z)
+               : true;
 }
-
 
 std::optional<Value> Lowering::evaluate(const Expr& e, ExprGraph* field) {
     if (!enter(e.loc)) return std::nullopt;
@@ -118,8 +120,9 @@ std::optional<Value> Lowering::evaluate(const Expr& e, ExprGraph* field) {
 
     switch (e.kind) {
         case Expr::Kind::Number:
-            return finiteLazy(Value::ofNumber(e.number), e.loc,
-                              [&] { return mSink.textAt(e.loc, e.count) + " is too large for a double"; });
+            return finiteLazy(Value::ofNumber(e.number), e.loc, [&] {
+                return mSink.textAt(e.loc, e.count) + " is too large for a double";
+            });
         case Expr::Kind::Name: return evaluateName(e, field);
         case Expr::Kind::Call: return evaluateCall(e, field);
         case Expr::Kind::Vector: {
@@ -130,7 +133,8 @@ std::optional<Value> Lowering::evaluate(const Expr& e, ExprGraph* field) {
                 if (!c) {
                     ok = false;
                 } else if (c->type != Value::Type::Number) {
-                    error(e.args()[i].start, "a vector component must be a number, got " + typeName(c->type));
+                    error(e.args()[i].start,
+                          "a vector component must be a number, got " + typeName(c->type));
                     ok = false;
                 } else {
                     v[i] = c->number;
@@ -144,7 +148,8 @@ std::optional<Value> Lowering::evaluate(const Expr& e, ExprGraph* field) {
             if (!a) return std::nullopt;
             if (a->type == Value::Type::Number) return Value::ofNumber(-a->number);
             if (a->type == Value::Type::Vector) return Value::ofVector(-a->vector);
-            if (a->type == Value::Type::Field) return Value::ofField(field->unary(Op::Neg, a->field));
+            if (a->type == Value::Type::Field)
+                return Value::ofField(field->unary(Op::Neg, a->field));
             error(e.loc, "cannot negate " + typeName(a->type));
             return std::nullopt;
         }
@@ -168,31 +173,39 @@ std::optional<Value> Lowering::arithmetic(char op, const Value& a, const Value& 
         std::string hint;
         if (a.type == T::Vector && b.type == T::Vector && (op == '*' || op == '/'))
             hint = "vectors multiply only by numbers";
-        error(at, "cannot apply '" + std::string(1, op) + "' to " + typeName(a.type) + " and " + typeName(b.type),
+        error(at,
+              "cannot apply '" + std::string(1, op) + "' to " + typeName(a.type) + " and " +
+                  typeName(b.type),
               hint);
         return std::nullopt;
     };
-    if (op == '+' && a.type == b.type && (a.type == T::String || a.type == T::List)) return concatenate(a, b, at);
+    if (op == '+' && a.type == b.type && (a.type == T::String || a.type == T::List))
+        return concatenate(a, b, at);
     const auto plain = [](T t) { return t == T::Number || t == T::Vector || t == T::Field; };
     if (!plain(a.type) || !plain(b.type)) return mistyped();
-    if (op == '%') {  // floored: the result has the sign of b, so i % 2 is 0 or 1 for every integer i
+    if (op ==
+        '%') {  // floored: the result has the sign of b, so i % 2 is 0 or 1 for every integer i
         if (a.type != T::Number || b.type != T::Number) return mistyped();
         if (b.number == 0) {
             error(at, "remainder of a division by 0: " + formatNumber(a.number) + " % 0");
             return std::nullopt;
         }
         const double r = a.number - b.number * std::floor(a.number / b.number);
-        return finiteLazy(Value::ofNumber(r), at, [&] { return formatNumber(a.number) + " % " + formatNumber(b.number); });
+        return finiteLazy(Value::ofNumber(r), at,
+                          [&] { return formatNumber(a.number) + " % " + formatNumber(b.number); });
     }
     if (a.type == T::Number && b.type == T::Number) {
         const double r = applyConstant(operatorOp(op), a.number, b.number);
-        return finiteLazy(Value::ofNumber(r), at, [&] { return
-                      formatNumber(a.number) + " " + op + " " + formatNumber(b.number) + " = " + formatNumber(r); });
+        return finiteLazy(Value::ofNumber(r), at, [&] {
+            return formatNumber(a.number) + " " + op + " " + formatNumber(b.number) + " = " +
+                   formatNumber(r);
+        });
     }
     if (a.type == T::Field || b.type == T::Field) {
         if (a.type == T::Vector || b.type == T::Vector) return mistyped();
         if (op == '^') return Value::ofField(powerField(*field, a, b));
-        return Value::ofField(field->binary(operatorOp(op), asField(a, *field), asField(b, *field)));
+        return Value::ofField(
+            field->binary(operatorOp(op), asField(a, *field), asField(b, *field)));
     }
     Vec3 r;
     if (a.type == T::Vector && b.type == T::Vector && (op == '+' || op == '-'))
@@ -219,7 +232,9 @@ std::optional<double> Lowering::numberValue(const Expr& e, const char* what) {
 std::optional<Value> Lowering::evaluateName(const Expr& e, ExprGraph* field) {
     if (const Value* v = local(e.name())) return *v;
     if (field && (e.name() == "x" || e.name() == "y" || e.name() == "z"))
-        return Value::ofField(e.name() == "x" ? field->x() : e.name() == "y" ? field->y() : field->z());
+        return Value::ofField(e.name() == "x"   ? field->x()
+                              : e.name() == "y" ? field->y()
+                                                : field->z());
     if (e.name() == "pi") return Value::ofNumber(M_PI);
     if (mLets.count(e.name())) return letValue(e.name(), e.loc);
     if (mSolids.count(e.name())) {
@@ -228,7 +243,8 @@ std::optional<Value> Lowering::evaluateName(const Expr& e, ExprGraph* field) {
         return Value::ofSolid(node);
     }
     if (mFunctions.count(e.name())) {
-        error(e.loc, "'" + e.name() + "' is a function, not a value", "call it: " + e.name() + "(…)");
+        error(e.loc, "'" + e.name() + "' is a function, not a value",
+              "call it: " + e.name() + "(…)");
         return std::nullopt;
     }
     if (mMaterials.count(e.name())) {
@@ -253,9 +269,7 @@ std::optional<Value> Lowering::letValue(const std::string& name, SourcePos use) 
     switch (entry.state) {
         case State::Done: return entry.value;
         case State::Failed: return std::nullopt;
-        case State::Busy:
-            error(use, cycleMessage("let", mBusyLets, name));
-            return std::nullopt;
+        case State::Busy: error(use, cycleMessage("let", mBusyLets, name)); return std::nullopt;
         case State::Pending: break;
     }
     if (entry.def->broken) {
@@ -289,7 +303,8 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
         std::unordered_map<std::string, int> index;
         for (size_t i = 0; i < kFunctions.size(); ++i)
             if (kFunctions[i].arity > 0) index.emplace(kFunctions[i].name, static_cast<int>(i));
-        for (const char* b : {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
+        for (const char* b :
+             {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
             index.emplace(b, -1);
         return index;
     }();
@@ -315,7 +330,8 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
         std::vector<std::string> names;
         for (const Function& f : kFunctions)
             if (f.arity > 0) names.emplace_back(f.name);
-        for (const char* b : {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
+        for (const char* b :
+             {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
             names.emplace_back(b);
         for (const auto& [name, def] : mFunctions) names.push_back(name);
         std::string hint = callSyntaxHint(e.name());  // OpenSCAD's cube([…]) and the like
@@ -347,7 +363,8 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
     if (name == "pow") return arithmetic('^', args[0], args[1], e.loc, field);
     for (size_t i = 0; i < args.size(); ++i) {
         if (args[i].type != Value::Type::Number && args[i].type != Value::Type::Field) {
-            error(e.args()[i].start, "'" + name + "' expects a number, got " + typeName(args[i].type));
+            error(e.args()[i].start,
+                  "'" + name + "' expects a number, got " + typeName(args[i].type));
             return std::nullopt;
         }
     }
@@ -363,12 +380,13 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
         if (fn->arity == 1) return Value::ofField(field->unary(op, a.field));
         return Value::ofField(field->binary(op, asField(a, *field), asField(b, *field)));
     };
-    if (name == "noise") {  // gradient noise at (a, b, c), seed 0 (csg/noise.h)
+    if (name == "noise") {  // gradient noise at (a, b, c), seed 0 (csg/tape/noise.h)
         if (args[0].type == Value::Type::Number && args[1].type == Value::Type::Number &&
             args[2].type == Value::Type::Number)
-            return Value::ofNumber(gradientNoise(Vec3(args[0].number, args[1].number, args[2].number), 0));
-        return Value::ofField(
-            field->noise(asField(args[0], *field), asField(args[1], *field), asField(args[2], *field), 0));
+            return Value::ofNumber(
+                gradientNoise(Vec3(args[0].number, args[1].number, args[2].number), 0));
+        return Value::ofField(field->noise(asField(args[0], *field), asField(args[1], *field),
+                                           asField(args[2], *field), 0));
     }
     if (name == "clamp") {  // min(max(a, lo), hi)
         const auto lower = apply(Op::Max, args[0], args[1]);
@@ -424,13 +442,14 @@ bool Lowering::readVector(const PropertyBlock& block, const std::string& name, V
     return v.has_value();
 }
 
-bool Lowering::readInteger(const PropertyBlock& block, const std::string& name, int lo, int hi, int& out) {
+bool Lowering::readInteger(const PropertyBlock& block, const std::string& name, int lo, int hi,
+                           int& out) {
     double v = out;
     if (!readNumber(block, name, v)) return false;
     if (v != std::floor(v) || v < lo || v > hi) {
-        error(block.find(name)->valueLoc(), block.what() + " " + name + " must be an integer from " +
-                                                std::to_string(lo) + " to " + std::to_string(hi) + ", got " +
-                                                formatNumber(v));
+        error(block.find(name)->valueLoc(),
+              block.what() + " " + name + " must be an integer from " + std::to_string(lo) +
+                  " to " + std::to_string(hi) + ", got " + formatNumber(v));
         return false;
     }
     out = static_cast<int>(v);

@@ -70,12 +70,13 @@ std::optional<Light> Lowering::lowerLight(const Statement& s) {
     if (light.kind == Light::Kind::Sphere) ok &= readNumber(b, "radius", light.radius);
     if (!ok) return std::nullopt;
     if (!nonNegative(light.color)) {
-        error(b.find("color")->valueLoc(), "light color must not have negative components, got " +
-                                               formatVector(light.color));
+        error(b.find("color")->valueLoc(),
+              "light color must not have negative components, got " + formatVector(light.color));
         ok = false;
     }
     if (light.power < 0) {
-        error(b.find("power")->valueLoc(), "light power must not be negative, got " + formatNumber(light.power));
+        error(b.find("power")->valueLoc(),
+              "light power must not be negative, got " + formatNumber(light.power));
         ok = false;
     }
     if (b.find("fade_distance") && !(light.fadeDistance > 0 && std::isfinite(light.fadeDistance))) {
@@ -88,14 +89,18 @@ std::optional<Light> Lowering::lowerLight(const Statement& s) {
         error(b.find("direction")->valueLoc(), "light direction must not be zero");
         ok = false;
     }
-    if (light.kind == Light::Kind::Area && !(glm::length(glm::cross(light.edgeU, light.edgeV)) > 0)) {
-        error(b.find("edge2")->valueLoc(), "area light edges " + formatVector(light.edgeU) + " and " +
-                                               formatVector(light.edgeV) + " span no area",
-              "edge1 and edge2 are two sides of the parallelogram from its corner; they must not be parallel");
+    if (light.kind == Light::Kind::Area &&
+        !(glm::length(glm::cross(light.edgeU, light.edgeV)) > 0)) {
+        error(b.find("edge2")->valueLoc(),
+              "area light edges " + formatVector(light.edgeU) + " and " +
+                  formatVector(light.edgeV) + " span no area",
+              "edge1 and edge2 are two sides of the parallelogram from its corner; they must not "
+              "be parallel");
         ok = false;
     }
     if (light.kind == Light::Kind::Sphere && !(light.radius > 0 && std::isfinite(light.radius))) {
-        error(b.find("radius")->valueLoc(), "sphere light radius must be positive, got " + formatNumber(light.radius),
+        error(b.find("radius")->valueLoc(),
+              "sphere light radius must be positive, got " + formatNumber(light.radius),
               "a point light is a sphere light of radius 0: write light point { … }");
         ok = false;
     }
@@ -123,13 +128,14 @@ void Lowering::lowerBackground(const Statement& s, Scene& scene) {
             const Vec3& c = name[0] == 'h' ? sky.horizon : name[0] == 'z' ? sky.zenith : sky.nadir;
             if (b.find(name) && !nonNegative(c)) {
                 error(b.find(name)->valueLoc(), std::string("background ") + name +
-                                                    " must not have negative components, got " + formatVector(c));
+                                                    " must not have negative components, got " +
+                                                    formatVector(c));
                 ok = false;
             }
         }
         if (!(glm::length(sky.up) > 0) || !std::isfinite(glm::length(sky.up))) {
-            error(b.find("up")->valueLoc(), "background up must be a finite non-zero vector, got " +
-                                                formatVector(sky.up));
+            error(b.find("up")->valueLoc(),
+                  "background up must be a finite non-zero vector, got " + formatVector(sky.up));
             ok = false;
         }
         if (!ok) return;
@@ -146,7 +152,8 @@ void Lowering::lowerBackground(const Statement& s, Scene& scene) {
         return;
     }
     if (!nonNegative(v->vector)) {
-        error(s.expr->start, "background color must not have negative components, got " + formatVector(v->vector));
+        error(s.expr->start,
+              "background color must not have negative components, got " + formatVector(v->vector));
         return;
     }
     scene.background = v->vector;

@@ -5,9 +5,9 @@
 // wherever a solid is needed: as a Boolean operand, displaced, or cut by a section plane.
 #include "lang/lower.h"
 
+#include "csg/primitives/surfaces.h"
 #include "mesh/mesh_loader.h"
 #include "mesh/mesh_shape.h"
-#include "csg/surfaces.h"
 
 #include <filesystem>
 #include <system_error>
@@ -44,7 +44,8 @@ const Node* meshLeafBelow(const Node* node) {
 }  // namespace
 
 NodePtr Lowering::lowerMesh(const Solid& s) {
-    const PropertyBlock b(s.properties, {{"file", PropertyType::Word, true}, {"smooth", PropertyType::Bool}},
+    const PropertyBlock b(s.properties,
+                          {{"file", PropertyType::Word, true}, {"smooth", PropertyType::Bool}},
                           "mesh", s.loc, mSink);
     bool smooth = true;
     bool ok = b.ok();
@@ -55,7 +56,8 @@ NodePtr Lowering::lowerMesh(const Solid& s) {
     const auto v = evaluate(*file->expr, nullptr);
     if (!v) return nullptr;
     if (v->type != Value::Type::String) {
-        error(at, "mesh expects a file name in quotes, got " + typeName(v->type), "write e.g. 'mesh \"part.stl\"'");
+        error(at, "mesh expects a file name in quotes, got " + typeName(v->type),
+              "write e.g. 'mesh \"part.stl\"'");
         return nullptr;
     }
     if (v->string().empty()) {
@@ -72,25 +74,29 @@ NodePtr Lowering::lowerMesh(const Solid& s) {
 std::shared_ptr<const MeshShape> Lowering::meshShape(const std::string& written, SourcePos at) {
     // Relative to the folder of the model file it is written in, as includes and textures are.
     const fs::path model = *mSink.locate(at).file;
-    const std::string path =
-        fs::path(written).is_absolute() ? written : (model.parent_path() / written).lexically_normal().string();
+    const std::string path = fs::path(written).is_absolute()
+                                 ? written
+                                 : (model.parent_path() / written).lexically_normal().string();
     std::error_code ec;
     fs::path canonical = fs::weakly_canonical(path, ec);
     const std::string key = ec ? path : canonical.string();
-    if (const auto it = mMeshFiles.find(key); it != mMeshFiles.end()) return it->second;  // failures once
+    if (const auto it = mMeshFiles.find(key); it != mMeshFiles.end())
+        return it->second;  // failures once
     std::shared_ptr<const MeshShape> shape;
     try {
         shape = loadMeshShape(path);
     } catch (const MeshError& e) {
         error(at, "cannot load mesh '" + written + "': " + reasonOf(e, path),
-              path == written ? std::string()
-                              : "mesh files are relative to the model file's folder; looked for " + path);
+              path == written
+                  ? std::string()
+                  : "mesh files are relative to the model file's folder; looked for " + path);
     }
     mMeshFiles.emplace(key, shape);
     return shape;
 }
 
-bool Lowering::checkSolidOperands(const std::vector<NodePtr>& operands, const std::string& use, SourcePos at) {
+bool Lowering::checkSolidOperands(const std::vector<NodePtr>& operands, const std::string& use,
+                                  SourcePos at) {
     if (!checkSurfaceOperands(operands, use, at)) return false;
     if (mOpenMeshes.empty()) return true;  // no mesh that is not a solid: nothing to look for
     bool ok = true;
@@ -100,16 +106,19 @@ bool Lowering::checkSolidOperands(const std::vector<NodePtr>& operands, const st
         if (it == mOpenMeshes.end()) continue;
         ok = false;
         const SourcePos meshAt = it->second.second;
-        if (!mReportedOpenMeshes.insert(uint64_t(meshAt.file) << 32 | meshAt.offset).second) continue;
+        if (!mReportedOpenMeshes.insert(uint64_t(meshAt.file) << 32 | meshAt.offset).second)
+            continue;
         const MeshShape& shape = *std::get<MeshParams>(leaf->params()).shape;
         const MeshReport& report = shape.report();
         std::string why = report.firstBadEdge ? describeBadEdge(*report.firstBadEdge)
                                               : std::string("it has no closed surface");
         const SourceLoc used = mSink.locate(at);
-        error(meshAt, "mesh '" + shape.source() + "' is not a solid: " + why,
-              "it is " + use + " at line " + std::to_string(used.line) + ", column " + std::to_string(used.col) +
-                  ", which needs a closed, consistently oriented mesh; on its own (an object, under "
-                  "transforms and materials) it still renders as a surface");
+        error(
+            meshAt, "mesh '" + shape.source() + "' is not a solid: " + why,
+            "it is " + use + " at line " + std::to_string(used.line) + ", column " +
+                std::to_string(used.col) +
+                ", which needs a closed, consistently oriented mesh; on its own (an object, under "
+                "transforms and materials) it still renders as a surface");
     }
     return ok;
 }
@@ -117,7 +126,8 @@ bool Lowering::checkSolidOperands(const std::vector<NodePtr>& operands, const st
 void Lowering::checkSectionedSurfaces(const Scene& scene) {
     if ((mOpenMeshes.empty() && mSurfaces.empty()) || scene.sections.empty()) return;
     for (const NodePtr& object : scene.objects) {
-        if (!meshLeafBelow(object.get()) && !isSurfaceTree(*object)) continue;  // csg/surfaces.h
+        if (!meshLeafBelow(object.get()) && !isSurfaceTree(*object))
+            continue;  // csg/primitives/surfaces.h
         const Bounds3& box = object->bounds();
         for (size_t i = 0; i < scene.sections.size(); ++i) {
             const SectionPlane& plane = scene.sections[i];

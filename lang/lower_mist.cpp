@@ -5,14 +5,14 @@
 // expression's density from bricked storage.
 #include "lang/lower.h"
 
-#include "csg/tape.h"
-#include "volume/bricked_field.h"
-#include "volume/vdb_fog.h"
+#include "csg/tape/tape.h"
+#include "volume/grids/bricked_field.h"
+#include "volume/grids/vdb_fog.h"
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <filesystem>
+#include <stdexcept>
 
 namespace kerf {
 namespace {
@@ -20,7 +20,7 @@ namespace {
 bool nonNegative(const Vec3& v) { return v.x >= 0 && v.y >= 0 && v.z >= 0; }
 
 /// A density written as an expression, compiled to a tape. The medium calls it from render
-/// threads, never from inside a tape, so evaluating a tape here is safe (csg/scalar_field.h).
+/// threads, never from inside a tape, so evaluating a tape here is safe (csg/tape/scalar_field.h).
 class TapeDensity final : public ScalarField {
 public:
     explicit TapeDensity(std::shared_ptr<const Tape> tape) : mTape(std::move(tape)) {}
@@ -42,7 +42,8 @@ private:
 
 /// A sub-box of `box` where the field's interval bound proves it negative, searched by
 /// bisecting the boxes whose bound straddles 0 (at most `budget` range calls).
-std::optional<Bounds3> provedNegative(const ScalarField& f, const Bounds3& box, int level, int& budget) {
+std::optional<Bounds3> provedNegative(const ScalarField& f, const Bounds3& box, int level,
+                                      int& budget) {
     if (budget-- <= 0) return std::nullopt;
     const Interval r = f.range(Interval(box.lo.x, box.hi.x), Interval(box.lo.y, box.hi.y),
                                Interval(box.lo.z, box.hi.z));
@@ -84,14 +85,16 @@ void Lowering::lowerMist(const Statement& s, Scene& scene) {
                           "mist", s.loc, mSink);
     if (!b.ok()) return;
     const Property* density = b.find("density");
-    static const char* const kMediumOnly[] = {"bounds", "min", "max", "extinction", "albedo", "emission",
-                                              "g", "method", "step", "samples", "bake"};
+    static const char* const kMediumOnly[] = {"bounds", "min",      "max", "extinction",
+                                              "albedo", "emission", "g",   "method",
+                                              "step",   "samples",  "bake"};
     if (!density) {  // the homogeneous mist
         Mist& mist = scene.mist;
         for (const char* name : kMediumOnly)
             if (const Property* p = b.find(name)) {
                 error(p->loc, std::string("mist ") + name + " needs a density",
-                      "write density EXPR bounds box { min … max … }, or use color and distance for uniform mist");
+                      "write density EXPR bounds box { min … max … }, or use color and distance "
+                      "for uniform mist");
                 return;
             }
         if (!b.find("distance")) {
@@ -103,10 +106,11 @@ void Lowering::lowerMist(const Statement& s, Scene& scene) {
         ok &= readNumber(b, "distance", mist.distance);
         if (!ok) return;
         if (!nonNegative(mist.color))
-            error(b.find("color")->valueLoc(), "mist color must not have negative components, got " +
-                                                   formatVector(mist.color));
+            error(b.find("color")->valueLoc(),
+                  "mist color must not have negative components, got " + formatVector(mist.color));
         if (!(mist.distance > 0))
-            error(b.find("distance")->valueLoc(), "mist distance must be positive, got " + formatNumber(mist.distance));
+            error(b.find("distance")->valueLoc(),
+                  "mist distance must be positive, got " + formatNumber(mist.distance));
         mist.enabled = true;
         return;
     }
@@ -114,9 +118,12 @@ void Lowering::lowerMist(const Statement& s, Scene& scene) {
     Medium medium;
     for (const char* name : {"distance", "color"})
         if (const Property* p = b.find(name)) {
-            error(p->loc, std::string("mist ") + name + " is for uniform mist; a mist with a density takes " +
-                              (name[0] == 'd' ? "extinction" : "albedo"),
-                  "extinction scales the density into the extinction coefficient; albedo is the colour scattered");
+            error(p->loc,
+                  std::string("mist ") + name +
+                      " is for uniform mist; a mist with a density takes " +
+                      (name[0] == 'd' ? "extinction" : "albedo"),
+                  "extinction scales the density into the extinction coefficient; albedo is the "
+                  "colour scattered");
             return;
         }
     bool ok = readNumber(b, "extinction", medium.extinction);
@@ -130,22 +137,27 @@ void Lowering::lowerMist(const Statement& s, Scene& scene) {
     if (!ok) return;
     const auto at = [&](const char* name) { return b.find(name)->valueLoc(); };
     if (b.find("extinction") && !(medium.extinction >= 0 && std::isfinite(medium.extinction)))
-        return error(at("extinction"), "mist extinction must be 0 or more, got " + formatNumber(medium.extinction),
+        return error(at("extinction"),
+                     "mist extinction must be 0 or more, got " + formatNumber(medium.extinction),
                      "extinction per unit density per unit length");
-    if (b.find("albedo") && !(nonNegative(medium.albedo) && medium.albedo.x <= 1 && medium.albedo.y <= 1 &&
-                              medium.albedo.z <= 1))
-        return error(at("albedo"), "mist albedo must be within 0 to 1, got " + formatVector(medium.albedo),
+    if (b.find("albedo") && !(nonNegative(medium.albedo) && medium.albedo.x <= 1 &&
+                              medium.albedo.y <= 1 && medium.albedo.z <= 1))
+        return error(at("albedo"),
+                     "mist albedo must be within 0 to 1, got " + formatVector(medium.albedo),
                      "albedo is the fraction of extinguished light scattered, per channel");
-    if (b.find("emission") && !(nonNegative(medium.emission) && std::isfinite(medium.emission.x) &&
-                                std::isfinite(medium.emission.y) && std::isfinite(medium.emission.z)))
+    if (b.find("emission") &&
+        !(nonNegative(medium.emission) && std::isfinite(medium.emission.x) &&
+          std::isfinite(medium.emission.y) && std::isfinite(medium.emission.z)))
         return error(at("emission"), "mist emission must be finite and not negative, got " +
                                          formatVector(medium.emission));
     if (b.find("g") && !(medium.g > -1 && medium.g < 1))
-        return error(at("g"), "mist g must be between -1 and 1 (exclusive), got " + formatNumber(medium.g),
+        return error(at("g"),
+                     "mist g must be between -1 and 1 (exclusive), got " + formatNumber(medium.g),
                      "g is the Henyey-Greenstein asymmetry: 0 scatters evenly, > 0 forward");
     if (!method.empty())
-        medium.method = method == "ratio" ? MediumMethod::Ratio : method == "delta" ? MediumMethod::Delta
-                                                                                      : MediumMethod::March;
+        medium.method = method == "ratio"   ? MediumMethod::Ratio
+                        : method == "delta" ? MediumMethod::Delta
+                                            : MediumMethod::March;
     if (b.find("step") && !(medium.step > 0 && std::isfinite(medium.step)))
         return error(at("step"), "mist step must be positive, got " + formatNumber(medium.step));
     if (b.find("step") && medium.method != MediumMethod::March)
@@ -163,12 +175,14 @@ void Lowering::lowerMist(const Statement& s, Scene& scene) {
         if (!bounds) return;
     } else if (b.find("min") || b.find("max")) {
         if (!b.find("min") || !b.find("max"))
-            return error((b.find("min") ? b.find("min") : b.find("max"))->loc, "mist needs both min and max");
+            return error((b.find("min") ? b.find("min") : b.find("max"))->loc,
+                         "mist needs both min and max");
         Bounds3 box{Vec3(0.0), Vec3(0.0)};
         if (!readVector(b, "min", box.lo) || !readVector(b, "max", box.hi)) return;
         if (!(box.lo.x < box.hi.x && box.lo.y < box.hi.y && box.lo.z < box.hi.z))
-            return error(at("max"), "empty mist bounds: min " + formatVector(box.lo) + " must be less than max " +
-                                        formatVector(box.hi) + " on every axis");
+            return error(at("max"), "empty mist bounds: min " + formatVector(box.lo) +
+                                        " must be less than max " + formatVector(box.hi) +
+                                        " on every axis");
         bounds = box;
     }
     if (bounds && !bounds->finite()) return error(s.loc, "mist bounds must be finite");
@@ -179,7 +193,9 @@ void Lowering::lowerMist(const Statement& s, Scene& scene) {
         const Property* grid = nullptr;
         for (const Property& p : fog.properties) (p.name == "file" ? file : grid) = &p;
         if (fog.name != "volume" || !file)
-            return error(fog.loc, "property 'density' of mist expects an expression in x, y, z or volume \"file.vdb\"");
+            return error(fog.loc,
+                         "property 'density' of mist expects an expression in x, y, z or volume "
+                         "\"file.vdb\"");
         if (const Property* bake = b.find("bake"))
             return error(bake->loc, "mist bake is for a density written as an expression",
                          "a fog volume is already a grid");
@@ -201,40 +217,49 @@ void Lowering::lowerMist(const Statement& s, Scene& scene) {
             VdbFog v = loadVdbFog(path, gridName);
             medium.density = v.density;
             medium.bounds = bounds ? Bounds3::overlap(*bounds, v.bounds) : v.bounds;
-            if (medium.bounds.empty()) return error(b.find("bounds") ? b.find("bounds")->loc : s.loc,
-                                                    "mist bounds do not overlap the fog volume");
+            if (medium.bounds.empty())
+                return error(b.find("bounds") ? b.find("bounds")->loc : s.loc,
+                             "mist bounds do not overlap the fog volume");
         } catch (const VdbFogError& e) {
-            return error(grid && std::string(e.what()).find("no grid") != std::string::npos ? grid->loc
-                                                                                              : file->valueLoc(),
-                         "cannot read fog volume '" + written + "': " + e.what(),
-                         path == written ? std::string()
-                                         : "volume files are relative to the model file's folder; looked for " + path);
+            return error(
+                grid && std::string(e.what()).find("no grid") != std::string::npos
+                    ? grid->loc
+                    : file->valueLoc(),
+                "cannot read fog volume '" + written + "': " + e.what(),
+                path == written
+                    ? std::string()
+                    : "volume files are relative to the model file's folder; looked for " + path);
         }
     } else {  // density EXPR
         if (!bounds)
             return error(density->loc, "a mist density needs bounds",
-                         "write bounds box { min <x, y, z> max <x, y, z> } around where the density is nonzero");
+                         "write bounds box { min <x, y, z> max <x, y, z> } around where the "
+                         "density is nonzero");
         ExprGraph graph;
         const auto v = evaluate(*density->expr, &graph);
         if (!v) return;
         if (v->type != Value::Type::Field && v->type != Value::Type::Number)
-            return error(density->expr->start, "property 'density' of mist expects a function of x, y, z, got " +
-                                                   typeName(v->type));
+            return error(density->expr->start,
+                         "property 'density' of mist expects a function of x, y, z, got " +
+                             typeName(v->type));
         const ExprId root = v->type == Value::Type::Field ? v->field : graph.constant(v->number);
         auto exact = std::make_shared<TapeDensity>(Tape::compile(graph, root));
         medium.bounds = *bounds;
         medium.density = exact;
         if (const Property* bake = b.find("bake")) {
             // `bake N`: the density sampled at N points along the box's longest side into
-            // bricked storage (volume/bricked_field.h), traced as its trilinear interpolant: one
-            // lookup per point however costly the expression, majorants from the bricks' maxima.
+            // bricked storage (volume/grids/bricked_field.h), traced as its trilinear interpolant:
+            // one lookup per point however costly the expression, majorants from the bricks'
+            // maxima.
             int resolution = 0;
             if (!readInteger(b, "bake", 2, 4096, resolution)) return;
             try {
-                medium.density = bakeField([exact](const Vec3& p) { return std::max(0.0, exact->value(p)); },
-                                           medium.bounds, resolution);
+                medium.density =
+                    bakeField([exact](const Vec3& p) { return std::max(0.0, exact->value(p)); },
+                              medium.bounds, resolution);
             } catch (const std::invalid_argument& e) {
-                return error(bake->valueLoc(), std::string("cannot bake the mist density: ") + e.what());
+                return error(bake->valueLoc(),
+                             std::string("cannot bake the mist density: ") + e.what());
             }
         }
     }
@@ -242,16 +267,18 @@ void Lowering::lowerMist(const Statement& s, Scene& scene) {
     // The majorant needs a finite bound; negative density the bound can prove is an error,
     // anywhere else a negative value is read as 0.
     const Bounds3& box = medium.bounds;
-    const Interval r = medium.density->range(Interval(box.lo.x, box.hi.x), Interval(box.lo.y, box.hi.y),
-                                             Interval(box.lo.z, box.hi.z));
+    const Interval r = medium.density->range(
+        Interval(box.lo.x, box.hi.x), Interval(box.lo.y, box.hi.y), Interval(box.lo.z, box.hi.z));
     if (!(std::isfinite(r.lo) && std::isfinite(r.hi)))
-        return error(density->valueLoc(), "the mist density has no finite bound over its bounds (got [" +
-                                              formatNumber(r.lo) + ", " + formatNumber(r.hi) + "])",
+        return error(density->valueLoc(),
+                     "the mist density has no finite bound over its bounds (got [" +
+                         formatNumber(r.lo) + ", " + formatNumber(r.hi) + "])",
                      "the renderer needs a majorant: write a density bounded over the box");
     int budget = kNegativeSearchBudget;
     if (const auto neg = provedNegative(*medium.density, box, 0, budget))
-        return error(density->valueLoc(), "the mist density is negative in the box from " + formatVector(neg->lo) +
-                                              " to " + formatVector(neg->hi),
+        return error(density->valueLoc(),
+                     "the mist density is negative in the box from " + formatVector(neg->lo) +
+                         " to " + formatVector(neg->hi),
                      "density must be 0 or more; e.g. max(0, …) clamps it");
     scene.medium = std::move(medium);
 }

@@ -3,7 +3,7 @@
 #include "lang/lower.h"
 
 #include "csg/affine_check.h"
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 #include "lang/names.h"
 
 #include <cmath>
@@ -39,7 +39,8 @@ NodePtr Lowering::applyModifiers(NodePtr node, const Solid& s) {
             if (hasPending) node = transformed(node, pending, *hasPending);
             pending = Affine{};
             hasPending = nullptr;
-            node = node && checkSolidOperands({node}, "displaced", m.loc) ? displaced(node, m) : nullptr;
+            node = node && checkSolidOperands({node}, "displaced", m.loc) ? displaced(node, m)
+                                                                          : nullptr;
             ok = node != nullptr;
         } else if (m.kind == Modifier::Kind::Interior) {  // as a material (lower_surfaces.cpp)
             const std::optional<int> index = materialIndex(m.material, m.materialLoc);
@@ -57,8 +58,10 @@ NodePtr Lowering::applyModifiers(NodePtr node, const Solid& s) {
             // A material or a motion wraps what came before it: pending transforms first.
             std::optional<Vec3> v;
             std::optional<int> index;
-            if (motion) v = motionVector(m);
-            else index = materialIndex(m.material, m.materialLoc);
+            if (motion)
+                v = motionVector(m);
+            else
+                index = materialIndex(m.material, m.materialLoc);
             if (!(motion ? v.has_value() : index.has_value()) || !ok) {
                 ok = false;
                 continue;
@@ -67,7 +70,7 @@ NodePtr Lowering::applyModifiers(NodePtr node, const Solid& s) {
             if (!node) return nullptr;
             pending = Affine{};
             hasPending = nullptr;
-            NodePtr wrapped = !motion ? makeMaterial(node, *index)
+            NodePtr wrapped = !motion                          ? makeMaterial(node, *index)
                               : m.kind == Modifier::Kind::Move ? makeMotion(node, *v, Vec3(0.0))
                                                                : makeMotion(node, Vec3(0.0), *v);
             node = limitDepth(std::move(wrapped), m.loc);
@@ -92,21 +95,23 @@ NodePtr Lowering::transformed(const NodePtr& node, const Affine& map, const Modi
     // each fold is finite.
     NodePtr out = makeTransform(node, map);
     if (node->bounds().finite() && !out->bounds().finite()) {
-        error(last.loc, std::string("the solid's extent is not finite after this ") + modifierWord(last) +
-                            ": it reaches past ±1.8e308",
+        error(last.loc,
+              std::string("the solid's extent is not finite after this ") + modifierWord(last) +
+                  ": it reaches past ±1.8e308",
               "coordinates must stay within the double range");
         return nullptr;
     }
     return out;
 }
 
-
 bool Lowering::checkFolded(const Affine& folded, const Modifier& m) {
     const std::string word = modifierWord(m);
     switch (checkAffine(folded)) {
         case AffineStatus::Ok: return true;
         case AffineStatus::NotFinite:
-            error(m.loc, "transform is not finite after this " + word + ": the solid's transforms together overflow",
+            error(m.loc,
+                  "transform is not finite after this " + word +
+                      ": the solid's transforms together overflow",
                   "coordinates and scales must stay within about ±1.8e308");
             break;
         case AffineStatus::Singular:
@@ -114,8 +119,10 @@ bool Lowering::checkFolded(const Affine& folded, const Modifier& m) {
                   "the transforms together scale some direction to 0");
             break;
         case AffineStatus::InverseNotFinite:
-            error(m.loc, "transform is singular after this " + word +
-                             ": it shrinks the solid by more than doubles can undo (its inverse is not finite)",
+            error(m.loc,
+                  "transform is singular after this " + word +
+                      ": it shrinks the solid by more than doubles can undo (its inverse is not "
+                      "finite)",
                   "scales together must stay above about 1e-308");
             break;
     }
@@ -125,7 +132,8 @@ bool Lowering::checkFolded(const Affine& folded, const Modifier& m) {
 std::optional<Affine> Lowering::modifierTransform(const Modifier& m) {
     if (m.kind == Modifier::Kind::Matrix) {
         if (m.args.size() != 12) {
-            error(m.loc, "matrix needs 12 numbers (3 rows of 4, row-major), got " + std::to_string(m.args.size()));
+            error(m.loc, "matrix needs 12 numbers (3 rows of 4, row-major), got " +
+                             std::to_string(m.args.size()));
             return std::nullopt;
         }
         double entries[12];
@@ -147,7 +155,9 @@ std::optional<Affine> Lowering::modifierTransform(const Modifier& m) {
             return std::nullopt;
         }
         if (!(rel > kSingularRelativeDeterminant)) {
-            error(m.loc, "matrix is singular (relative determinant " + formatNumber(rel) + "): it flattens the solid",
+            error(m.loc,
+                  "matrix is singular (relative determinant " + formatNumber(rel) +
+                      "): it flattens the solid",
                   "its rows (or columns) are nearly linearly dependent");
             return std::nullopt;
         }
@@ -161,7 +171,8 @@ std::optional<Affine> Lowering::modifierTransform(const Modifier& m) {
     if (m.kind == Modifier::Kind::Scale) {
         const Vec3 s = v->type == Value::Type::Number ? Vec3(v->number) : v->vector;
         if (s.x == 0 || s.y == 0 || s.z == 0) {
-            error(m.args[0].start, "scale by zero flattens the solid", "scale factors must not be 0");
+            error(m.args[0].start, "scale by zero flattens the solid",
+                  "scale factors must not be 0");
             return std::nullopt;
         }
         return Affine::scale(s);
@@ -171,7 +182,8 @@ std::optional<Affine> Lowering::modifierTransform(const Modifier& m) {
               std::string("write ") + word + " <x, y, z>");
         return std::nullopt;
     }
-    return m.kind == Modifier::Kind::Translate ? Affine::translate(v->vector) : Affine::rotateDegrees(v->vector);
+    return m.kind == Modifier::Kind::Translate ? Affine::translate(v->vector)
+                                               : Affine::rotateDegrees(v->vector);
 }
 
 std::optional<int> Lowering::materialIndex(const std::string& name, SourcePos use) {
@@ -190,12 +202,14 @@ std::optional<Vec3> Lowering::motionVector(const Modifier& m) {
     if (!v) return std::nullopt;
     if (v->type != Value::Type::Vector) {
         error(m.args[0].start, std::string(word) + " expects a vector, got " + typeName(v->type),
-              m.kind == Modifier::Kind::Move ? "move <x, y, z>: how far the solid goes over the scene time 0 to 1"
-                                             : "spin <x, y, z>: the degrees it turns over the scene time 0 to 1");
+              m.kind == Modifier::Kind::Move
+                  ? "move <x, y, z>: how far the solid goes over the scene time 0 to 1"
+                  : "spin <x, y, z>: the degrees it turns over the scene time 0 to 1");
         return std::nullopt;
     }
     if (!(std::isfinite(v->vector.x) && std::isfinite(v->vector.y) && std::isfinite(v->vector.z))) {
-        error(m.args[0].start, std::string(word) + " is not finite, got " + formatVector(v->vector));
+        error(m.args[0].start,
+              std::string(word) + " is not finite, got " + formatVector(v->vector));
         return std::nullopt;
     }
     return v->vector;

@@ -16,9 +16,9 @@ namespace {
 
 const std::vector<std::pair<std::string, Pattern::Kind>>& patternKinds() {
     static const std::vector<std::pair<std::string, Pattern::Kind>> kinds = {
-        {"checker", Pattern::Kind::Checker},   {"stripes", Pattern::Kind::Stripes},
-        {"rings", Pattern::Kind::Rings},       {"gradient", Pattern::Kind::Gradient},
-        {"noise", Pattern::Kind::Noise},       {"turbulence", Pattern::Kind::Turbulence},
+        {"checker", Pattern::Kind::Checker}, {"stripes", Pattern::Kind::Stripes},
+        {"rings", Pattern::Kind::Rings},     {"gradient", Pattern::Kind::Gradient},
+        {"noise", Pattern::Kind::Noise},     {"turbulence", Pattern::Kind::Turbulence},
         {"image", Pattern::Kind::Image}};
     return kinds;
 }
@@ -53,7 +53,8 @@ std::shared_ptr<const Pattern> Lowering::lowerPattern(const Solid& s) {
               hint.empty() ? "the patterns are " + joinNames(names) : hint);
         return nullptr;
     }
-    const bool noisy = pattern->kind == Pattern::Kind::Noise || pattern->kind == Pattern::Kind::Turbulence;
+    const bool noisy =
+        pattern->kind == Pattern::Kind::Noise || pattern->kind == Pattern::Kind::Turbulence;
     const bool image = pattern->kind == Pattern::Kind::Image;
     std::vector<PropertySpec> specs;
     if (image) {  // the file's value is a string, checked by lowerImage (Word only names it)
@@ -62,7 +63,8 @@ std::shared_ptr<const Pattern> Lowering::lowerPattern(const Solid& s) {
         specs = {{"a", PropertyType::Vector}, {"b", PropertyType::Vector}};
     }
     if (noisy) specs.push_back({"seed", PropertyType::Number});
-    if (pattern->kind == Pattern::Kind::Turbulence) specs.push_back({"octaves", PropertyType::Number});
+    if (pattern->kind == Pattern::Kind::Turbulence)
+        specs.push_back({"octaves", PropertyType::Number});
     const PropertyBlock b(s.properties, specs, s.name + " pattern", s.loc, mSink);
     bool ok = b.ok();
     pattern->b.color = Vec3(1.0);  // black to white unless told
@@ -77,7 +79,8 @@ std::shared_ptr<const Pattern> Lowering::lowerPattern(const Solid& s) {
         } else if (readVector(b, name, entry->color)) {
             if (p && !(entry->color.x >= 0 && entry->color.y >= 0 && entry->color.z >= 0)) {
                 error(p->valueLoc(), "pattern colour " + std::string(name) +
-                                         " must not have negative components, got " + formatVector(entry->color));
+                                         " must not have negative components, got " +
+                                         formatVector(entry->color));
                 ok = false;
             }
         } else {
@@ -95,7 +98,8 @@ std::shared_ptr<const Pattern> Lowering::lowerPattern(const Solid& s) {
             ok = false;
             continue;
         }
-        if (m.kind == Modifier::Kind::Move || m.kind == Modifier::Kind::Spin || m.kind == Modifier::Kind::Displace) {
+        if (m.kind == Modifier::Kind::Move || m.kind == Modifier::Kind::Spin ||
+            m.kind == Modifier::Kind::Displace) {
             error(m.loc, "a pattern takes only translate, rotate, scale and matrix");
             ok = false;
             continue;
@@ -126,11 +130,15 @@ bool Lowering::lowerImage(const PropertyBlock& b, Pattern& pattern) {
     if (p == nullptr) return false;  // reported by the block
     const SourcePos at = p->valueLoc();
     std::optional<Value> v;
-    if (p->expr) v = evaluate(*p->expr, nullptr);
-    else error(at, "property 'file' of image pattern expects a file name in quotes, got a block");
+    if (p->expr)
+        v = evaluate(*p->expr, nullptr);
+    else
+        error(at, "property 'file' of image pattern expects a file name in quotes, got a block");
     if (!v) return false;
     if (v->type != Value::Type::String) {
-        error(at, "property 'file' of image pattern expects a file name in quotes, got " + typeName(v->type),
+        error(at,
+              "property 'file' of image pattern expects a file name in quotes, got " +
+                  typeName(v->type),
               "write e.g. 'file \"wood.png\"'");
         return false;
     }
@@ -149,8 +157,9 @@ bool Lowering::lowerImage(const PropertyBlock& b, Pattern& pattern) {
         map->texture = Texture::open(path);
     } catch (const TextureError& e) {
         error(at, "cannot read texture '" + written + "': " + e.reason,
-              path == written ? std::string()
-                              : "texture files are relative to the model file's folder; looked for " + path);
+              path == written
+                  ? std::string()
+                  : "texture files are relative to the model file's folder; looked for " + path);
         return false;
     } catch (const ImageSupportError& e) {
         error(at, e.what());

@@ -12,7 +12,9 @@ namespace kerf {
 namespace {
 
 bool nonNegative(const Vec3& v) { return v.x >= 0 && v.y >= 0 && v.z >= 0; }
-bool finiteVector(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finiteVector(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 }  // namespace
 
@@ -53,12 +55,13 @@ void Lowering::lowerMaterial(const Statement& s, Material& m) {
     }
     const auto number = [&](const char* name, double& out) {
         if (readNumber(b, name, out) && out < 0)
-            error(b.find(name)->valueLoc(), std::string("material ") + name + " must not be negative, got " +
-                                                formatNumber(out));
+            error(b.find(name)->valueLoc(), std::string("material ") + name +
+                                                " must not be negative, got " + formatNumber(out));
     };
     const auto colour = [&](const char* name, Vec3& out) {
         if (readVector(b, name, out) && !nonNegative(out))
-            error(b.find(name)->valueLoc(), std::string("material ") + name + " must not have negative components, got " +
+            error(b.find(name)->valueLoc(), std::string("material ") + name +
+                                                " must not have negative components, got " +
                                                 formatVector(out));
     };
     colour("color", m.color);
@@ -70,16 +73,17 @@ void Lowering::lowerMaterial(const Statement& s, Material& m) {
     number("transmit", m.transmit);
     colour("absorb", m.absorb);
     colour("emit", m.emit);
-    for (const auto& [name, out] : {std::pair<const char*, double*>{"glossy", &m.glossy},
-                                    {"translucent", &m.translucent}})
+    for (const auto& [name, out] :
+         {std::pair<const char*, double*>{"glossy", &m.glossy}, {"translucent", &m.translucent}})
         if (readNumber(b, name, *out) && !(*out >= 0 && *out <= 90))
-            error(b.find(name)->valueLoc(), std::string("material ") + name +
-                                                " must be an angle from 0 to 90 degrees, got " +
-                                                formatNumber(*out),
+            error(b.find(name)->valueLoc(),
+                  std::string("material ") + name + " must be an angle from 0 to 90 degrees, got " +
+                      formatNumber(*out),
                   std::string(name) + " is the half-angle of the cone the " +
                       (name[0] == 'g' ? "reflected" : "refracted") + " rays are spread over");
     if (readNumber(b, "ior", m.ior) && !(m.ior > 0))
-        error(b.find("ior")->valueLoc(), "material ior must be positive, got " + formatNumber(m.ior));
+        error(b.find("ior")->valueLoc(),
+              "material ior must be positive, got " + formatNumber(m.ior));
     checkEnergy(b, m);
 }
 
@@ -89,10 +93,11 @@ void Lowering::lowerMaterial(const Statement& s, Material& m) {
 /// with depth instead of dying out (docs/robustness.md, "Values").
 void Lowering::checkEnergy(const PropertyBlock& b, const Material& m) {
     bool ok = true;
-    for (const auto& [name, w] : {std::pair<const char*, double>{"reflect", m.reflect}, {"transmit", m.transmit}}) {
+    for (const auto& [name, w] :
+         {std::pair<const char*, double>{"reflect", m.reflect}, {"transmit", m.transmit}}) {
         if (b.find(name) && w > 1) {
-            error(b.find(name)->valueLoc(), std::string("material ") + name + " must be at most 1, got " +
-                                                formatNumber(w),
+            error(b.find(name)->valueLoc(),
+                  std::string("material ") + name + " must be at most 1, got " + formatNumber(w),
                   "reflect and transmit are the fractions of light mirrored and refracted");
             ok = false;
         }
@@ -102,14 +107,17 @@ void Lowering::checkEnergy(const PropertyBlock& b, const Material& m) {
         SourcePos t = b.find("transmit")->valueLoc();
         const bool reflectFirst = r.offset < t.offset;  // one block, so one file
         const Property* later = reflectFirst ? b.find("transmit") : b.find("reflect");
-        error(later->valueLoc(), "material reflect + transmit must be at most 1, got " +
-                                     formatNumber(m.reflect) + " + " + formatNumber(m.transmit),
+        error(later->valueLoc(),
+              "material reflect + transmit must be at most 1, got " + formatNumber(m.reflect) +
+                  " + " + formatNumber(m.transmit),
               "together they are the fraction of light passed on; lower one of them");
     }
     if (m.transmit > 0 && b.find("color") && (m.color.x > 1 || m.color.y > 1 || m.color.z > 1))
-        error(b.find("color")->valueLoc(), "the color of a material that transmits must not exceed 1, got " +
-                                               formatVector(m.color),
-              "its color tints the refracted light, which cannot come out brighter than it went in");
+        error(
+            b.find("color")->valueLoc(),
+            "the color of a material that transmits must not exceed 1, got " +
+                formatVector(m.color),
+            "its color tints the refracted light, which cannot come out brighter than it went in");
 }
 
 void Lowering::lowerCamera(const Statement& s, CameraDesc& camera) {
@@ -126,25 +134,30 @@ void Lowering::lowerCamera(const Statement& s, CameraDesc& camera) {
     bool ok = b.ok();
     ok &= readNumber(b, "shutter_open", camera.shutterOpen);
     ok &= readNumber(b, "shutter_close", camera.shutterClose);
-    if (b.find("shutter_open") && !b.find("shutter_close")) camera.shutterClose = camera.shutterOpen;
-    if (ok && !(camera.shutterOpen >= 0 && camera.shutterOpen <= camera.shutterClose && camera.shutterClose <= 1)) {
-        const Property* at = b.find("shutter_close") ? b.find("shutter_close") : b.find("shutter_open");
-        error(at->valueLoc(), "camera shutter must open and close within the scene time 0 to 1, got " +
-                                  formatNumber(camera.shutterOpen) + " to " + formatNumber(camera.shutterClose),
+    if (b.find("shutter_open") && !b.find("shutter_close"))
+        camera.shutterClose = camera.shutterOpen;
+    if (ok && !(camera.shutterOpen >= 0 && camera.shutterOpen <= camera.shutterClose &&
+                camera.shutterClose <= 1)) {
+        const Property* at =
+            b.find("shutter_close") ? b.find("shutter_close") : b.find("shutter_open");
+        error(at->valueLoc(),
+              "camera shutter must open and close within the scene time 0 to 1, got " +
+                  formatNumber(camera.shutterOpen) + " to " + formatNumber(camera.shutterClose),
               "move and spin give each solid's motion over the scene time 0 to 1");
         ok = false;
     }
     ok &= readNumber(b, "aperture", camera.aperture);
     ok &= readNumber(b, "focus_distance", camera.focusDistance);
     if (ok && !(camera.aperture >= 0 && std::isfinite(camera.aperture))) {
-        error(b.find("aperture")->valueLoc(), "camera aperture must not be negative, got " +
-                                                  formatNumber(camera.aperture),
+        error(b.find("aperture")->valueLoc(),
+              "camera aperture must not be negative, got " + formatNumber(camera.aperture),
               "aperture is the lens diameter; 0 is a pinhole");
         ok = false;
     }
-    if (ok && b.find("focus_distance") && !(camera.focusDistance > 0 && std::isfinite(camera.focusDistance))) {
-        error(b.find("focus_distance")->valueLoc(), "camera focus_distance must be positive, got " +
-                                                        formatNumber(camera.focusDistance),
+    if (ok && b.find("focus_distance") &&
+        !(camera.focusDistance > 0 && std::isfinite(camera.focusDistance))) {
+        error(b.find("focus_distance")->valueLoc(),
+              "camera focus_distance must be positive, got " + formatNumber(camera.focusDistance),
               "the distance from the eye, along the view, of the plane in focus");
         ok = false;
     }
@@ -153,26 +166,33 @@ void Lowering::lowerCamera(const Statement& s, CameraDesc& camera) {
     ok &= readVector(b, "up", camera.up);
     ok &= readNumber(b, "fov", camera.fovDegrees);
     if (!ok) return;
-    const auto at = [&](const char* name) { return b.find(name) ? b.find(name)->valueLoc() : s.loc; };
+    const auto at = [&](const char* name) {
+        return b.find(name) ? b.find(name)->valueLoc() : s.loc;
+    };
     if (!(camera.fovDegrees > 0 && camera.fovDegrees < 180))
-        error(at("fov"), "camera fov must be between 0 and 180 degrees (exclusive), got " +
-                             formatNumber(camera.fovDegrees),
+        error(at("fov"),
+              "camera fov must be between 0 and 180 degrees (exclusive), got " +
+                  formatNumber(camera.fovDegrees),
               "fov is the vertical field of view in degrees, e.g. 40");
     for (const char* name : {"eye", "look_at", "up"}) {
         const Vec3& v = name[0] == 'e' ? camera.eye : name[0] == 'l' ? camera.lookAt : camera.up;
         if (!finiteVector(v)) {
-            error(at(name), std::string("camera ") + name + " is not finite, got " + formatVector(v));
+            error(at(name),
+                  std::string("camera ") + name + " is not finite, got " + formatVector(v));
             return;
         }
     }
     const Vec3 view = camera.lookAt - camera.eye;
     if (view == Vec3(0.0)) {
-        error(at("look_at"), "camera eye and look_at are the same point " + formatVector(camera.eye),
+        error(at("look_at"),
+              "camera eye and look_at are the same point " + formatVector(camera.eye),
               "look_at is the point the camera looks toward");
         return;
     }
     if (!finiteVector(view)) {
-        error(at("look_at"), "camera look_at - eye is not finite (" + formatVector(view) + "): they are too far apart",
+        error(at("look_at"),
+              "camera look_at - eye is not finite (" + formatVector(view) +
+                  "): they are too far apart",
               "eye and look_at must differ by less than about 1.8e308 on each axis");
         return;
     }
@@ -183,8 +203,9 @@ void Lowering::lowerCamera(const Statement& s, CameraDesc& camera) {
     // Both unit vectors are taken overflow-safe, so the test is relative whatever the scale.
     const double sine = glm::length(glm::cross(normalizeSafe(view), normalizeSafe(camera.up)));
     if (!(sine > 1e-9))
-        error(at("up"), "camera up " + formatVector(camera.up) + " is parallel to the view direction " +
-                            formatVector(view),
+        error(at("up"),
+              "camera up " + formatVector(camera.up) + " is parallel to the view direction " +
+                  formatVector(view),
               "choose an up vector that is not parallel to look_at - eye, e.g. <0, 0, 1>");
 }
 
@@ -201,11 +222,15 @@ void Lowering::lowerRender(const Statement& s, RenderSettings& settings) {
     std::string filter;
     if (readWord(b, "filter", {"box", "gaussian", "mitchell"}, filter) && !filter.empty())
         settings.filter = *parseFilter(filter);
-    if (readNumber(b, "noise", settings.noise) && !(settings.noise >= 0 && std::isfinite(settings.noise)))
-        error(b.find("noise")->valueLoc(), "render noise must be 0 or more, got " + formatNumber(settings.noise),
-              "noise is the standard error at which a pixel stops sampling; 0 turns adaptive sampling off");
+    if (readNumber(b, "noise", settings.noise) &&
+        !(settings.noise >= 0 && std::isfinite(settings.noise)))
+        error(b.find("noise")->valueLoc(),
+              "render noise must be 0 or more, got " + formatNumber(settings.noise),
+              "noise is the standard error at which a pixel stops sampling; 0 turns adaptive "
+              "sampling off");
     std::string sampler;
-    if (readWord(b, "sampler", {"jittered", "lattice", "random", "regular"}, sampler) && !sampler.empty())
+    if (readWord(b, "sampler", {"jittered", "lattice", "random", "regular"}, sampler) &&
+        !sampler.empty())
         settings.sampler = *parseSampler(sampler);
     readInteger(b, "width", 1, kMaxImageSide, settings.width);
     readInteger(b, "height", 1, kMaxImageSide, settings.height);

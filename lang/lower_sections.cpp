@@ -10,7 +10,9 @@ namespace kerf {
 
 namespace {
 
-bool finiteVector(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finiteVector(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 }  // namespace
 
@@ -27,20 +29,25 @@ void Lowering::lowerSection(const Statement& s, Scene& scene) {
     ok &= readVector(b, "color", plane.color);
     if (!ok) return;
     if (!finiteVector(plane.point)) {
-        error(b.find("point")->valueLoc(), "section point must be finite, got " + formatVector(plane.point));
+        error(b.find("point")->valueLoc(),
+              "section point must be finite, got " + formatVector(plane.point));
         ok = false;
     }
     if (!finiteVector(plane.normal)) {
-        error(b.find("normal")->valueLoc(), "section normal must be finite, got " + formatVector(plane.normal));
+        error(b.find("normal")->valueLoc(),
+              "section normal must be finite, got " + formatVector(plane.normal));
         ok = false;
     } else if (plane.normal == Vec3(0.0)) {
         error(b.find("normal")->valueLoc(), "section normal must not be zero",
-              "the normal points to the side that is removed, e.g. normal <0, 0, 1> removes z above the point");
+              "the normal points to the side that is removed, e.g. normal <0, 0, 1> removes z "
+              "above the point");
         ok = false;
     }
     if (const Property* c = b.find("color");
-        c && !(finiteVector(plane.color) && plane.color.x >= 0 && plane.color.y >= 0 && plane.color.z >= 0)) {
-        error(c->valueLoc(), "section color must not have negative components, got " + formatVector(plane.color));
+        c && !(finiteVector(plane.color) && plane.color.x >= 0 && plane.color.y >= 0 &&
+               plane.color.z >= 0)) {
+        error(c->valueLoc(),
+              "section color must not have negative components, got " + formatVector(plane.color));
         ok = false;
     }
     if (!ok) return;

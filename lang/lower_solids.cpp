@@ -3,9 +3,9 @@
 // (modifiers: lower_modifiers.cpp).
 #include "lang/lower.h"
 
-#include "csg/solids.h"
-#include "csg/surfaces.h"
-#include "csg/tape.h"
+#include "csg/primitives/surfaces.h"
+#include "csg/tape/tape.h"
+#include "csg/tree/solids.h"
 #include "lang/diagnostic_hints.h"
 #include "lang/names.h"
 
@@ -17,11 +17,13 @@ namespace kerf {
 
 namespace {
 
-const std::vector<std::string> kPrimitiveKinds = {"sphere", "box", "cylinder", "cone", "torus", "halfspace",
-                                                  "implicit"};
+const std::vector<std::string> kPrimitiveKinds = {"sphere", "box",       "cylinder", "cone",
+                                                  "torus",  "halfspace", "implicit"};
 const std::vector<std::string> kBooleanKinds = {"union", "intersection", "difference", "xor"};
 
-bool finiteVector(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finiteVector(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 double maxAbs(const Vec3& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
 
@@ -32,21 +34,26 @@ bool degenerateSegment(const Vec3& a, const Vec3& b) {
     const double big = std::max(maxAbs(a), maxAbs(b));
     if (big == 0.0) return true;
     const int e = std::ilogb(big);
-    const auto scaled = [e](const Vec3& v) { return Vec3(std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)); };
+    const auto scaled = [e](const Vec3& v) {
+        return Vec3(std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e));
+    };
     const double length = glm::length(scaled(b - a));
-    return length == 0.0 || length <= 1e-12 * std::max(glm::length(scaled(a)), glm::length(scaled(b)));
+    return length == 0.0 ||
+           length <= 1e-12 * std::max(glm::length(scaled(a)), glm::length(scaled(b)));
 }
 
 /// The error for an axis `from`–`to` that is not usable, or empty: an endpoint or their
 /// difference not finite, or no length.
 std::string axisProblem(const char* what, const Vec3& from, const Vec3& to) {
     for (const auto& [name, v] : {std::pair<const char*, Vec3>{"from", from}, {"to", to}})
-        if (!finiteVector(v)) return std::string(what) + " " + name + " is not finite, got " + formatVector(v);
+        if (!finiteVector(v))
+            return std::string(what) + " " + name + " is not finite, got " + formatVector(v);
     if (!finiteVector(to - from))
-        return std::string(what) + " axis to - from is not finite: from " + formatVector(from) + " and to " +
-               formatVector(to) + " are more than about 1.8e308 apart";
+        return std::string(what) + " axis to - from is not finite: from " + formatVector(from) +
+               " and to " + formatVector(to) + " are more than about 1.8e308 apart";
     if (degenerateSegment(from, to))
-        return std::string(what) + " has zero length: from and to are the same point " + formatVector(from);
+        return std::string(what) + " has zero length: from and to are the same point " +
+               formatVector(from);
     return "";
 }
 
@@ -71,10 +78,12 @@ NodePtr Lowering::lowerSolid(const Solid& s) {
             std::vector<NodePtr> children;
             const ArenaList<Solid> one(&s, 1);
             if (expandChildren(s.kind == Solid::Kind::Else ? s.children : one, children) &&
-                (children.size() < 2 || checkSolidOperands(children, "an operand of a union", s.loc))) {
+                (children.size() < 2 ||
+                 checkSolidOperands(children, "an operand of a union", s.loc))) {
                 node = children.empty() ? emptySolid()
-                       : children.size() == 1 ? children[0]
-                                              : limitDepth(makeBoolean(BoolOp::Union, std::move(children)), s.loc);
+                       : children.size() == 1
+                           ? children[0]
+                           : limitDepth(makeBoolean(BoolOp::Union, std::move(children)), s.loc);
             }
             break;
         }
@@ -85,8 +94,10 @@ NodePtr Lowering::lowerSolid(const Solid& s) {
 }
 
 NodePtr Lowering::lowerReference(const Solid& s) {
-    const bool isKind = std::find(kPrimitiveKinds.begin(), kPrimitiveKinds.end(), s.name) != kPrimitiveKinds.end() ||
-                        std::find(kBooleanKinds.begin(), kBooleanKinds.end(), s.name) != kBooleanKinds.end();
+    const bool isKind =
+        std::find(kPrimitiveKinds.begin(), kPrimitiveKinds.end(), s.name) !=
+            kPrimitiveKinds.end() ||
+        std::find(kBooleanKinds.begin(), kBooleanKinds.end(), s.name) != kBooleanKinds.end();
     if (const Value* v = local(s.name)) {
         NodePtr node;
         bool empty = false;
@@ -127,9 +138,7 @@ NodePtr Lowering::solidByName(const std::string& name, SourcePos use) {
     switch (entry.state) {
         case State::Done: return entry.node;
         case State::Failed: return nullptr;
-        case State::Busy:
-            error(use, cycleMessage("solid", mBusySolids, name));
-            return nullptr;
+        case State::Busy: error(use, cycleMessage("solid", mBusySolids, name)); return nullptr;
         case State::Pending: break;
     }
     if (entry.def->broken) {
@@ -190,10 +199,12 @@ int Lowering::heightOf(const NodePtr& node) {
 
 NodePtr Lowering::limitDepth(NodePtr node, SourcePos at) {
     if (heightOf(node) <= kMaxCsgDepth) return node;
-    error(at, "solid nested too deeply: its tree would be more than " + std::to_string(kMaxCsgDepth) +
-                  " levels deep, counting named solids as written out",
-          "each Boolean, transform or material over a solid is one level; a wide union { … } of many "
-          "solids is one level");
+    error(
+        at,
+        "solid nested too deeply: its tree would be more than " + std::to_string(kMaxCsgDepth) +
+            " levels deep, counting named solids as written out",
+        "each Boolean, transform or material over a solid is one level; a wide union { … } of many "
+        "solids is one level");
     return nullptr;
 }
 
@@ -201,7 +212,8 @@ bool Lowering::countPrimitive(SourcePos at) {
     if (++mPrimitives <= mLimits.primitives) return true;
     if (!mLimitReported) {
         mLimitReported = true;
-        error(at, "this model makes more than " + std::to_string(mLimits.primitives) + " primitives",
+        error(at,
+              "this model makes more than " + std::to_string(mLimits.primitives) + " primitives",
               "the limit stops a model before it runs out of memory; see docs/language.md, Limits");
     }
     return false;
@@ -221,21 +233,24 @@ NodePtr Lowering::lowerPrimitive(const Solid& s) {
     if (s.name == "implicit") return lowerImplicit(s);
     if (s.name == "mesh") return lowerMesh(s);
     if (s.name == "volume") return lowerVolume(s);
-    if (s.name == "disc" || s.name == "triangle" || s.name == "surface" || s.name == "clip") return lowerSurface(s);
+    if (s.name == "disc" || s.name == "triangle" || s.name == "surface" || s.name == "clip")
+        return lowerSurface(s);
     if (s.name == "extrude") return lowerExtrude(s);
     if (s.name == "revolve") return lowerRevolve(s);
     if (isProfileKind(s.name)) {
         error(s.loc, "'" + s.name + "' is a 2-D profile, not a solid",
-              "make a solid of it: extrude { profile " + s.name + " { … } height 1 } or revolve { profile " +
-                  s.name + " { … } }");
+              "make a solid of it: extrude { profile " + s.name +
+                  " { … } height 1 } or revolve { profile " + s.name + " { … } }");
         return nullptr;
     }
-    error(s.loc, "unknown solid '" + s.name + "'", unknownSolidHint(s.name));  // the parser reports most
+    error(s.loc, "unknown solid '" + s.name + "'",
+          unknownSolidHint(s.name));  // the parser reports most
     return nullptr;
 }
 
 NodePtr Lowering::lowerSphere(const Solid& s) {
-    const PropertyBlock b(s.properties, {{"center", PropertyType::Vector}, {"radius", PropertyType::Number}},
+    const PropertyBlock b(s.properties,
+                          {{"center", PropertyType::Vector}, {"radius", PropertyType::Number}},
                           "sphere", s.loc, mSink);
     Vec3 center{0.0};
     double radius = 1.0;
@@ -243,24 +258,25 @@ NodePtr Lowering::lowerSphere(const Solid& s) {
     ok &= readVector(b, "center", center);
     ok &= readNumber(b, "radius", radius);
     if (ok && !(radius > 0)) {
-        error(b.find("radius")->valueLoc(), "sphere radius must be positive, got " + formatNumber(radius));
+        error(b.find("radius")->valueLoc(),
+              "sphere radius must be positive, got " + formatNumber(radius));
         ok = false;
     }
     return ok ? makeSphere(center, radius) : nullptr;
 }
 
 std::optional<Bounds3> Lowering::boxBounds(const Solid& s, const char* what) {
-    const PropertyBlock b(s.properties,
-                          {{"min", PropertyType::Vector, true}, {"max", PropertyType::Vector, true}}, "box",
-                          s.loc, mSink);
+    const PropertyBlock b(
+        s.properties, {{"min", PropertyType::Vector, true}, {"max", PropertyType::Vector, true}},
+        "box", s.loc, mSink);
     Bounds3 box{Vec3(0.0), Vec3(0.0)};
     bool ok = b.ok();
     ok &= readVector(b, "min", box.lo);
     ok &= readVector(b, "max", box.hi);
     if (!ok) return std::nullopt;
     if (!(box.lo.x < box.hi.x && box.lo.y < box.hi.y && box.lo.z < box.hi.z)) {
-        error(s.loc, std::string("empty ") + what + ": min " + formatVector(box.lo) + " must be less than max " +
-                         formatVector(box.hi) + " on every axis");
+        error(s.loc, std::string("empty ") + what + ": min " + formatVector(box.lo) +
+                         " must be less than max " + formatVector(box.hi) + " on every axis");
         return std::nullopt;
     }
     return box;
@@ -275,7 +291,7 @@ NodePtr Lowering::lowerCylinder(const Solid& s) {
                           "cylinder", s.loc, mSink);
     Vec3 from{0.0}, to{0.0};
     double radius = 1.0;
-    bool open = false;  // the side alone, a surface (csg/surfaces.h)
+    bool open = false;  // the side alone, a surface (csg/primitives/surfaces.h)
     bool ok = b.ok();
     ok &= readBool(b, "open", open);
     ok &= readVector(b, "from", from);
@@ -283,14 +299,16 @@ NodePtr Lowering::lowerCylinder(const Solid& s) {
     ok &= readNumber(b, "radius", radius);
     if (!ok) return nullptr;
     if (!(radius > 0)) {
-        error(b.find("radius")->valueLoc(), "cylinder radius must be positive, got " + formatNumber(radius));
+        error(b.find("radius")->valueLoc(),
+              "cylinder radius must be positive, got " + formatNumber(radius));
         return nullptr;
     }
     if (const std::string problem = axisProblem("cylinder", from, to); !problem.empty()) {
         error(s.loc, problem);
         return nullptr;
     }
-    return open ? noteSurface(makeOpenCone(from, to, radius, radius), s.loc) : makeCylinder(from, to, radius);
+    return open ? noteSurface(makeOpenCone(from, to, radius, radius), s.loc)
+                : makeCylinder(from, to, radius);
 }
 
 NodePtr Lowering::lowerCone(const Solid& s) {
@@ -303,7 +321,7 @@ NodePtr Lowering::lowerCone(const Solid& s) {
                           "cone", s.loc, mSink);
     Vec3 from{0.0}, to{0.0};
     double r1 = 1.0, r2 = 0.0;
-    bool open = false;  // the side alone, a surface (csg/surfaces.h)
+    bool open = false;  // the side alone, a surface (csg/primitives/surfaces.h)
     bool ok = b.ok();
     ok &= readBool(b, "open", open);
     ok &= readVector(b, "from", from);
@@ -313,8 +331,8 @@ NodePtr Lowering::lowerCone(const Solid& s) {
     if (!ok) return nullptr;
     for (const auto& [name, r] : {std::pair<const char*, double>{"radius1", r1}, {"radius2", r2}}) {
         if (r < 0) {
-            error(b.find(name)->valueLoc(), std::string("cone ") + name + " must not be negative, got " +
-                                                formatNumber(r));
+            error(b.find(name)->valueLoc(),
+                  std::string("cone ") + name + " must not be negative, got " + formatNumber(r));
             ok = false;
         }
     }
@@ -331,18 +349,20 @@ NodePtr Lowering::lowerCone(const Solid& s) {
 }
 
 NodePtr Lowering::lowerTorus(const Solid& s) {
-    const PropertyBlock b(s.properties,
-                          {{"major", PropertyType::Number, true}, {"minor", PropertyType::Number, true}}, "torus",
-                          s.loc, mSink);
+    const PropertyBlock b(
+        s.properties,
+        {{"major", PropertyType::Number, true}, {"minor", PropertyType::Number, true}}, "torus",
+        s.loc, mSink);
     double major = 1.0, minor = 0.25;
     bool ok = b.ok();
     ok &= readNumber(b, "major", major);
     ok &= readNumber(b, "minor", minor);
     if (!ok) return nullptr;
-    for (const auto& [name, r] : {std::pair<const char*, double>{"major", major}, {"minor", minor}}) {
+    for (const auto& [name, r] :
+         {std::pair<const char*, double>{"major", major}, {"minor", minor}}) {
         if (!(r > 0)) {
-            error(b.find(name)->valueLoc(), std::string("torus ") + name + " radius must be positive, got " +
-                                                formatNumber(r));
+            error(b.find(name)->valueLoc(), std::string("torus ") + name +
+                                                " radius must be positive, got " + formatNumber(r));
             ok = false;
         }
     }
@@ -350,9 +370,9 @@ NodePtr Lowering::lowerTorus(const Solid& s) {
 }
 
 NodePtr Lowering::lowerHalfSpace(const Solid& s) {
-    const PropertyBlock b(s.properties,
-                          {{"normal", PropertyType::Vector, true}, {"offset", PropertyType::Number}}, "halfspace",
-                          s.loc, mSink);
+    const PropertyBlock b(
+        s.properties, {{"normal", PropertyType::Vector, true}, {"offset", PropertyType::Number}},
+        "halfspace", s.loc, mSink);
     Vec3 normal{0.0};
     double offset = 0.0;
     bool ok = b.ok();
@@ -367,19 +387,21 @@ NodePtr Lowering::lowerHalfSpace(const Solid& s) {
 }
 
 NodePtr Lowering::lowerImplicit(const Solid& s) {
-    const PropertyBlock b(s.properties,
-                          {{"f", PropertyType::Function, true}, {"bound", PropertyType::Solid, true}}, "implicit",
-                          s.loc, mSink);
+    const PropertyBlock b(
+        s.properties, {{"f", PropertyType::Function, true}, {"bound", PropertyType::Solid, true}},
+        "implicit", s.loc, mSink);
     bool ok = b.ok();
     ExprGraph graph;
     ExprId root = -1;
     if (const Property* f = b.find("f")) {
         if (f->solid) {
-            error(f->solid->loc, "property 'f' of implicit expects a function of x, y, z, got a solid");
+            error(f->solid->loc,
+                  "property 'f' of implicit expects a function of x, y, z, got a solid");
             ok = false;
         } else if (const auto v = evaluate(*f->expr, &graph)) {
             if (v->type == Value::Type::Vector) {
-                error(f->expr->start, "property 'f' of implicit expects a function of x, y, z, got a vector");
+                error(f->expr->start,
+                      "property 'f' of implicit expects a function of x, y, z, got a vector");
                 ok = false;
             } else {
                 root = v->type == Value::Type::Field ? v->field : graph.constant(v->number);
@@ -391,8 +413,12 @@ NodePtr Lowering::lowerImplicit(const Solid& s) {
     std::optional<Bounds3> bound;
     if (const Property* p = b.find("bound")) {
         if (p->expr && p->expr->kind == Expr::Kind::Name && mSolids.count(p->expr->name())) {
-            error(p->expr->start, "a named solid is not allowed as the bound of an implicit: write box { min … max … } "
-                                  "in place of '" + p->expr->name() + "'", implicitBoundHint());
+            error(p->expr->start,
+                  "a named solid is not allowed as the bound of an implicit: write box { min … max "
+                  "… } "
+                  "in place of '" +
+                      p->expr->name() + "'",
+                  implicitBoundHint());
         } else if (p->expr) {
             error(p->expr->start, "property 'bound' of implicit expects box { min … max … }");
         } else if (p->solid->kind != Solid::Kind::Primitive || p->solid->name != "box") {

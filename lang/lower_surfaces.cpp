@@ -1,10 +1,10 @@
-// Lowering, part 3e: surfaces (csg/surfaces.h): `disc`, `triangle`, `cylinder`/`cone` with
-// `open true` (lower_solids.cpp), `surface SOLID`, `clip SURFACE by SOLID` and the `interior`
+// Lowering, part 3e: surfaces (csg/primitives/surfaces.h): `disc`, `triangle`, `cylinder`/`cone`
+// with `open true` (lower_solids.cpp), `surface SOLID`, `clip SURFACE by SOLID` and the `interior`
 // modifier. A surface has no inside, so it is refused wherever a solid is needed, through the
 // same check as open meshes (checkSolidOperands, lower_mesh.cpp).
 #include "lang/lower.h"
 
-#include "csg/surfaces.h"
+#include "csg/primitives/surfaces.h"
 
 #include <cmath>
 
@@ -12,7 +12,9 @@ namespace kerf {
 
 namespace {
 
-bool finite3(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite3(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 /// The surface-kind node under transforms, materials, motions and interiors, or null.
 const Node* surfaceBelow(const Node* node) {
@@ -47,8 +49,10 @@ NodePtr Lowering::noteSurface(NodePtr surface, SourcePos at) {
 NodePtr Lowering::lowerSurface(const Solid& s) {
     if (s.name == "disc") {
         const PropertyBlock b(s.properties,
-                              {{"center", PropertyType::Vector}, {"normal", PropertyType::Vector},
-                               {"radius", PropertyType::Number}, {"inner", PropertyType::Number}},
+                              {{"center", PropertyType::Vector},
+                               {"normal", PropertyType::Vector},
+                               {"radius", PropertyType::Number},
+                               {"inner", PropertyType::Number}},
                               "disc", s.loc, mSink);
         Vec3 center(0.0), normal(0.0, 1.0, 0.0);
         double radius = 1.0, inner = 0.0;
@@ -59,16 +63,19 @@ NodePtr Lowering::lowerSurface(const Solid& s) {
         ok &= readNumber(b, "inner", inner);
         if (!ok) return nullptr;
         if (!(radius > 0) || !std::isfinite(radius)) {
-            error(b.find("radius")->valueLoc(), "disc radius must be positive and finite, got " + formatNumber(radius));
+            error(b.find("radius")->valueLoc(),
+                  "disc radius must be positive and finite, got " + formatNumber(radius));
             return nullptr;
         }
         if (!(inner >= 0 && inner < radius)) {
-            error(b.find("inner")->valueLoc(), "disc inner radius must be at least 0 and less than the radius " +
-                                                   formatNumber(radius) + ", got " + formatNumber(inner));
+            error(b.find("inner")->valueLoc(),
+                  "disc inner radius must be at least 0 and less than the radius " +
+                      formatNumber(radius) + ", got " + formatNumber(inner));
             return nullptr;
         }
         if (!finite3(center)) {
-            error(b.find("center")->valueLoc(), "disc center is not finite, got " + formatVector(center));
+            error(b.find("center")->valueLoc(),
+                  "disc center is not finite, got " + formatVector(center));
             return nullptr;
         }
         if (!finite3(normal) || !(glm::length(normal) > 0) || !std::isfinite(glm::length(normal))) {
@@ -80,7 +87,8 @@ NodePtr Lowering::lowerSurface(const Solid& s) {
     }
     if (s.name == "triangle") {
         const PropertyBlock b(s.properties,
-                              {{"a", PropertyType::Vector, true}, {"b", PropertyType::Vector, true},
+                              {{"a", PropertyType::Vector, true},
+                               {"b", PropertyType::Vector, true},
                                {"c", PropertyType::Vector, true}},
                               "triangle", s.loc, mSink);
         Vec3 p[3];
@@ -91,13 +99,15 @@ NodePtr Lowering::lowerSurface(const Solid& s) {
         if (!ok) return nullptr;
         for (int i = 0; i < 3; ++i)
             if (!finite3(p[i])) {
-                error(s.loc, std::string("triangle corner ") + char('a' + i) + " is not finite, got " + formatVector(p[i]));
+                error(s.loc, std::string("triangle corner ") + char('a' + i) +
+                                 " is not finite, got " + formatVector(p[i]));
                 return nullptr;
             }
         const Vec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
         if (!(glm::length(n) > 0) || !std::isfinite(glm::length(n))) {
-            error(s.loc, "triangle has no area: its corners " + formatVector(p[0]) + ", " + formatVector(p[1]) + " and " +
-                             formatVector(p[2]) + " are on one line");
+            error(s.loc, "triangle has no area: its corners " + formatVector(p[0]) + ", " +
+                             formatVector(p[1]) + " and " + formatVector(p[2]) +
+                             " are on one line");
             return nullptr;
         }
         return noteSurface(makeTriangle(p[0], p[1], p[2]), s.loc);
@@ -114,14 +124,16 @@ NodePtr Lowering::lowerSurface(const Solid& s) {
     if (!surface || !solid || surface == emptySolid() || solid == emptySolid()) return nullptr;
     if (!isSurfaceTree(*surface)) {
         error(s.children[0].loc, "clip cuts a surface, but this is a solid",
-              "to clip a solid's boundary write 'clip surface SOLID by …'; to cut a solid use intersection");
+              "to clip a solid's boundary write 'clip surface SOLID by …'; to cut a solid use "
+              "intersection");
         return nullptr;
     }
     if (!checkSolidOperands({solid}, "what 'clip' cuts by", s.loc)) return nullptr;
     return noteSurface(limitDepth(makeClip(std::move(surface), std::move(solid)), s.loc), s.loc);
 }
 
-bool Lowering::checkSurfaceOperands(const std::vector<NodePtr>& operands, const std::string& use, SourcePos at) {
+bool Lowering::checkSurfaceOperands(const std::vector<NodePtr>& operands, const std::string& use,
+                                    SourcePos at) {
     if (mSurfaces.empty()) return true;  // no surface made: nothing to look for
     bool ok = true;
     for (const NodePtr& operand : operands) {
@@ -132,9 +144,11 @@ bool Lowering::checkSurfaceOperands(const std::vector<NodePtr>& operands, const 
         const SourcePos where = it != mSurfaces.end() ? it->second.second : at;
         const SourceLoc used = mSink.locate(at);
         error(where,
-              std::string("this ") + describeSurface(*surface) + " is a surface, not a solid: it has no inside and cannot be " +
-                  use + " (line " + std::to_string(used.line) + ", column " + std::to_string(used.col) + ")",
-              "to keep the part of a surface inside a solid write 'clip SURFACE by SOLID'; a solid's boundary "
+              std::string("this ") + describeSurface(*surface) +
+                  " is a surface, not a solid: it has no inside and cannot be " + use + " (line " +
+                  std::to_string(used.line) + ", column " + std::to_string(used.col) + ")",
+              "to keep the part of a surface inside a solid write 'clip SURFACE by SOLID'; a "
+              "solid's boundary "
               "as a surface is 'surface SOLID'");
     }
     return ok;

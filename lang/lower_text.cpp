@@ -3,7 +3,7 @@
 // font is looked up now, so a missing font or character is an error at its property.
 #include <filesystem>
 
-#include "csg/profile.h"
+#include "csg/profiles/profile.h"
 #include "lang/lower.h"
 
 namespace kerf {

@@ -72,7 +72,8 @@ std::optional<Value> Lowering::evaluateValue(const Expr& e, ExprGraph* field) {
             ValueList items;
             bool ok = iterate(e, std::string(), e.loc, [&]() {
                 if (static_cast<int64_t>(items.size()) >= mLimits.listLength) {
-                    error(e.loc, "list longer than " + std::to_string(mLimits.listLength) + " elements");
+                    error(e.loc,
+                          "list longer than " + std::to_string(mLimits.listLength) + " elements");
                     return false;
                 }
                 items.push_back(mLocals.back().second);
@@ -95,7 +96,8 @@ std::optional<Value> Lowering::evaluateValue(const Expr& e, ExprGraph* field) {
             const auto c = evaluate(e.args()[0], field);
             if (!c) return std::nullopt;
             if (c->type != Value::Type::Bool) {
-                error(e.args()[0].start, "the condition of '?' must be a boolean, got " + typeName(c->type),
+                error(e.args()[0].start,
+                      "the condition of '?' must be a boolean, got " + typeName(c->type),
                       "compare it, as in n > 0 ? a : b");
                 return std::nullopt;
             }
@@ -121,7 +123,8 @@ std::optional<Value> Lowering::logic(const Expr& e, ExprGraph* field) {
     const auto operand = [&](const Expr& x) -> std::optional<Value> {
         auto v = evaluate(x, field);
         if (v && v->type != Value::Type::Bool) {
-            error(x.start, std::string("'") + word + "' expects booleans, got " + typeName(v->type));
+            error(x.start,
+                  std::string("'") + word + "' expects booleans, got " + typeName(v->type));
             return std::nullopt;
         }
         return v;
@@ -138,13 +141,16 @@ std::optional<Value> Lowering::compare(char op, const Value& a, const Value& b, 
     using T = Value::Type;
     const std::string spelling = comparisonSpelling(op);
     if (a.type == T::Field || b.type == T::Field) {
-        error(at, "cannot compare " + typeName(a.type) + " and " + typeName(b.type) + " with '" + spelling + "'",
+        error(at,
+              "cannot compare " + typeName(a.type) + " and " + typeName(b.type) + " with '" +
+                  spelling + "'",
               "inside f, write conditions with min and max");
         return std::nullopt;
     }
     if (op == 'e' || op == 'n') {
         if (a.type != b.type) {
-            error(at, "cannot compare " + typeName(a.type) + " and " + typeName(b.type) + " with '" + spelling + "'");
+            error(at, "cannot compare " + typeName(a.type) + " and " + typeName(b.type) +
+                          " with '" + spelling + "'");
             return std::nullopt;
         }
         return Value::ofBool(equalValues(a, b) == (op == 'e'));
@@ -157,7 +163,9 @@ std::optional<Value> Lowering::compare(char op, const Value& a, const Value& b, 
         const int c = a.string().compare(b.string());
         return Value::ofBool(op == '<' ? c < 0 : op == '>' ? c > 0 : op == 'l' ? c <= 0 : c >= 0);
     }
-    error(at, "cannot compare " + typeName(a.type) + " and " + typeName(b.type) + " with '" + spelling + "'",
+    error(at,
+          "cannot compare " + typeName(a.type) + " and " + typeName(b.type) + " with '" + spelling +
+              "'",
           "'<', '<=', '>' and '>=' compare two numbers or two strings");
     return std::nullopt;
 }
@@ -202,8 +210,9 @@ std::optional<Value> Lowering::comprehension(const Expr& e, ExprGraph* field) {
             const auto c = evaluate(e.args()[2], field);
             if (!c) return false;
             if (c->type != Value::Type::Bool) {
-                error(e.args()[2].start, "the condition of a list comprehension must be a boolean, got " +
-                                             typeName(c->type));
+                error(e.args()[2].start,
+                      "the condition of a list comprehension must be a boolean, got " +
+                          typeName(c->type));
                 return false;
             }
             if (!c->truth()) return true;
@@ -225,7 +234,9 @@ bool Lowering::countIteration(SourcePos at) {
     if (++mIterations <= mLimits.iterations) return true;
     if (!mLimitReported) {
         mLimitReported = true;
-        error(at, "more than " + std::to_string(mLimits.iterations) + " loop iterations and function calls in this model",
+        error(at,
+              "more than " + std::to_string(mLimits.iterations) +
+                  " loop iterations and function calls in this model",
               "the limit keeps a runaway loop from hanging; see docs/language.md, Limits");
     }
     return false;
@@ -247,8 +258,12 @@ bool Lowering::iterate(const Expr& range, const std::string& var, SourcePos varL
             const auto v = evaluate(range.args()[i], nullptr);
             if (!v) return false;
             if (v->type != Value::Type::Number) {
-                error(range.args()[i].start, std::string("the ") + (i == 0 ? "start" : i == 1 ? "end" : "step") +
-                                                 " of a range must be a number, got " + typeName(v->type));
+                error(range.args()[i].start, std::string("the ") +
+                                                 (i == 0   ? "start"
+                                                  : i == 1 ? "end"
+                                                           : "step") +
+                                                 " of a range must be a number, got " +
+                                                 typeName(v->type));
                 return false;
             }
             bounds[i] = v->number;
@@ -256,7 +271,8 @@ bool Lowering::iterate(const Expr& range, const std::string& var, SourcePos varL
         const auto [from, to, step] = bounds;
         if (!(step != 0.0) || !std::isfinite(step)) {
             error(range.args().size() == 3 ? range.args()[2].start : range.loc,
-                  "the step of a range must be a finite number other than 0, got " + formatNumber(step));
+                  "the step of a range must be a finite number other than 0, got " +
+                      formatNumber(step));
             return false;
         }
         const int64_t n = rangeCount(from, to, step);
@@ -281,8 +297,10 @@ std::optional<Value> Lowering::index(const Expr& e, ExprGraph* field) {
     const auto a = evaluate(e.args()[0], field);
     const auto i = evaluate(e.args()[1], field);
     if (!a || !i) return std::nullopt;
-    if (a->type != Value::Type::List && a->type != Value::Type::Vector && a->type != Value::Type::String) {
-        error(e.loc, "cannot index " + typeName(a->type), "only lists, vectors and strings have elements");
+    if (a->type != Value::Type::List && a->type != Value::Type::Vector &&
+        a->type != Value::Type::String) {
+        error(e.loc, "cannot index " + typeName(a->type),
+              "only lists, vectors and strings have elements");
         return std::nullopt;
     }
     if (i->type != Value::Type::Number) {
@@ -294,8 +312,9 @@ std::optional<Value> Lowering::index(const Expr& e, ExprGraph* field) {
                                                          : a->string().size();
     const double k = i->number;
     if (k != std::floor(k) || k < 0 || k >= static_cast<double>(size)) {
-        error(e.args()[1].start, "index " + formatNumber(k) + " is out of range for " + typeName(a->type) +
-                                     " of " + std::to_string(size) + " element" + (size == 1 ? "" : "s"),
+        error(e.args()[1].start,
+              "index " + formatNumber(k) + " is out of range for " + typeName(a->type) + " of " +
+                  std::to_string(size) + " element" + (size == 1 ? "" : "s"),
               "indices are whole numbers from 0 to len - 1");
         return std::nullopt;
     }
@@ -311,7 +330,8 @@ std::optional<Value> Lowering::member(const Expr& e, ExprGraph* field) {
     const std::string& name = e.name();
     const int axis = name == "x" ? 0 : name == "y" ? 1 : name == "z" ? 2 : -1;
     if (axis < 0) {
-        error(e.loc, "unknown component '." + name + "'", "a vector's components are .x, .y and .z");
+        error(e.loc, "unknown component '." + name + "'",
+              "a vector's components are .x, .y and .z");
         return std::nullopt;
     }
     if (a->type != Value::Type::Vector) {
@@ -321,12 +341,13 @@ std::optional<Value> Lowering::member(const Expr& e, ExprGraph* field) {
     return Value::ofNumber(a->vector[axis]);
 }
 
-std::optional<Value> Lowering::builtinValue(const Expr& e, const std::vector<Value>& args, bool& handled) {
+std::optional<Value> Lowering::builtinValue(const Expr& e, const std::vector<Value>& args,
+                                            bool& handled) {
     static const struct {
         const char* name;
         int arity;
-    } kBuiltins[] = {{"len", 1},    {"dot", 2},       {"cross", 2}, {"length", 1}, {"normalize", 1},
-                     {"deg", 1},    {"rad", 1},       {"random", 2}, {"str", -1}};
+    } kBuiltins[] = {{"len", 1}, {"dot", 2}, {"cross", 2},  {"length", 1}, {"normalize", 1},
+                     {"deg", 1}, {"rad", 1}, {"random", 2}, {"str", -1}};
     const std::string& name = e.name();
     int arity = -2;
     for (const auto& b : kBuiltins)
@@ -334,13 +355,14 @@ std::optional<Value> Lowering::builtinValue(const Expr& e, const std::vector<Val
     handled = arity != -2;
     if (!handled) return std::nullopt;
     if (arity >= 0 && static_cast<int>(args.size()) != arity) {
-        error(e.loc, "'" + name + "' takes " + std::to_string(arity) + " argument" + (arity == 1 ? "" : "s") +
-                         ", got " + std::to_string(args.size()));
+        error(e.loc, "'" + name + "' takes " + std::to_string(arity) + " argument" +
+                         (arity == 1 ? "" : "s") + ", got " + std::to_string(args.size()));
         return std::nullopt;
     }
     const auto expect = [&](size_t i, Value::Type t) {
         if (args[i].type == t) return true;
-        error(e.args()[i].start, "'" + name + "' expects " + typeName(t) + ", got " + typeName(args[i].type));
+        error(e.args()[i].start,
+              "'" + name + "' expects " + typeName(t) + ", got " + typeName(args[i].type));
         return false;
     };
     using T = Value::Type;
@@ -349,12 +371,14 @@ std::optional<Value> Lowering::builtinValue(const Expr& e, const std::vector<Val
         if (a.type == T::List) return Value::ofNumber(static_cast<double>(a.list().size()));
         if (a.type == T::String) return Value::ofNumber(static_cast<double>(a.string().size()));
         if (a.type == T::Vector) return Value::ofNumber(3);
-        error(e.args()[0].start, "'len' expects a list, a string or a vector, got " + typeName(a.type));
+        error(e.args()[0].start,
+              "'len' expects a list, a string or a vector, got " + typeName(a.type));
         return std::nullopt;
     }
     if (name == "dot" || name == "cross") {
         if (!expect(0, T::Vector) || !expect(1, T::Vector)) return std::nullopt;
-        if (name == "dot") return finite(Value::ofNumber(glm::dot(args[0].vector, args[1].vector)), e.loc, "dot");
+        if (name == "dot")
+            return finite(Value::ofNumber(glm::dot(args[0].vector, args[1].vector)), e.loc, "dot");
         return finite(Value::ofVector(glm::cross(args[0].vector, args[1].vector)), e.loc, "cross");
     }
     if (name == "length") {
@@ -365,14 +389,16 @@ std::optional<Value> Lowering::builtinValue(const Expr& e, const std::vector<Val
         if (!expect(0, T::Vector)) return std::nullopt;
         const Vec3& v = args[0].vector;
         if (v == Vec3(0.0) || !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
-            error(e.args()[0].start, "cannot normalize " + formatVector(v) + ": it has no direction");
+            error(e.args()[0].start,
+                  "cannot normalize " + formatVector(v) + ": it has no direction");
             return std::nullopt;
         }
         return Value::ofVector(normalizeSafe(v));
     }
     if (name == "deg" || name == "rad") {
         if (!expect(0, T::Number)) return std::nullopt;
-        return Value::ofNumber(name == "deg" ? args[0].number * (180.0 / M_PI) : args[0].number * (M_PI / 180.0));
+        return Value::ofNumber(name == "deg" ? args[0].number * (180.0 / M_PI)
+                                             : args[0].number * (M_PI / 180.0));
     }
     if (name == "random") {
         // Integer hashing only, no library distribution: the same stream on every machine.
@@ -381,7 +407,8 @@ std::optional<Value> Lowering::builtinValue(const Expr& e, const std::vector<Val
             const double v = args[i].number;
             if (v != std::floor(v) || std::fabs(v) > 9007199254740992.0) {
                 error(e.args()[i].start, std::string("random's ") + (i == 0 ? "seed" : "index") +
-                                             " must be a whole number of at most 2^53, got " + formatNumber(v));
+                                             " must be a whole number of at most 2^53, got " +
+                                             formatNumber(v));
                 return std::nullopt;
             }
         }
@@ -423,11 +450,15 @@ std::string Lowering::show(const Value& v) const {
     switch (v.type) {
         case Value::Type::Number: return exactNumber(v.number);
         case Value::Type::Vector:
-            return "<" + exactNumber(v.vector.x) + ", " + exactNumber(v.vector.y) + ", " + exactNumber(v.vector.z) + ">";
+            return "<" + exactNumber(v.vector.x) + ", " + exactNumber(v.vector.y) + ", " +
+                   exactNumber(v.vector.z) + ">";
         case Value::Type::Bool: return v.truth() ? "true" : "false";
         case Value::Type::String: return "\"" + v.string() + "\"";
         case Value::Type::Field: return "<function of x, y, z>";
-        case Value::Type::Solid: return v.solid && v.solid != emptySolid() ? std::string("<") + nodeKindName(v.solid->kind()) + ">" : "<empty solid>";
+        case Value::Type::Solid:
+            return v.solid && v.solid != emptySolid()
+                       ? std::string("<") + nodeKindName(v.solid->kind()) + ">"
+                       : "<empty solid>";
         case Value::Type::List: {
             std::string out = "[";
             for (size_t i = 0; i < v.list().size(); ++i) {

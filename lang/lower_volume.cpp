@@ -1,12 +1,12 @@
 // Lowering, part 3e: `volume "file.vdb" grid "name"`, a level set read from a .vdb file
-// (volume/vdb_level_set.h) as a solid. The path is relative to the model file, as a mesh's is;
-// each (file, grid) is read once per compile and its samples shared by every use. A file that
+// (volume/grids/vdb_level_set.h) as a solid. The path is relative to the model file, as a mesh's
+// is; each (file, grid) is read once per compile and its samples shared by every use. A file that
 // cannot be a solid is an error at the file's string, or at the grid's name when the grid is
 // what is wrong.
 #include "lang/lower.h"
 
-#include "volume/level_set_node.h"
-#include "volume/vdb_level_set.h"
+#include "volume/grids/level_set_node.h"
+#include "volume/grids/vdb_level_set.h"
 
 #include <filesystem>
 #include <system_error>
@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 }  // namespace
 
 NodePtr Lowering::lowerVolume(const Solid& s) {
-    const PropertyBlock b(s.properties, {{"file", PropertyType::Word, true}, {"grid", PropertyType::Word}},
+    const PropertyBlock b(s.properties,
+                          {{"file", PropertyType::Word, true}, {"grid", PropertyType::Word}},
                           "volume", s.loc, mSink);
     const Property* file = b.find("file");
     if (!b.ok() || !file || !file->expr) return nullptr;
@@ -46,8 +47,9 @@ NodePtr Lowering::lowerVolume(const Solid& s) {
     }
     const std::string& written = v->string();
     const fs::path model = *mSink.locate(at).file;
-    const std::string path =
-        fs::path(written).is_absolute() ? written : (model.parent_path() / written).lexically_normal().string();
+    const std::string path = fs::path(written).is_absolute()
+                                 ? written
+                                 : (model.parent_path() / written).lexically_normal().string();
     std::error_code ec;
     const fs::path canonical = fs::weakly_canonical(path, ec);
     const auto key = std::make_pair(ec ? path : canonical.string(), gridName);
@@ -59,8 +61,9 @@ NodePtr Lowering::lowerVolume(const Solid& s) {
         } catch (const VdbError& e) {
             error(e.aboutGrid() && !gridName.empty() ? gridAt : at,
                   "cannot use volume '" + written + "' as a solid: " + e.what(),
-                  path == written ? std::string()
-                                  : "volume files are relative to the model file's folder; looked for " + path);
+                  path == written
+                      ? std::string()
+                      : "volume files are relative to the model file's folder; looked for " + path);
         }
         it = mVolumeFiles.emplace(key, grid).first;  // a failure is reported once
     }

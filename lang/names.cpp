@@ -13,7 +13,8 @@ int editDistance(const std::string& a, const std::string& b) {
         row[0] = static_cast<int>(i);
         for (size_t j = 1; j <= b.size(); ++j) {
             const int above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            row[j] =
+                std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
             diagonal = above;
         }
     }
@@ -26,7 +27,8 @@ std::string closestName(const std::string& name, const std::vector<std::string>&
     for (const std::string& c : candidates) {
         const int d = editDistance(name, c);
         const int allowed = std::max<int>(1, static_cast<int>(std::max(name.size(), c.size())) / 3);
-        if (d == 0 || d > allowed || d >= static_cast<int>(std::max(name.size(), c.size()))) continue;
+        if (d == 0 || d > allowed || d >= static_cast<int>(std::max(name.size(), c.size())))
+            continue;
         if (best.empty() || d < bestDistance) {
             best = c;
             bestDistance = d;

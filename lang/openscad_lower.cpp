@@ -5,7 +5,7 @@
 #include "lang/openscad_lower.h"
 
 #include "csg/affine_check.h"
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 #include "lang/source.h"
 
 #include <algorithm>
@@ -18,16 +18,11 @@ namespace {
 
 const char* kindName(ScadValue::Kind k) {
     switch (k) {
-        case ScadValue::Kind::Undef:
-            return "undef";
-        case ScadValue::Kind::Bool:
-            return "a boolean";
-        case ScadValue::Kind::Number:
-            return "a number";
-        case ScadValue::Kind::String:
-            return "a string";
-        case ScadValue::Kind::Vector:
-            return "a vector";
+        case ScadValue::Kind::Undef: return "undef";
+        case ScadValue::Kind::Bool: return "a boolean";
+        case ScadValue::Kind::Number: return "a number";
+        case ScadValue::Kind::String: return "a string";
+        case ScadValue::Kind::Vector: return "a vector";
     }
     return "?";
 }

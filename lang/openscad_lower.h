@@ -28,8 +28,8 @@ public:
     bool flag(const ScadCall& c, const std::string& name, int position, bool& out);
     /// A radius given as `rName` (or positionally) or as the diameter `dName`, which wins
     /// when both are given, as in OpenSCAD.
-    bool radius(const ScadCall& c, const std::string& rName, int position,
-                const std::string& dName, double& out);
+    bool radius(const ScadCall& c, const std::string& rName, int position, const std::string& dName,
+                double& out);
     /// A number (all three equal) or a vector of three numbers.
     bool triple(const ScadCall& c, const std::string& name, int position, Vec3& out);
 

@@ -82,18 +82,12 @@ private:
 
     static std::string describe(const Token& t) {
         switch (t.kind) {
-            case Token::Kind::End:
-                return "the end of the file";
-            case Token::Kind::Name:
-                return "'" + t.text + "'";
-            case Token::Kind::Number:
-                return "a number";
-            case Token::Kind::String:
-                return "a string";
-            case Token::Kind::Punct:
-                return "'" + t.text + "'";
-            case Token::Kind::Bad:
-                return "'" + t.text + "'";
+            case Token::Kind::End: return "the end of the file";
+            case Token::Kind::Name: return "'" + t.text + "'";
+            case Token::Kind::Number: return "a number";
+            case Token::Kind::String: return "a string";
+            case Token::Kind::Punct: return "'" + t.text + "'";
+            case Token::Kind::Bad: return "'" + t.text + "'";
         }
         return "?";
     }
@@ -222,8 +216,7 @@ private:
                 }
                 advance();
                 return true;
-            default:
-                break;
+            default: break;
         }
         if (isPunct("[")) {
             v.kind = ScadValue::Kind::Vector;

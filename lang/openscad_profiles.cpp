@@ -1,7 +1,7 @@
-// The one adapter between the .csg reader and 2-D profiles (csg/profile.h): circle, square and
-// polygon are profiles, 2-D Booleans, multmatrix and color combine them, and linear_extrude
-// and rotate_extrude make solids of them. A 2-D node is read only under an extrusion: kerf
-// traces solids, so a 2-D shape anywhere else is an error at its line.
+// The one adapter between the .csg reader and 2-D profiles (csg/profiles/profile.h): circle, square
+// and polygon are profiles, 2-D Booleans, multmatrix and color combine them, and linear_extrude and
+// rotate_extrude make solids of them. A 2-D node is read only under an extrusion: kerf traces
+// solids, so a 2-D shape anywhere else is an error at its line.
 //
 // Frames: makeExtrude and makeRevolve draw the profile in kerf's (x, z) and sweep / turn about
 // y. OpenSCAD draws it in (x, y) and sweeps / turns about z. The map (x, y, z) ↦ (x, z, y)
@@ -9,8 +9,8 @@
 // keeps its coordinates, makeExtrude's twist (counter-clockwise seen from +y) becomes clockwise
 // seen from +z, which is OpenSCAD's sense for a positive twist, and makeRevolve's turn from +x
 // toward +z becomes OpenSCAD's turn from +x toward +y.
-#include "csg/profile.h"
-#include "csg/solids.h"
+#include "csg/profiles/profile.h"
+#include "csg/tree/solids.h"
 #include "io/font_outline.h"
 #include "lang/openscad_lower.h"
 
@@ -86,10 +86,12 @@ private:
         if (c.name == "text") return text(c);
         if (c.name == "offset") return offset(c);
         if (c.name == "color") {
-            if (!color) color = &c;
+            if (!color)
+                color = &c;
             else if (!sameColor(*color, c))
-                mL.warning(c.pos, "2-D parts of one extrusion have different colours: the solid "
-                                  "takes the first one's");
+                mL.warning(c.pos,
+                           "2-D parts of one extrusion have different colours: the solid "
+                           "takes the first one's");
             return boolean("union", c.children);
         }
         if (c.name == "group" || c.name == "union" || c.name == "render" ||
@@ -140,7 +142,8 @@ private:
             if (const double* n = finiteNumber(a->value)) {
                 size = Vec2(*n);
             } else if (!numberPair(a->value, size, true)) {
-                mL.error(a->value.pos, "square size must be a number or a vector [x, y] of finite numbers");
+                mL.error(a->value.pos,
+                         "square size must be a number or a vector [x, y] of finite numbers");
                 return fail();
             }
             if (size.x < 0 || size.y < 0) {
@@ -168,7 +171,8 @@ private:
                 points.push_back(p);
             }
             if (!ok) {
-                mL.error(pts->value.pos, "polygon points must be a vector of [x, y] points of finite numbers");
+                mL.error(pts->value.pos,
+                         "polygon points must be a vector of [x, y] points of finite numbers");
                 return fail();
             }
         }
@@ -191,12 +195,14 @@ private:
                 bool ok = path.kind == ScadValue::Kind::Vector;
                 for (size_t i = 0; ok && i < path.items.size(); ++i) {
                     const double* n = finiteNumber(path.items[i]);
-                    ok = n && *n >= 0 && *n == std::floor(*n) && *n < static_cast<double>(points.size());
+                    ok = n && *n >= 0 && *n == std::floor(*n) &&
+                         *n < static_cast<double>(points.size());
                     if (ok) loop.push_back(points[static_cast<size_t>(*n)]);
                 }
                 if (!ok) {
-                    mL.error(path.pos, "polygon path must be a vector of indices into points (0 to " +
-                                           std::to_string(points.size() - 1) + ")");
+                    mL.error(path.pos,
+                             "polygon path must be a vector of indices into points (0 to " +
+                                 std::to_string(points.size() - 1) + ")");
                     return fail();
                 }
                 loops.push_back(std::move(loop));
@@ -211,7 +217,8 @@ private:
         }
         if (loops.empty()) return std::nullopt;
         // All outlines are filled together by the even-odd rule, as OpenSCAD does.
-        return profilePolygon(loops.front(), std::vector<std::vector<Vec2>>(loops.begin() + 1, loops.end()));
+        return profilePolygon(loops.front(),
+                              std::vector<std::vector<Vec2>>(loops.begin() + 1, loops.end()));
     }
 
     std::optional<Profile> multmatrix(const ScadCall& c) {
@@ -268,9 +275,10 @@ private:
         spec.acceptSubstitute = true;   // fontconfig's substitute, as OpenSCAD takes it
         double size = 10.0;
         std::string halign = "left", valign = "baseline", direction = "ltr";
-        if (!string(c, "text", 0, spec.text) || !mL.number(c, "size", 1, size) || !string(c, "font", 2, spec.font) ||
-            !string(c, "halign", 3, halign) || !string(c, "valign", 4, valign) ||
-            !mL.number(c, "spacing", 5, spec.spacing) || !string(c, "direction", 6, direction))
+        if (!string(c, "text", 0, spec.text) || !mL.number(c, "size", 1, size) ||
+            !string(c, "font", 2, spec.font) || !string(c, "halign", 3, halign) ||
+            !string(c, "valign", 4, valign) || !mL.number(c, "spacing", 5, spec.spacing) ||
+            !string(c, "direction", 6, direction))
             return fail();
         if (!(size > 0) || !(spec.spacing > 0)) {
             mL.error(c.pos, "text size and spacing must be positive");
@@ -283,13 +291,17 @@ private:
         spec.size = size / 0.72;
         if (spec.font.empty()) spec.font = "Liberation Sans";  // OpenSCAD's default, too
         const std::map<std::string, TextSpec::HAlign> h = {
-            {"left", TextSpec::HAlign::Left}, {"center", TextSpec::HAlign::AdvanceCenter}, {"right", TextSpec::HAlign::Right}};
+            {"left", TextSpec::HAlign::Left},
+            {"center", TextSpec::HAlign::AdvanceCenter},
+            {"right", TextSpec::HAlign::Right}};
         const std::map<std::string, TextSpec::VAlign> v = {{"baseline", TextSpec::VAlign::Baseline},
                                                            {"top", TextSpec::VAlign::Top},
                                                            {"center", TextSpec::VAlign::Center},
                                                            {"bottom", TextSpec::VAlign::Bottom}};
         if (!h.count(halign) || !v.count(valign)) {
-            mL.error(c.pos, "text halign must be left, center or right and valign baseline, top, center or bottom");
+            mL.error(c.pos,
+                     "text halign must be left, center or right and valign baseline, top, center "
+                     "or bottom");
             return fail();
         }
         spec.halign = h.at(halign);
@@ -297,9 +309,11 @@ private:
         try {
             TextOutline outline = layoutText(spec);
             if (!outline.substitutedFamily.empty())
-                mL.warning(c.pos, "font '" + spec.font + "' is not installed: using '" + outline.substitutedFamily +
+                mL.warning(c.pos, "font '" + spec.font + "' is not installed: using '" +
+                                      outline.substitutedFamily +
                                       "', the font fontconfig (and so OpenSCAD) substitutes");
-            if (outline.shape.loops.empty()) return std::nullopt;  // spaces only: empty, as in OpenSCAD
+            if (outline.shape.loops.empty())
+                return std::nullopt;  // spaces only: empty, as in OpenSCAD
             if (!outline.glyphsOverlap) return profilePath(std::move(outline.shape));
             std::vector<Profile> parts;
             for (PathShape& glyph : outline.glyphs) parts.push_back(profilePath(std::move(glyph)));
@@ -314,8 +328,10 @@ private:
     /// its mitred or chamfered corners, is not a distance level set: an error.
     std::optional<Profile> offset(const ScadCall& c) {
         if (const ScadArg* d = c.arg("delta"); d && d->value.kind != ScadValue::Kind::Undef) {
-            mL.unsupported(c, "offset(delta) is not supported: its mitred or chamfered corners are not a rounded "
-                              "offset; offset(r) is exact in kerf");
+            mL.unsupported(
+                c,
+                "offset(delta) is not supported: its mitred or chamfered corners are not a rounded "
+                "offset; offset(r) is exact in kerf");
             return fail();
         }
         double r = 1.0;  // OpenSCAD's default
@@ -388,8 +404,9 @@ NodePtr rotateExtrude(const ScadCall& c, ScadLowering& l, Profile p) {
         const double mirror[6] = {-1, 0, 0, 0, 1, 0};
         p = profileTransform(std::move(p), mirror);
     } else if (p.bounds.lo.x < 0) {
-        l.warning(c.pos, "rotate_extrude: the profile may reach x < 0; only its part at x ≥ 0 is "
-                         "turned (OpenSCAD refuses a profile on both sides of the axis)");
+        l.warning(c.pos,
+                  "rotate_extrude: the profile may reach x < 0; only its part at x ≥ 0 is "
+                  "turned (OpenSCAD refuses a profile on both sides of the axis)");
     }
     return toOpenScadFrame(makeRevolve(p, degrees), negative);
 }
@@ -403,13 +420,15 @@ bool isScadProfileNode(const std::string& name) {
 NodePtr lowerScadProfileNode(const ScadCall& c, ScadLowering& lowering) {
     if (isFlatShape(c.name)) {
         lowering.error(c.pos,
-                       c.name + " is a 2-D shape outside linear_extrude or rotate_extrude: "
-                                "kerf traces solids only",
+                       c.name +
+                           " is a 2-D shape outside linear_extrude or rotate_extrude: "
+                           "kerf traces solids only",
                        "extrude it (linear_extrude) to make a solid of it");
         return nullptr;
     }
     if (const ScadArg* file = c.arg("file"); file && file->value.kind != ScadValue::Kind::Undef) {
-        lowering.error(file->value.pos, c.name + " file imports a DXF drawing, which kerf does not read");
+        lowering.error(file->value.pos,
+                       c.name + " file imports a DXF drawing, which kerf does not read");
         return nullptr;
     }
     FlatReader reader(lowering);

@@ -163,8 +163,10 @@ Expr Parser::node(Expr::Kind kind, const Token& at, SourcePos start, const Expr*
     int depth = 1;
     for (size_t i = 0; i < n; ++i) depth = std::max(depth, args[i].depth + 1);
     if (depth > kMaxExpressionDepth)
-        fail(at.loc, "expression too deeply nested (more than " + std::to_string(kMaxExpressionDepth) +
-                         " levels)", "split it with lets");
+        fail(at.loc,
+             "expression too deeply nested (more than " + std::to_string(kMaxExpressionDepth) +
+                 " levels)",
+             "split it with lets");
     e.depth = static_cast<uint16_t>(depth);
     setArgs(e, args, n);
     return e;
@@ -178,9 +180,9 @@ Expr Parser::binary(const Token& op, const Expr& lhs, const Expr& rhs, char code
 }
 
 bool Parser::isSolidWord(const std::string& w) {
-    static const std::array<const char*, 9> kPrimitives = {"sphere",    "box",      "cylinder",
-                                                           "cone",      "torus",    "halfspace",
-                                                           "implicit",  "extrude",  "revolve"};
+    static const std::array<const char*, 9> kPrimitives = {"sphere",   "box",     "cylinder",
+                                                           "cone",     "torus",   "halfspace",
+                                                           "implicit", "extrude", "revolve"};
     if (w == "disc" || w == "triangle") return true;  // surfaces (lower_surfaces.cpp)
     return contains(kPrimitives, w) || contains(kBooleanWords, w);
 }
@@ -210,7 +212,8 @@ Expr Parser::parsePrimary() {
         e.kind = Expr::Kind::SolidValue;
         e.solid = store(parseSolid(true));
         return e;
-    } else if (t.kind == TokenKind::Identifier && isSolidWord(t.text) && peek(1).kind == TokenKind::LBrace) {
+    } else if (t.kind == TokenKind::Identifier && isSolidWord(t.text) &&
+               peek(1).kind == TokenKind::LBrace) {
         e.kind = Expr::Kind::SolidValue;
         e.solid = store(parseSolid(true));
         return e;
@@ -283,7 +286,8 @@ Expr Parser::parseList() {
         const Token& var = expectName("the name of the loop variable");
         const std::string* ident = &mArena->intern(var.text).str();
         const SourcePos varPos = var.pos;
-        if (!checkWord("in")) fail(peek().loc, "expected 'in' after the loop variable, found " + describe(peek()));
+        if (!checkWord("in"))
+            fail(peek().loc, "expected 'in' after the loop variable, found " + describe(peek()));
         next();
         Expr parts[3] = {parseExpr(), Expr(), Expr()};
         size_t n = 2;

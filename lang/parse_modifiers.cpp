@@ -29,23 +29,27 @@ ArenaList<Modifier> Parser::parseModifiers() {
             m.kind = Modifier::Kind::Displace;
             next();
             if (peek().kind != TokenKind::Identifier || peek(1).kind != TokenKind::LBrace)
-                fail(peek().loc, "expected a pattern after 'displace' (displace noise { … } by 0.1), found " +
-                                     describe(peek()));
+                fail(peek().loc,
+                     "expected a pattern after 'displace' (displace noise { … } by 0.1), found " +
+                         describe(peek()));
             m.pattern = store(parsePattern());
             if (!checkWord("by"))
-                fail(peek().loc, "expected 'by DEPTH' after the displacement's pattern, found " + describe(peek()));
+                fail(peek().loc, "expected 'by DEPTH' after the displacement's pattern, found " +
+                                     describe(peek()));
             next();
             const Expr arg = parseExpr();
             m.args = list(&arg, 1);
-        } else if (word == "interior") {  // `interior MATERIAL` (csg/surfaces.h)
+        } else if (word == "interior") {  // `interior MATERIAL` (csg/primitives/surfaces.h)
             m.kind = Modifier::Kind::Interior;
             next();
             if (peek().kind != TokenKind::Identifier)
-                fail(peek().loc, "expected a material name after 'interior', found " + describe(peek()));
+                fail(peek().loc,
+                     "expected a material name after 'interior', found " + describe(peek()));
             m.materialLoc = peek().pos;
             m.material = mArena->intern(next().text);
         } else if (word == "material" && peek(1).kind != TokenKind::Identifier) {
-            fail(peek(1).loc, "expected a material name after 'material', found " + describe(peek(1)));
+            fail(peek(1).loc,
+                 "expected a material name after 'material', found " + describe(peek(1)));
         } else if (word == "material" && peek(2).kind != TokenKind::LBrace) {
             m.kind = Modifier::Kind::Material;
             next();
@@ -66,8 +70,8 @@ void Parser::parseMatrix(Modifier& m) {
     std::vector<Expr> entries;
     while (!accept(TokenKind::RBracket)) {
         if (check(TokenKind::End) || check(TokenKind::Semicolon) || check(TokenKind::RBrace))
-            fail(peek().loc, "expected ']' to close the matrix opened at line " + std::to_string(open.line) +
-                                 ", found " + describe(peek()));
+            fail(peek().loc, "expected ']' to close the matrix opened at line " +
+                                 std::to_string(open.line) + ", found " + describe(peek()));
         if (commas && !entries.empty()) expect(TokenKind::Comma, "between matrix entries");
         entries.push_back(commas ? parseExpr() : parseUnary());
     }
@@ -78,11 +82,20 @@ bool Parser::bracketHasCommas() {
     int depth = 0;
     for (size_t i = mPos;; ++i) {
         switch (mTokens.at(i).kind) {
-            case TokenKind::LParen: case TokenKind::LBracket: case TokenKind::Less: ++depth; break;
-            case TokenKind::RParen: case TokenKind::Greater: --depth; break;
-            case TokenKind::RBracket: if (depth-- == 0) return false; break;
-            case TokenKind::Comma: if (depth == 0) return true; break;
-            case TokenKind::Semicolon: case TokenKind::RBrace: case TokenKind::End: return false;
+            case TokenKind::LParen:
+            case TokenKind::LBracket:
+            case TokenKind::Less: ++depth; break;
+            case TokenKind::RParen:
+            case TokenKind::Greater: --depth; break;
+            case TokenKind::RBracket:
+                if (depth-- == 0) return false;
+                break;
+            case TokenKind::Comma:
+                if (depth == 0) return true;
+                break;
+            case TokenKind::Semicolon:
+            case TokenKind::RBrace:
+            case TokenKind::End: return false;
             default: break;
         }
     }

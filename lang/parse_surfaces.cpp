@@ -24,7 +24,8 @@ Solid Parser::parseSurfaceOp(bool withModifiers) {
     } else {
         operands.push_back(parseSolid(true));
         if (!checkWord("by"))
-            fail(peek().loc, "expected 'by SOLID' after the surface that clip cuts, found " + describe(peek()),
+            fail(peek().loc,
+                 "expected 'by SOLID' after the surface that clip cuts, found " + describe(peek()),
                  "write 'clip disc { … } by box { … }'");
         next();
         // The modifiers after the solid move the whole clip (surface and solid together).

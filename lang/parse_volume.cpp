@@ -5,9 +5,7 @@
 
 namespace kerf::parser_detail {
 
-bool Parser::startsVolume() {
-    return checkWord("volume") && peek(1).kind == TokenKind::String;
-}
+bool Parser::startsVolume() { return checkWord("volume") && peek(1).kind == TokenKind::String; }
 
 Solid Parser::parseVolume(bool withModifiers) {
     NestingGuard guard(*this);
@@ -24,7 +22,8 @@ Solid Parser::parseVolume(bool withModifiers) {
         grid.name = mArena->intern("grid");
         grid.loc = next().pos;
         if (check(TokenKind::Semicolon) || check(TokenKind::RBrace) || check(TokenKind::End))
-            fail(peek().loc, "expected the grid's name in quotes after 'grid', found " + describe(peek()));
+            fail(peek().loc,
+                 "expected the grid's name in quotes after 'grid', found " + describe(peek()));
         grid.expr = store(parsePrimary());
         properties.push_back(grid);
     }
@@ -32,7 +31,8 @@ Solid Parser::parseVolume(bool withModifiers) {
     if (withModifiers) volume.modifiers = parseModifiers();
     if (withModifiers && checkWord("grid"))
         fail(peek().loc, "'grid' after the modifiers of a volume",
-             "write it right after the file name: volume \"smoke.vdb\" grid \"surface\" translate …");
+             "write it right after the file name: volume \"smoke.vdb\" grid \"surface\" translate "
+             "…");
     return volume;
 }
 

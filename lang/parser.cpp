@@ -12,8 +12,9 @@ void Parser::parseStatement(Program& program) {
     const Token& t = peek();
     if (t.kind != TokenKind::Identifier ||
         (!contains(kStatementWords, t.text) && !contains(kBlockWords, t.text))) {
-        std::string hint = "a statement starts with let, solid, object, material, camera, light, "
-                           "mist, background, render, section, include, fn, for, if, assert, echo or default";
+        std::string hint =
+            "a statement starts with let, solid, object, material, camera, light, "
+            "mist, background, render, section, include, fn, for, if, assert, echo or default";
         if (t.kind == TokenKind::Identifier && peek(1).kind == TokenKind::LBrace)
             hint = "to put a solid into the scene write 'object " + t.text + " { … };'";
         if (const std::string foreign = foreignHint(t); !foreign.empty()) hint = foreign;
@@ -25,8 +26,9 @@ void Parser::parseStatement(Program& program) {
         parseStatementBody(s);
     } catch (const SyntaxError&) {
         // Keep a broken definition's name, so its uses are not reported as undefined too.
-        const bool defines = s.kind == Statement::Kind::Let || s.kind == Statement::Kind::SolidDef ||
-                             s.kind == Statement::Kind::Material || s.kind == Statement::Kind::Function;
+        const bool defines =
+            s.kind == Statement::Kind::Let || s.kind == Statement::Kind::SolidDef ||
+            s.kind == Statement::Kind::Material || s.kind == Statement::Kind::Function;
         if (defines && !s.name.empty()) {
             s.broken = true;
             s.takeTree(mArena->handedOut());
@@ -67,7 +69,8 @@ void Parser::parseStatementBody(Statement& s) {
         expect(TokenKind::Semicolon, "after the echo statement");
     } else if (word == "default") {
         s.kind = Statement::Kind::DefaultMaterial;
-        if (!checkWord("material")) fail(peek().loc, "expected 'material' after 'default', found " + describe(peek()));
+        if (!checkWord("material"))
+            fail(peek().loc, "expected 'material' after 'default', found " + describe(peek()));
         next();
         s.nameLoc = peek().pos;
         s.name = expectName("the name of the default material").text;
@@ -133,8 +136,11 @@ void Parser::parseBlockStatement(Statement& s, const std::string& word) {
         s.kind = Statement::Kind::For;
         s.nameLoc = peek().pos;
         s.name = expectName("the name of the loop variable").text;
-        if (isReservedWord(s.name)) mSink.error(mTokens.at(mPos - 1).loc, "'" + s.name + "' is a reserved word and cannot name a loop variable");
-        if (!checkWord("in")) fail(peek().loc, "expected 'in' after the loop variable, found " + describe(peek()));
+        if (isReservedWord(s.name))
+            mSink.error(mTokens.at(mPos - 1).loc,
+                        "'" + s.name + "' is a reserved word and cannot name a loop variable");
+        if (!checkWord("in"))
+            fail(peek().loc, "expected 'in' after the loop variable, found " + describe(peek()));
         next();
         s.expr = store(parseExpr());
         parseStatements(s.block->body);
@@ -162,8 +168,8 @@ void Parser::parseStatements(std::vector<Statement>& out) {
     expect(TokenKind::LBrace, "to open the block");
     while (!accept(TokenKind::RBrace)) {
         if (check(TokenKind::End))
-            fail(peek().loc, "expected '}' to close the block opened at line " + std::to_string(open.line) +
-                                 ", found " + describe(peek()));
+            fail(peek().loc, "expected '}' to close the block opened at line " +
+                                 std::to_string(open.line) + ", found " + describe(peek()));
         if (accept(TokenKind::Semicolon)) continue;
         const Token& t = peek();
         if (t.kind != TokenKind::Identifier ||
@@ -189,7 +195,8 @@ void Parser::parseFunction(Statement& s) {
             p.name = mArena->intern(name.text);
             p.loc = name.pos;
             if (isReservedWord(name.text))
-                mSink.error(name.loc, "'" + name.text + "' is a reserved word and cannot name a parameter");
+                mSink.error(name.loc,
+                            "'" + name.text + "' is a reserved word and cannot name a parameter");
             if (accept(TokenKind::Equals)) p.expr = store(parseExpr());
             params.push_back(p);
         } while (accept(TokenKind::Comma));
@@ -205,7 +212,8 @@ void Parser::parseDefinedName(Statement& s, const std::string& what) {
     const Token& name = expectName("the name of the " + what);
     s.name = name.text;
     s.nameLoc = name.pos;
-    if (isReservedWord(name.text) || (what == "let" && (name.text == "x" || name.text == "y" || name.text == "z")))
+    if (isReservedWord(name.text) ||
+        (what == "let" && (name.text == "x" || name.text == "y" || name.text == "z")))
         mSink.error(name.loc, "'" + name.text + "' is a reserved word and cannot name a " + what);
 }
 
@@ -220,8 +228,8 @@ ArenaList<Property> Parser::parseProperties(const SourceLoc& open) {
     std::vector<Property> properties;
     while (!accept(TokenKind::RBrace)) {
         if (check(TokenKind::End) || (peek().firstOnLine && startsStatement()))
-            fail(peek().loc, "expected '}' to close the block opened at line " + std::to_string(open.line) +
-                                 ", found " + describe(peek()));
+            fail(peek().loc, "expected '}' to close the block opened at line " +
+                                 std::to_string(open.line) + ", found " + describe(peek()));
         const Token& name = expectName("a property name or '}'");
         Property p;
         p.name = mArena->intern(name.text);
@@ -262,10 +270,10 @@ ArenaList<Property> Parser::parseProperties(const SourceLoc& open) {
         // A property without a value (POV-Ray's `open`), or with a block for a value
         // (`pigment { … }`), is left to the block's check, which knows whether the name is a
         // property at all; the block is skipped.
-        const bool noValue = check(TokenKind::RBrace) || check(TokenKind::End) ||
-                             check(TokenKind::LBrace) ||
-                             (isForeignFlag(p.name) && check(TokenKind::Identifier) &&
-                              !checkWord("true") && !checkWord("false"));  // `open true` has a value
+        const bool noValue =
+            check(TokenKind::RBrace) || check(TokenKind::End) || check(TokenKind::LBrace) ||
+            (isForeignFlag(p.name) && check(TokenKind::Identifier) && !checkWord("true") &&
+             !checkWord("false"));  // `open true` has a value
         if (check(TokenKind::LBrace)) skipBlock();
         if (!noValue && check(TokenKind::Identifier) && peek(1).kind == TokenKind::LBrace)
             p.solid = store(parseSolid(false));
@@ -294,7 +302,8 @@ std::string Parser::foreignHint(const Token& t) {
     if (peek(1).kind == TokenKind::LParen) return callSyntaxHint(t.text);
     if (const std::string solid = foreignSolidHint(t.text);
         !solid.empty() && peek(1).kind == TokenKind::LBrace)
-        return solid + "; a solid is put into the scene with 'object …;'";  // POV-Ray's `plane { … }`
+        return solid +
+               "; a solid is put into the scene with 'object …;'";  // POV-Ray's `plane { … }`
     return foreignStatementHint(t.text);
 }
 
@@ -334,7 +343,8 @@ Solid Parser::parseSolid(bool withModifiers) {
     if (check(TokenKind::LBrace)) {
         const SourceLoc open = peek().loc;
         next();
-        if (!isSolidKind(solid.name)) {  // else its contents (solids, POV-Ray values) read as properties
+        if (!isSolidKind(
+                solid.name)) {  // else its contents (solids, POV-Ray values) read as properties
             const std::string hint =
                 unknownSolidHint(solid.name, readPositionalValues(mTokens, mPos, mSink).values);
             fail(nameLoc, "unknown solid '" + solid.name + "'", hint);
@@ -344,16 +354,19 @@ Solid Parser::parseSolid(bool withModifiers) {
             std::vector<Solid> children;
             while (!accept(TokenKind::RBrace)) {
                 if (check(TokenKind::End) || (peek().firstOnLine && startsStatement()))
-                    fail(peek().loc, "expected '}' to close the " + solid.name + " opened at line " +
-                                         std::to_string(open.line) + ", found " + describe(peek()));
+                    fail(peek().loc, "expected '}' to close the " + solid.name +
+                                         " opened at line " + std::to_string(open.line) +
+                                         ", found " + describe(peek()));
                 children.push_back(parseChild());
             }
             solid.children = list(children);
         } else {
             solid.kind = Solid::Kind::Primitive;
-            if (const PositionalValues p = readPositionalValues(mTokens, mPos, mSink); !p.values.empty()) {
+            if (const PositionalValues p = readPositionalValues(mTokens, mPos, mSink);
+                !p.values.empty()) {
                 const std::string hint = positionalHint(solid.name, p.values, p.flag);
-                fail(peek().loc, "expected a property name in " + solid.name + ", found " + describe(peek()),
+                fail(peek().loc,
+                     "expected a property name in " + solid.name + ", found " + describe(peek()),
                      hint);
             }
             solid.properties = parseProperties(open);
@@ -370,8 +383,8 @@ bool Parser::startsMesh() {
     const Token& file = peek(1);
     return file.kind == TokenKind::String || file.kind == TokenKind::LParen ||
            (file.kind == TokenKind::Identifier && !contains(kModifierWords, file.text) &&
-            !contains(kStatementWords, file.text) && file.text != "smooth" && file.text != "displace" &&
-            file.text != "no_shadow");
+            !contains(kStatementWords, file.text) && file.text != "smooth" &&
+            file.text != "displace" && file.text != "no_shadow");
 }
 
 Solid Parser::parseMesh(bool withModifiers) {
@@ -414,8 +427,10 @@ Solid Parser::parseChild() {
         const Token& name = expectName("the name of the loop variable");
         head.name = mArena->intern(name.text);
         if (isReservedWord(name.text))
-            mSink.error(name.loc, "'" + name.text + "' is a reserved word and cannot name a loop variable");
-        if (!checkWord("in")) fail(peek().loc, "expected 'in' after the loop variable, found " + describe(peek()));
+            mSink.error(name.loc,
+                        "'" + name.text + "' is a reserved word and cannot name a loop variable");
+        if (!checkWord("in"))
+            fail(peek().loc, "expected 'in' after the loop variable, found " + describe(peek()));
         next();
     } else {
         head.loc = peek().pos;
@@ -454,17 +469,18 @@ std::vector<Solid> Parser::parseChildren(const char* what) {
 
 }  // namespace parser_detail
 
-using parser_detail::Parser;
 using parser_detail::contains;
-using parser_detail::kStatementWords;
 using parser_detail::kModifierWords;
+using parser_detail::kStatementWords;
+using parser_detail::Parser;
 
 bool isReservedWord(const std::string& word) {
     static const std::array<const char*, 24> kOther = {
-        "sphere", "box", "cylinder", "cone", "torus", "halfspace", "implicit", "mesh", "pi",
-        "union", "intersection", "difference", "xor", "matrix",
-        "for", "in", "if", "else", "step", "and", "or", "not", "true", "false"};
-    return contains(kStatementWords, word) || contains(kModifierWords, word) || contains(kOther, word);
+        "sphere", "box",   "cylinder",     "cone",       "torus", "halfspace", "implicit", "mesh",
+        "pi",     "union", "intersection", "difference", "xor",   "matrix",    "for",      "in",
+        "if",     "else",  "step",         "and",        "or",    "not",       "true",     "false"};
+    return contains(kStatementWords, word) || contains(kModifierWords, word) ||
+           contains(kOther, word);
 }
 
 Program parse(const std::vector<Token>& tokens, DiagnosticSink& sink) {

@@ -17,13 +17,14 @@
 namespace kerf::parser_detail {
 
 inline const std::array<const char*, 15> kStatementWords = {
-    "let", "solid", "object", "material", "camera", "light", "mist", "background", "render", "include",
-    "fn", "assert", "echo", "default", "section"};
+    "let",    "solid",   "object", "material", "camera", "light",   "mist",   "background",
+    "render", "include", "fn",     "assert",   "echo",   "default", "section"};
 /// Words that open a statement but may also stand for a child inside a Boolean body.
 inline const std::array<const char*, 2> kBlockWords = {"for", "if"};
-inline const std::array<const char*, 4> kBooleanWords = {"union", "intersection", "difference", "xor"};
-inline const std::array<const char*, 8> kModifierWords = {"translate", "rotate", "scale", "matrix",
-                                                          "material",  "move",   "spin",  "interior"};
+inline const std::array<const char*, 4> kBooleanWords = {"union", "intersection", "difference",
+                                                         "xor"};
+inline const std::array<const char*, 8> kModifierWords = {
+    "translate", "rotate", "scale", "matrix", "material", "move", "spin", "interior"};
 
 template <size_t N>
 inline bool contains(const std::array<const char*, N>& words, const std::string& w) {
@@ -34,14 +35,16 @@ struct SyntaxError {};
 
 class Parser {
 public:
-    Parser(std::function<Token()> source, DiagnosticSink& sink) : mTokens(std::move(source)), mSink(sink) {}
+    Parser(std::function<Token()> source, DiagnosticSink& sink)
+        : mTokens(std::move(source)), mSink(sink) {}
 
     Program run() {
         Program program;
         program.arenas.push_back(std::make_unique<AstArena>());
         mArena = program.arenas.back().get();
         while (peek().kind != TokenKind::End) {
-            mTokens.dropBefore(mPos > 0 ? mPos - 1 : 0);  // keep the previous token: afterPrevious()
+            mTokens.dropBefore(mPos > 0 ? mPos - 1
+                                        : 0);  // keep the previous token: afterPrevious()
             mArena->reset();  // the last statement's nodes were moved to its own block
             if (accept(TokenKind::Semicolon)) continue;  // an empty statement
             const size_t before = mPos;
@@ -59,13 +62,17 @@ public:
 private:
     // ---- the arena: nodes are built as values, then copied into it side by side ----
     template <class T>
-    const T* store(const T& node) { return mArena->copy(&node, 1); }
+    const T* store(const T& node) {
+        return mArena->copy(&node, 1);
+    }
     template <class T>
     ArenaList<T> list(const T* values, size_t n) {
         return ArenaList<T>(mArena->copy(values, n), static_cast<uint32_t>(n));
     }
     template <class T>
-    ArenaList<T> list(const std::vector<T>& values) { return list(values.data(), values.size()); }
+    ArenaList<T> list(const std::vector<T>& values) {
+        return list(values.data(), values.size());
+    }
 
     // ---- token access ----
     const Token& peek(size_t ahead = 0) { return mTokens.at(mPos + ahead); }
@@ -112,7 +119,8 @@ private:
         Parser& p;
         explicit NestingGuard(Parser& parser) : p(parser) {
             if (++p.mNesting > kMaxNesting)
-                p.fail(p.peek().loc, "nesting too deep (more than " + std::to_string(kMaxNesting) + " levels)",
+                p.fail(p.peek().loc,
+                       "nesting too deep (more than " + std::to_string(kMaxNesting) + " levels)",
                        "split the model into named solids or lets");
         }
         ~NestingGuard() { --p.mNesting; }
@@ -142,7 +150,6 @@ private:
         }
         mBraceDepth = 0;
     }
-
 
     // ---- habits from other modellers (lang/diagnostic_hints.h) ----
     /// The hint for another modeller's word where a statement or a solid belongs, or empty.

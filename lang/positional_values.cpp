@@ -31,15 +31,12 @@ int depthChange(TokenKind k) {
         case TokenKind::LParen:
         case TokenKind::LBracket:
         case TokenKind::Less:
-        case TokenKind::LBrace:
-            return 1;
+        case TokenKind::LBrace: return 1;
         case TokenKind::RParen:
         case TokenKind::RBracket:
         case TokenKind::Greater:
-        case TokenKind::RBrace:
-            return -1;
-        default:
-            return 0;
+        case TokenKind::RBrace: return -1;
+        default: return 0;
     }
 }
 

@@ -28,7 +28,10 @@ const char* exampleValue(PropertyType type) {
 
 PropertyBlock::PropertyBlock(const ArenaList<Property>& properties, std::vector<PropertySpec> specs,
                              std::string what, SourcePos blockLoc, DiagnosticSink& sink)
-    : mSpecs(std::move(specs)), mFound(mSpecs.size(), nullptr), mWhat(std::move(what)), mBlockLoc(blockLoc) {
+    : mSpecs(std::move(specs)),
+      mFound(mSpecs.size(), nullptr),
+      mWhat(std::move(what)),
+      mBlockLoc(blockLoc) {
     std::vector<std::string> valid;
     for (const PropertySpec& s : mSpecs) valid.emplace_back(s.name);
     std::vector<bool> named(mSpecs.size(), false);  // given, with or without a value
@@ -38,18 +41,22 @@ PropertyBlock::PropertyBlock(const ArenaList<Property>& properties, std::vector<
         if (i == mSpecs.size()) {
             std::string hint = didYouMean(p.name, valid);
             if (hint.empty()) hint = foreignPropertyNote(p.name);
-            hint += (hint.empty() ? "" : hint.back() == '?' ? " " : "; ") + mWhat + " takes: " + joinNames(valid);
+            hint += (hint.empty()         ? ""
+                     : hint.back() == '?' ? " "
+                                          : "; ") +
+                    mWhat + " takes: " + joinNames(valid);
             sink.error(p.loc, "unknown property '" + p.name + "' in " + mWhat, hint);
             mOk = false;
         } else if (!p.expr && !p.solid) {  // the parser found no value after the name
             sink.error(p.loc, "property '" + p.name + "' of " + mWhat + " has no value",
-                       "write its value after the name: '" + p.name + " " + exampleValue(mSpecs[i].type) + "'");
+                       "write its value after the name: '" + p.name + " " +
+                           exampleValue(mSpecs[i].type) + "'");
             named[i] = true;
             mOk = false;
         } else if (mFound[i]) {
             sink.error(p.loc, "property '" + p.name + "' given twice in " + mWhat,
-                       "first given at line " + std::to_string(sink.locate(mFound[i]->loc).line) + ", column " +
-                           std::to_string(sink.locate(mFound[i]->loc).col));
+                       "first given at line " + std::to_string(sink.locate(mFound[i]->loc).line) +
+                           ", column " + std::to_string(sink.locate(mFound[i]->loc).col));
             mOk = false;
         } else {
             mFound[i] = &p;
@@ -57,7 +64,8 @@ PropertyBlock::PropertyBlock(const ArenaList<Property>& properties, std::vector<
     }
     for (size_t i = 0; i < mSpecs.size(); ++i) {
         if (mSpecs[i].required && !mFound[i] && !named[i]) {
-            sink.error(mBlockLoc, mWhat + " needs the property '" + std::string(mSpecs[i].name) + "'");
+            sink.error(mBlockLoc,
+                       mWhat + " needs the property '" + std::string(mSpecs[i].name) + "'");
             mOk = false;
         }
     }

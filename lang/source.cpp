@@ -43,7 +43,8 @@ size_t utf8SequenceLength(const std::string& s, size_t i) {
     if (c < 0x80) return 1;
     size_t n;
     unsigned lo = 0x80, hi = 0xBF;  // allowed range of the second byte
-    if (c >= 0xC2 && c <= 0xDF) n = 2;
+    if (c >= 0xC2 && c <= 0xDF)
+        n = 2;
     else if (c >= 0xE0 && c <= 0xEF) {
         n = 3;
         if (c == 0xE0) lo = 0xA0;
@@ -75,9 +76,10 @@ bool checkSourceText(const SourceText& source, DiagnosticSink& sink) {
         }
         const bool allowedControl = c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
         if ((c < 0x20 && !allowedControl) || c == 0x7F) {
-            sink.error(locationOf(source, i),
-                       "file contains the control character " + hexByte(c) + "; is it a binary file?",
-                       "model files are UTF-8 text");
+            sink.error(
+                locationOf(source, i),
+                "file contains the control character " + hexByte(c) + "; is it a binary file?",
+                "model files are UTF-8 text");
             return false;
         }
         const size_t n = utf8SequenceLength(t, i);
@@ -94,8 +96,8 @@ bool checkSourceText(const SourceText& source, DiagnosticSink& sink) {
 namespace {
 
 std::string tooLarge(int64_t maxBytes) {
-    return "it is larger than " + std::to_string(maxBytes >> 20) + " MB (" + std::to_string(maxBytes) +
-           " bytes), the limit for a model file";
+    return "it is larger than " + std::to_string(maxBytes >> 20) + " MB (" +
+           std::to_string(maxBytes) + " bytes), the limit for a model file";
 }
 
 /// The reason to refuse a file with this status, or an empty string.
@@ -110,11 +112,13 @@ std::string statusProblem(const struct stat& st, int64_t maxBytes) {
 
 std::string sourceFileProblem(const std::string& path, int64_t maxBytes) {
     struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) return errno == ENOENT || errno == ENOTDIR ? "no such file" : std::strerror(errno);
+    if (::stat(path.c_str(), &st) != 0)
+        return errno == ENOENT || errno == ENOTDIR ? "no such file" : std::strerror(errno);
     return statusProblem(st, maxBytes);
 }
 
-std::optional<std::string> readFileBytes(const std::string& path, std::string& why, int64_t maxBytes) {
+std::optional<std::string> readFileBytes(const std::string& path, std::string& why,
+                                         int64_t maxBytes) {
     why = sourceFileProblem(path, maxBytes);  // stat first: never open a FIFO or a device
     if (!why.empty()) return std::nullopt;
     // O_NONBLOCK so that a FIFO swapped in since the stat cannot block the open; fstat then

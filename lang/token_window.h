@@ -18,7 +18,8 @@ public:
 
     /// Token i of the file (absolute index, not dropped yet); End past the end.
     const Token& at(size_t i) {
-        while (mBase + mTokens.size() <= i && (mTokens.empty() || mTokens.back().kind != TokenKind::End))
+        while (mBase + mTokens.size() <= i &&
+               (mTokens.empty() || mTokens.back().kind != TokenKind::End))
             mTokens.push_back(mSource());
         return i - mBase < mTokens.size() ? mTokens[i - mBase] : mTokens.back();
     }

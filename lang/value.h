@@ -4,8 +4,8 @@
 /// over x, y, z. Lists and strings are shared, immutable, so copying a Value is cheap.
 #pragma once
 
-#include "csg/expr.h"
-#include "csg/node.h"
+#include "csg/tape/expr.h"
+#include "csg/tree/node.h"
 #include "csg/types.h"
 
 #include <memory>
@@ -22,15 +22,34 @@ struct Value {
     Type type = Type::Number;
     double number = 0.0;  ///< Number; Bool as 0 or 1
     Vec3 vector{0.0};
-    ExprId field = -1;  ///< for Field: the graph node
+    ExprId field = -1;                        ///< for Field: the graph node
     std::shared_ptr<const std::string> text;  ///< String
     std::shared_ptr<const ValueList> items;   ///< List
     NodePtr solid;  ///< Solid; null for the empty solid (a union of nothing)
 
-    static Value ofNumber(double v) { Value r; r.number = v; return r; }
-    static Value ofVector(const Vec3& v) { Value r; r.type = Type::Vector; r.vector = v; return r; }
-    static Value ofField(ExprId id) { Value r; r.type = Type::Field; r.field = id; return r; }
-    static Value ofBool(bool b) { Value r; r.type = Type::Bool; r.number = b ? 1.0 : 0.0; return r; }
+    static Value ofNumber(double v) {
+        Value r;
+        r.number = v;
+        return r;
+    }
+    static Value ofVector(const Vec3& v) {
+        Value r;
+        r.type = Type::Vector;
+        r.vector = v;
+        return r;
+    }
+    static Value ofField(ExprId id) {
+        Value r;
+        r.type = Type::Field;
+        r.field = id;
+        return r;
+    }
+    static Value ofBool(bool b) {
+        Value r;
+        r.type = Type::Bool;
+        r.number = b ? 1.0 : 0.0;
+        return r;
+    }
     static Value ofString(std::string s) {
         Value r;
         r.type = Type::String;
@@ -43,7 +62,12 @@ struct Value {
         r.items = std::make_shared<const ValueList>(std::move(items));
         return r;
     }
-    static Value ofSolid(NodePtr node) { Value r; r.type = Type::Solid; r.solid = std::move(node); return r; }
+    static Value ofSolid(NodePtr node) {
+        Value r;
+        r.type = Type::Solid;
+        r.solid = std::move(node);
+        return r;
+    }
 
     bool truth() const { return number != 0.0; }  ///< for Bool
     const ValueList& list() const { return *items; }

@@ -84,16 +84,16 @@ struct ScalarLanes {
     }
 };
 
-/// Walks the wide tree calling leaf(firstPack, count, tmax) for each leaf whose box the ray may meet
-/// within [tmin, tmax]; leaf returns the tmax to go on with, or a value below tmin to stop.
+/// Walks the wide tree calling leaf(firstPack, count, tmax) for each leaf whose box the ray may
+/// meet within [tmin, tmax]; leaf returns the tmax to go on with, or a value below tmin to stop.
 /// Children are entered nearest first (shadow rays too: measured no slower than lane order,
 /// with fewer boxes and triangles tested); the others wait with their entry distances and are
 /// skipped once the range has shrunk past them. Entries are conservative, so no box holding a
 /// hit is skipped. BvhStats::nodesVisited counts the boxes tested (the root's and each tested
 /// node's children).
 template <class Lanes, class Leaf>
-KERF_BVH_INLINE void walk(const View& v, const Lanes& boxes, const RayReciprocal& rec,
-                          double tmin, double tmax, BvhStats& stats, Leaf&& leaf) {
+KERF_BVH_INLINE void walk(const View& v, const Lanes& boxes, const RayReciprocal& rec, double tmin,
+                          double tmax, BvhStats& stats, Leaf&& leaf) {
     if (!(tmin < tmax)) return;
     ++stats.nodesVisited;
     double rootEnter = tmin;

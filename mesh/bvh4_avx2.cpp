@@ -58,8 +58,7 @@ struct Avx2Lanes {
         sz = _mm256_set1_pd(s.sz);
     }
 
-    KERF_AVX2_INLINE unsigned test(const WideNode& n, double tmin, double tmax,
-                                   double t[4]) const {
+    KERF_AVX2_INLINE unsigned test(const WideNode& n, double tmin, double tmax, double t[4]) const {
         if (!rec.finite || !(tmin >= 0.0)) return scalar.test(n, tmin, tmax, t);
         __m256d t0 = _mm256_set1_pd(tmin), t1 = _mm256_set1_pd(tmax);
 #pragma GCC unroll 3
@@ -73,9 +72,8 @@ struct Avx2Lanes {
             t0 = _mm256_max_pd(nearT, t0);  // nearT > t0 ? nearT : t0 (NaN keeps t0)
             t1 = _mm256_min_pd(farT, t1);   // farT < t1 ? farT : t1
         }
-        const __m256d ok = _mm256_and_pd(
-            _mm256_cmp_pd(t0, t1, _CMP_LE_OQ),
-            _mm256_cmp_pd(t0, _mm256_set1_pd(kInf), _CMP_LT_OQ));
+        const __m256d ok = _mm256_and_pd(_mm256_cmp_pd(t0, t1, _CMP_LE_OQ),
+                                         _mm256_cmp_pd(t0, _mm256_set1_pd(kInf), _CMP_LT_OQ));
         _mm256_storeu_pd(t, t0);
         return unsigned(_mm256_movemask_pd(ok));
     }
@@ -87,9 +85,9 @@ struct Avx2Lanes {
         const __m256d absMask = _mm256_castsi256_pd(_mm256_set1_epi64x(0x7fffffffffffffffLL));
         const __m256d m = _mm256_mul_pd(qx, py), n = _mm256_mul_pd(qy, px);
         const __m256d r = _mm256_sub_pd(m, n);
-        const __m256d bound = _mm256_mul_pd(
-            _mm256_set1_pd(0x1p-50),
-            _mm256_add_pd(_mm256_and_pd(m, absMask), _mm256_and_pd(n, absMask)));
+        const __m256d bound =
+            _mm256_mul_pd(_mm256_set1_pd(0x1p-50),
+                          _mm256_add_pd(_mm256_and_pd(m, absMask), _mm256_and_pd(n, absMask)));
         sure = _mm256_and_pd(sure, _mm256_cmp_pd(_mm256_and_pd(r, absMask), bound, _CMP_GT_OQ));
         return r;
     }
@@ -115,8 +113,7 @@ struct Avx2Lanes {
         // Signs differ where the xor has its sign bit; NaN and a zero area miss.
         const __m256d differ = _mm256_or_pd(_mm256_xor_pd(u, v), _mm256_xor_pd(u, w));
         const __m256d numerator = _mm256_add_pd(
-            _mm256_add_pd(_mm256_mul_pd(u, z[0]), _mm256_mul_pd(v, z[1])),
-            _mm256_mul_pd(w, z[2]));
+            _mm256_add_pd(_mm256_mul_pd(u, z[0]), _mm256_mul_pd(v, z[1])), _mm256_mul_pd(w, z[2]));
         const __m256d t = _mm256_div_pd(numerator, det);
         const unsigned sureMask = unsigned(_mm256_movemask_pd(sure)) & lanes;
         const unsigned missMask =
@@ -136,18 +133,17 @@ struct Avx2Lanes {
 
 namespace avx2 {
 
-bool closestHit(const View& v, const Ray& ray, double tmin, double tmax,
-                          TriangleHit& hit, BvhStats& stats) {
+bool closestHit(const View& v, const Ray& ray, double tmin, double tmax, TriangleHit& hit,
+                BvhStats& stats) {
     return bvh4::closestHit<Avx2Lanes>(v, ray, tmin, tmax, hit, stats);
 }
 
-bool anyHit(const View& v, const Ray& ray, double tmin, double tmax,
-                      BvhStats& stats) {
+bool anyHit(const View& v, const Ray& ray, double tmin, double tmax, BvhStats& stats) {
     return bvh4::anyHit<Avx2Lanes>(v, ray, tmin, tmax, stats);
 }
 
 void allCrossings(const View& v, const Ray& ray, double tmin, double tmax,
-                            std::vector<TriangleCrossing>& out, BvhStats& stats) {
+                  std::vector<TriangleCrossing>& out, BvhStats& stats) {
     bvh4::allCrossings<Avx2Lanes>(v, ray, tmin, tmax, out, stats);
 }
 

@@ -80,8 +80,10 @@ std::vector<WideNode> collapse(const std::vector<Node>& binary) {
     out.reserve(binary.size() / 2 + 1);
     Collapser c{binary, out};
     // A root leaf becomes the one lane of a wide root; else the root's two children start it.
-    if (binary[0].count > 0) c.emit({0});
-    else c.emit({1, binary[0].index});
+    if (binary[0].count > 0)
+        c.emit({0});
+    else
+        c.emit({1, binary[0].index});
     return out;
 }
 

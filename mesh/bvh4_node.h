@@ -22,8 +22,8 @@ static_assert(sizeof(WideNode) == 128, "two cache lines");
 /// AVX2 lanes. A leaf of n triangles takes ceil(n / 4) consecutive packs; unused lanes repeat
 /// lane 0 (and are never tested).
 struct alignas(32) TriPack {
-    double p[3][3][4];      ///< [vertex][axis][lane]
-    uint32_t triangle[4];   ///< the mesh's index of each lane's triangle
+    double p[3][3][4];     ///< [vertex][axis][lane]
+    uint32_t triangle[4];  ///< the mesh's index of each lane's triangle
     uint32_t pad[4];
 };
 static_assert(sizeof(TriPack) == 320, "five cache lines");

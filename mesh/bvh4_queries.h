@@ -1,7 +1,8 @@
 /// @file mesh/bvh4_queries.h
 /// @brief The three ray queries over the wide tree (closest hit, any hit, every crossing) as
-/// templates on the lanes (box and triangle-pack tests), instantiated once for the scalar path (mesh/triangle_bvh.cpp)
-/// and once for AVX2 (mesh/bvh4_avx2.cpp). The triangles go through the one watertight test.
+/// templates on the lanes (box and triangle-pack tests), instantiated once for the scalar path
+/// (mesh/triangle_bvh.cpp) and once for AVX2 (mesh/bvh4_avx2.cpp). The triangles go through the one
+/// watertight test.
 #pragma once
 
 #include "mesh/bvh4.h"
@@ -33,8 +34,8 @@ KERF_BVH_INLINE bool laneHit(const TriPack& p, int k, const PackResult& r, const
 /// out, until f returns false. Returns how many of the leaf's triangles were reached: all of
 /// them, or up to and including the lane where f stopped.
 template <class Lanes, class F>
-KERF_BVH_INLINE uint32_t forLeaf(const View& v, const Lanes& lanes, uint32_t first,
-                                 uint32_t count, PackResult& r, F&& f) {
+KERF_BVH_INLINE uint32_t forLeaf(const View& v, const Lanes& lanes, uint32_t first, uint32_t count,
+                                 PackResult& r, F&& f) {
     for (uint32_t i = 0; i < count; i += 4) {
         const TriPack& p = v.packs[first + i / 4];
         const int n = count - i < 4 ? int(count - i) : 4;
@@ -55,21 +56,23 @@ KERF_BVH_INLINE bool closestHit(const View& v, const Ray& ray, double tmin, doub
     const Lanes lanes(rec, sr);
     bool found = false;
     PackResult r;
-    walk(v, lanes, rec, tmin, tmax, stats,
-         [&](uint32_t first, uint32_t count, double tm) __attribute__((always_inline)) {
-             stats.trianglesTested += count;
-             forLeaf(v, lanes, first, count, r,
-                     [&](const TriPack& p, int k) __attribute__((always_inline)) {
-                         TriangleIntersection x;
-                         if (laneHit(p, k, r, sr, tmin, tm, x)) {
-                             tm = x.t;
-                             hit = {x.t, p.triangle[k], x.u, x.v};
-                             found = true;
-                         }
-                         return true;
-                     });
-             return tm;
-         });
+    walk(
+        v, lanes, rec, tmin, tmax,
+        stats, [&](uint32_t first, uint32_t count, double tm) __attribute__((always_inline)) {
+            stats.trianglesTested += count;
+            forLeaf(
+                v, lanes, first, count,
+                r, [&](const TriPack& p, int k) __attribute__((always_inline)) {
+                    TriangleIntersection x;
+                    if (laneHit(p, k, r, sr, tmin, tm, x)) {
+                        tm = x.t;
+                        hit = {x.t, p.triangle[k], x.u, x.v};
+                        found = true;
+                    }
+                    return true;
+                });
+            return tm;
+        });
     return found;
 }
 
@@ -81,17 +84,18 @@ KERF_BVH_INLINE bool anyHit(const View& v, const Ray& ray, double tmin, double t
     const Lanes lanes(rec, sr);
     bool found = false;
     PackResult r;
-    walk(v, lanes, rec, tmin, tmax, stats,
-         [&](uint32_t first, uint32_t count, double tm) __attribute__((always_inline)) {
-             stats.trianglesTested +=
-                 forLeaf(v, lanes, first, count, r,
-                         [&](const TriPack& p, int k) __attribute__((always_inline)) {
-                             TriangleIntersection x;
-                             found = laneHit(p, k, r, sr, tmin, tm, x);
-                             return !found;
-                         });
-             return found ? -kInf : tm;
-         });
+    walk(
+        v, lanes, rec, tmin, tmax,
+        stats, [&](uint32_t first, uint32_t count, double tm) __attribute__((always_inline)) {
+            stats.trianglesTested += forLeaf(
+                v, lanes, first, count,
+                r, [&](const TriPack& p, int k) __attribute__((always_inline)) {
+                    TriangleIntersection x;
+                    found = laneHit(p, k, r, sr, tmin, tm, x);
+                    return !found;
+                });
+            return found ? -kInf : tm;
+        });
     return found;
 }
 
@@ -104,18 +108,20 @@ KERF_BVH_INLINE void allCrossings(const View& v, const Ray& ray, double tmin, do
     const ShearedRay sr(ray);
     const Lanes lanes(rec, sr);
     PackResult r;
-    walk(v, lanes, rec, tmin, tmax, stats,
-         [&](uint32_t first, uint32_t count, double tm) __attribute__((always_inline)) {
-             stats.trianglesTested += count;
-             forLeaf(v, lanes, first, count, r,
-                     [&](const TriPack& p, int k) __attribute__((always_inline)) {
-                         TriangleIntersection x;
-                         if (laneHit(p, k, r, sr, tmin, tm, x))
-                             out.push_back({x.t, p.triangle[k], x.entering});
-                         return true;
-                     });
-             return tm;
-         });
+    walk(
+        v, lanes, rec, tmin, tmax,
+        stats, [&](uint32_t first, uint32_t count, double tm) __attribute__((always_inline)) {
+            stats.trianglesTested += count;
+            forLeaf(
+                v, lanes, first, count,
+                r, [&](const TriPack& p, int k) __attribute__((always_inline)) {
+                    TriangleIntersection x;
+                    if (laneHit(p, k, r, sr, tmin, tm, x))
+                        out.push_back({x.t, p.triangle[k], x.entering});
+                    return true;
+                });
+            return tm;
+        });
 }
 
 }  // namespace kerf::bvh4

@@ -66,8 +66,8 @@ struct BvhBuilder {
 
 // Chooses the cheapest binned SAH split of [begin, end) and partitions the range there.
 // False when a leaf is at least as cheap (and allowed) or no bin boundary separates anything.
-bool BvhBuilder::sahSplit(uint32_t begin, uint32_t end, const Bounds3& box,
-                          const Bounds3& cbox, uint32_t& mid, int& axis) {
+bool BvhBuilder::sahSplit(uint32_t begin, uint32_t end, const Bounds3& box, const Bounds3& cbox,
+                          uint32_t& mid, int& axis) {
     const uint32_t n = end - begin;
     const int bins = std::clamp(options.bins, 2, kMaxBins);
     // Costs are kept multiplied by the parent's half area, so a flat or point box (area 0)
@@ -127,9 +127,10 @@ bool BvhBuilder::sahSplit(uint32_t begin, uint32_t end, const Bounds3& box,
     if (bestAxis < 0) return false;
     const double lo = cbox.lo[bestAxis];
     const double scale = bins / (cbox.hi[bestAxis] - lo);
-    const auto it = std::partition(refs.begin() + begin, refs.begin() + end, [&](const BuildRef& r) {
-        return std::min(bins - 1, int((r.centroid[bestAxis] - lo) * scale)) < bestBin;
-    });
+    const auto it =
+        std::partition(refs.begin() + begin, refs.begin() + end, [&](const BuildRef& r) {
+            return std::min(bins - 1, int((r.centroid[bestAxis] - lo) * scale)) < bestBin;
+        });
     mid = uint32_t(it - refs.begin());
     axis = bestAxis;
     return true;
@@ -172,9 +173,8 @@ std::unique_ptr<BuildNode> BvhBuilder::build(uint32_t begin, uint32_t end, int d
     node->axis = axis;
     if (n > uint32_t(std::max(options.parallelAbove, 2))) {
         size_t leftNodes = 0, rightNodes = 0;
-        tbb::parallel_invoke(
-            [&] { node->child[0] = build(begin, mid, depth + 1, leftNodes); },
-            [&] { node->child[1] = build(mid, end, depth + 1, rightNodes); });
+        tbb::parallel_invoke([&] { node->child[0] = build(begin, mid, depth + 1, leftNodes); },
+                             [&] { node->child[1] = build(mid, end, depth + 1, rightNodes); });
         nodes += leftNodes + rightNodes;
     } else {
         node->child[0] = build(begin, mid, depth + 1, nodes);

@@ -85,8 +85,7 @@ struct Splitter {
 
 }  // namespace
 
-std::vector<TriangleRef> triangleReferences(const TriangleMesh& mesh, int maxDepth,
-                                            double ratio) {
+std::vector<TriangleRef> triangleReferences(const TriangleMesh& mesh, int maxDepth, double ratio) {
     const size_t count = mesh.triangles.size();
     // Each triangle's references on their own, then joined in triangle order.
     std::vector<std::vector<TriangleRef>> pieces(count);
@@ -112,8 +111,10 @@ std::vector<TriangleRef> triangleReferences(const TriangleMesh& mesh, int maxDep
     std::vector<TriangleRef> out;
     out.reserve(total);
     for (size_t i = 0; i < count; ++i) {
-        if (pieces[i].empty()) out.push_back(refs[i]);
-        else out.insert(out.end(), pieces[i].begin(), pieces[i].end());
+        if (pieces[i].empty())
+            out.push_back(refs[i]);
+        else
+            out.insert(out.end(), pieces[i].begin(), pieces[i].end());
     }
     return out;
 }

@@ -66,9 +66,8 @@ HalfEdges build(const TriangleMesh& mesh, DirectedMap& directed) {
     directed.reserve(n);
     for (uint32_t h = 0; h < n; ++h) {
         if (repeatsVertex(he, h / 3)) continue;
-        auto [it, inserted] =
-            directed.try_emplace(directedKey(he.origin[h], he.origin[HalfEdges::next(h)]),
-                                 DirectedUse{h, 0});
+        auto [it, inserted] = directed.try_emplace(
+            directedKey(he.origin[h], he.origin[HalfEdges::next(h)]), DirectedUse{h, 0});
         ++it->second.count;
     }
     // A twin only where exactly one triangle runs each way: a proper manifold, oriented edge.
@@ -105,7 +104,8 @@ MeshReport validateMesh(const TriangleMesh& mesh) {
         const Vec3& p1 = mesh.positions[mesh.triangles[t][1]];
         const Vec3& p2 = mesh.positions[mesh.triangles[t][2]];
         // Zero area as computed in double; the welded-vertex test catches exact repeats.
-        if (repeatsVertex(he, static_cast<uint32_t>(t)) || glm::cross(p1 - p0, p2 - p0) == Vec3(0.0))
+        if (repeatsVertex(he, static_cast<uint32_t>(t)) ||
+            glm::cross(p1 - p0, p2 - p0) == Vec3(0.0))
             ++r.degenerateTriangles;
     }
 
@@ -114,7 +114,8 @@ MeshReport validateMesh(const TriangleMesh& mesh) {
         const uint32_t a = he.origin[h], b = he.origin[HalfEdges::next(h)];
         const DirectedUse ab = directed.find(directedKey(a, b))->second;
         const auto baIt = directed.find(directedKey(b, a));
-        const DirectedUse ba = baIt == directed.end() ? DirectedUse{HalfEdges::kNone, 0} : baIt->second;
+        const DirectedUse ba =
+            baIt == directed.end() ? DirectedUse{HalfEdges::kNone, 0} : baIt->second;
         if (h != std::min(ab.first, ba.first)) continue;  // this undirected edge is counted
         const uint32_t uses = ab.count + ba.count;
         std::optional<EdgeFault> fault;

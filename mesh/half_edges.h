@@ -40,7 +40,7 @@ struct BadEdge {
 };
 
 struct MeshReport {
-    size_t vertices = 0;             ///< distinct positions used by triangles
+    size_t vertices = 0;  ///< distinct positions used by triangles
     size_t triangles = 0;
     size_t boundaryEdges = 0;        ///< edges of exactly one triangle
     size_t nonManifoldEdges = 0;     ///< edges of more than two triangles

@@ -4,9 +4,9 @@
 #include "mesh/mesh_loader.h"
 #include "mesh/mesh_loader_truncation.h"
 
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include <glm/glm.hpp>
 
@@ -78,7 +78,9 @@ void collect(const aiScene& scene, const aiNode& node, const glm::dmat4& parent,
     }
 }
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 /// Position, normal and UV of one vertex, compared exactly (with -0 equal to +0).
 struct VertexKey {
@@ -160,14 +162,18 @@ TriangleMesh loadMesh(const std::string& path) {
             for (int c = 0; c < 3; ++c) {
                 const unsigned i = face.mIndices[c];
                 if (i >= m.mNumVertices)
-                    fail(path, "vertex index " + std::to_string(i) + " out of range (the mesh has " +
-                                   std::to_string(m.mNumVertices) + " vertices)");
+                    fail(path, "vertex index " + std::to_string(i) +
+                                   " out of range (the mesh has " + std::to_string(m.mNumVertices) +
+                                   " vertices)");
                 if (local[i] == std::numeric_limits<uint32_t>::max()) {
                     const aiVector3D& a = m.mVertices[i];
                     const Vec3 raw(a.x, a.y, a.z);
-                    if (!finite(raw)) fail(path, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+                    if (!finite(raw))
+                        fail(path, "vertex " + std::to_string(i) + " has a non-finite coordinate");
                     const Vec3 pos = Vec3(p.transform.worldFromMesh * glm::dvec4(raw, 1.0));
-                    if (!finite(pos)) fail(path, "vertex " + std::to_string(i) + " is not finite once placed by its node");
+                    if (!finite(pos))
+                        fail(path, "vertex " + std::to_string(i) +
+                                       " is not finite once placed by its node");
                     VertexKey key{{pos.x, pos.y, pos.z, 0, 0, 0, 0, 0}};
                     Vec3 normal(0.0);
                     std::array<double, 2> uv{0.0, 0.0};
@@ -184,7 +190,8 @@ TriangleMesh loadMesh(const std::string& path) {
                         uv = {std::isfinite(t.x) ? t.x : 0.0, std::isfinite(t.y) ? t.y : 0.0};
                         key.v[6] = uv[0], key.v[7] = uv[1];
                     }
-                    auto [it, inserted] = joined.try_emplace(key, static_cast<uint32_t>(out.positions.size()));
+                    auto [it, inserted] =
+                        joined.try_emplace(key, static_cast<uint32_t>(out.positions.size()));
                     if (inserted) {
                         if (out.positions.size() == std::numeric_limits<uint32_t>::max())
                             fail(path, "more than 2^32 - 1 vertices");

@@ -28,9 +28,9 @@ std::optional<std::string> stlTruncation(const std::string& data) {
     std::memcpy(&facets, data.data() + 80, 4);  // little-endian by the format, as is x86-64
     const uint64_t needed = 84 + 50 * uint64_t(facets);
     if (data.size() < needed)
-        return "truncated binary STL: the header declares " + std::to_string(facets) +
-               " facets (" + std::to_string(needed) + " bytes) but the file has " +
-               std::to_string(data.size()) + " bytes";
+        return "truncated binary STL: the header declares " + std::to_string(facets) + " facets (" +
+               std::to_string(needed) + " bytes) but the file has " + std::to_string(data.size()) +
+               " bytes";
     return std::nullopt;
 }
 
@@ -38,8 +38,8 @@ std::optional<std::string> stlTruncation(const std::string& data) {
 uint64_t plyTypeSize(const std::string& type) {
     if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
     if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" ||
-        type == "float" || type == "float32")
+    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
+        type == "float32")
         return 4;
     if (type == "double" || type == "float64") return 8;
     return 0;
@@ -121,7 +121,8 @@ std::optional<std::string> plyTruncation(const std::string& data) {
                 int64_t n = 0;
                 for (uint64_t i = 0; i < p.countSize; ++i)
                     n |= int64_t(b[bigEndian ? p.countSize - 1 - i : i]) << (8 * i);
-                if (p.countSigned && (n >> (8 * p.countSize - 1)) & 1) n -= int64_t(1) << (8 * p.countSize);
+                if (p.countSigned && (n >> (8 * p.countSize - 1)) & 1)
+                    n -= int64_t(1) << (8 * p.countSize);
                 if (n < 0) return "negative list length in " + e.name + " " + std::to_string(row);
                 pos += p.countSize;
                 if ((size - pos) / p.size < uint64_t(n)) return truncated(e, row);

@@ -3,7 +3,7 @@
 // An open mesh is a surface: it is met, never entered, and faces every ray.
 #include "mesh/mesh_shape.h"
 
-#include "csg/primitive.h"
+#include "csg/primitives/primitive.h"
 #include "mesh/watertight_triangle.h"
 
 #include <vector>
@@ -109,8 +109,8 @@ private:
         const auto& tri = mShape->mesh().triangles[triangle];
         const auto& pos = mShape->mesh().positions;
         TriangleIntersection x;
-        if (intersectWatertight(ShearedRay(ray), pos[tri[0]], pos[tri[1]], pos[tri[2]], -kInf,
-                                kInf, x))
+        if (intersectWatertight(ShearedRay(ray), pos[tri[0]], pos[tri[1]], pos[tri[2]], -kInf, kInf,
+                                x))
             return x.entering;
         return glm::dot(ray.dir, mShape->faceNormal(triangle)) < 0.0;
     }

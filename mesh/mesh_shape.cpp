@@ -41,8 +41,8 @@ Vec3 MeshShape::shadingNormal(uint32_t triangle, const Vec3& p, bool smooth) con
     const auto& t = mMesh.triangles[triangle];
     const Vec3 &a = mMesh.positions[t[0]], &b = mMesh.positions[t[1]], &c = mMesh.positions[t[2]];
     const double f2 = faceLength * faceLength;
-    const double w1 = glm::dot(glm::cross(p - a, c - a), face) / f2;   // weight of b
-    const double w2 = glm::dot(glm::cross(b - a, p - a), face) / f2;   // weight of c
+    const double w1 = glm::dot(glm::cross(p - a, c - a), face) / f2;  // weight of b
+    const double w2 = glm::dot(glm::cross(b - a, p - a), face) / f2;  // weight of c
     const double w0 = 1.0 - w1 - w2;
     Vec3 n = w0 * mMesh.normals[t[0]] + w1 * mMesh.normals[t[1]] + w2 * mMesh.normals[t[2]];
     const double len = glm::length(n);
@@ -118,8 +118,8 @@ Interval MeshShape::range(const Interval& x, const Interval& y, const Interval& 
     // what the point moves (it is 1-Lipschitz). `err` covers rounding in r and in d: each is
     // a few operations on coordinates no larger than `scale`, so 2^-40·scale is generous.
     const double r = glm::length(half) * (1.0 + 0x1p-50);
-    const double scale = maxAbs(center) + maxAbs(half) + maxAbs(mBvh.bounds().lo) +
-                         maxAbs(mBvh.bounds().hi);
+    const double scale =
+        maxAbs(center) + maxAbs(half) + maxAbs(mBvh.bounds().lo) + maxAbs(mBvh.bounds().hi);
     const double err = 0x1p-40 * scale;
     const double hi = d + r + err;
     const double lo = d - r - err;

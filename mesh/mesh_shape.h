@@ -1,13 +1,13 @@
 /// @file mesh/mesh_shape.h
 /// @brief A loaded mesh ready for tracing: its triangles, their BVH, its validation report
-/// (mesh/half_edges.h), and its implicit form as a field (csg/scalar_field.h): the signed
+/// (mesh/half_edges.h), and its implicit form as a field (csg/tape/scalar_field.h): the signed
 /// distance to the triangles for a solid (negative inside, by the parity of a ray's crossings,
 /// which the watertight test makes exact), the unsigned distance for an open surface.
 /// One shape is shared by every instance of its file in a scene.
 #pragma once
 
-#include "csg/node_kind.h"
-#include "csg/scalar_field.h"
+#include "csg/tape/scalar_field.h"
+#include "csg/tree/node_kind.h"
 #include "mesh/half_edges.h"
 #include "mesh/triangle_bvh.h"
 

@@ -42,8 +42,10 @@ void TriangleBvh::allCrossings(const Ray& ray, double tmin, double tmax,
     out.clear();
     if (mWide.empty()) return;
     const bvh4::View v{mWide.data(), mNodes.data(), mPacks.data()};
-    if (useAvx2(mSimd)) bvh4::avx2::allCrossings(v, ray, tmin, tmax, out, stats);
-    else bvh4::allCrossings<bvh4::ScalarLanes>(v, ray, tmin, tmax, out, stats);
+    if (useAvx2(mSimd))
+        bvh4::avx2::allCrossings(v, ray, tmin, tmax, out, stats);
+    else
+        bvh4::allCrossings<bvh4::ScalarLanes>(v, ray, tmin, tmax, out, stats);
     std::sort(out.begin(), out.end(), [](const TriangleCrossing& a, const TriangleCrossing& b) {
         return a.t < b.t || (a.t == b.t && a.triangle < b.triangle);
     });

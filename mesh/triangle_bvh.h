@@ -47,8 +47,8 @@ struct TriangleCrossing {
 
 /// Build settings; the defaults are what kerf uses.
 struct BvhBuildOptions {
-    int bins = 32;          ///< SAH bins over the centroids' extent along each axis
-    int maxLeafSize = 8;    ///< a leaf never holds more triangles than this
+    int bins = 32;              ///< SAH bins over the centroids' extent along each axis
+    int maxLeafSize = 8;        ///< a leaf never holds more triangles than this
     int parallelAbove = 16384;  ///< subtrees with more triangles are built as TBB tasks
     /// SAH cost of a walk step, in triangle tests: 3, as four triangles are tested at once
     /// (sphere +8% primary rays, city unchanged; bench/bvh_bench.cpp --traversal-cost).
@@ -82,14 +82,14 @@ public:
     /// out, which is cleared first), each triangle once even where it is split over several
     /// leaves. A ray through an edge or vertex crosses every triangle that shares it, so it may
     /// report one surface crossing more than once at the same t.
-    void allCrossings(const Ray& ray, double tmin, double tmax,
-                      std::vector<TriangleCrossing>& out, BvhStats& stats) const;
+    void allCrossings(const Ray& ray, double tmin, double tmax, std::vector<TriangleCrossing>& out,
+                      BvhStats& stats) const;
 
     /// The point of the triangles nearest to p, if one lies within maxDistance: its distance
     /// and its triangle (ties go to the first the walk meets). The walk visits nodes nearest
     /// first and skips those farther than the best so far (mesh/triangle_bvh_nearest.cpp).
-    bool nearestTriangle(const Vec3& p, double maxDistance, double& distance,
-                         uint32_t& triangle, BvhStats& stats) const;
+    bool nearestTriangle(const Vec3& p, double maxDistance, double& distance, uint32_t& triangle,
+                         BvhStats& stats) const;
 
     size_t triangleCount() const { return mTriangleCount; }
     size_t nodeCount() const { return mNodes.size(); }
@@ -106,13 +106,15 @@ public:
     static_assert(sizeof(Node) == 32, "two nodes per cache line");
     /// Deepest walk the fixed stack allows; the build splits at the median below this depth.
     static constexpr int kMaxDepth = 60;
-    struct Tri { double p[3][3]; };  ///< vertices as plain arrays (see watertight_triangle.h)
+    struct Tri {
+        double p[3][3];
+    };  ///< vertices as plain arrays (see watertight_triangle.h)
 
 private:
     std::vector<Node> mNodes;
     /// Triangle vertices in leaf order; a split triangle has a slot in each of its leaves.
     std::vector<Tri> mTris;
-    std::vector<uint32_t> mTriangleIndex;    ///< the mesh's index of each slot of mTris
+    std::vector<uint32_t> mTriangleIndex;  ///< the mesh's index of each slot of mTris
     size_t mTriangleCount = 0;
     Bounds3 mBounds;
     std::vector<bvh4::WideNode> mWide;  ///< mNodes collapsed 4-wide: the ray walks' tree

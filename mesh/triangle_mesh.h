@@ -16,9 +16,9 @@ namespace kerf {
 struct TriangleMesh {
     std::vector<Vec3> positions;
     std::vector<std::array<uint32_t, 3>> triangles;
-    std::vector<Vec3> normals;                ///< per vertex, or empty
-    std::vector<std::array<double, 2>> uvs;   ///< per vertex, or empty
-    std::string source;                       ///< the file it came from, for messages
+    std::vector<Vec3> normals;               ///< per vertex, or empty
+    std::vector<std::array<double, 2>> uvs;  ///< per vertex, or empty
+    std::string source;                      ///< the file it came from, for messages
 };
 
 /// The box around every vertex a triangle uses (empty for a mesh without triangles).

@@ -82,9 +82,11 @@ inline double edgeFunction(double px, double py, double qx, double qy) {
 /// frame: over a closed mesh it is entered exactly as often as it is left. Vertices as plain
 /// arrays: the permuted axes are then indexed without glm's switch.
 /// Always inlined: the BVH's walks call it in their innermost loop.
-__attribute__((always_inline)) inline bool intersectWatertight(
-    const ShearedRay& r, const double* p0, const double* p1, const double* p2, double tmin,
-    double tmax, TriangleIntersection& out) {
+__attribute__((always_inline)) inline bool intersectWatertight(const ShearedRay& r,
+                                                               const double* p0, const double* p1,
+                                                               const double* p2, double tmin,
+                                                               double tmax,
+                                                               TriangleIntersection& out) {
     const double a[3] = {p0[0] - r.origin[0], p0[1] - r.origin[1], p0[2] - r.origin[2]};
     const double b[3] = {p1[0] - r.origin[0], p1[1] - r.origin[1], p1[2] - r.origin[2]};
     const double c[3] = {p2[0] - r.origin[0], p2[1] - r.origin[1], p2[2] - r.origin[2]};
@@ -110,9 +112,8 @@ __attribute__((always_inline)) inline bool intersectWatertight(
 }
 
 /// The same for vertices as vectors.
-inline bool intersectWatertight(const ShearedRay& r, const Vec3& p0, const Vec3& p1,
-                                const Vec3& p2, double tmin, double tmax,
-                                TriangleIntersection& out) {
+inline bool intersectWatertight(const ShearedRay& r, const Vec3& p0, const Vec3& p1, const Vec3& p2,
+                                double tmin, double tmax, TriangleIntersection& out) {
     const double a[3] = {p0.x, p0.y, p0.z}, b[3] = {p1.x, p1.y, p1.z}, c[3] = {p2.x, p2.y, p2.z};
     return intersectWatertight(r, a, b, c, tmin, tmax, out);
 }

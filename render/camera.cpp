@@ -42,9 +42,9 @@ Ray Camera::rayThrough(double x, double y, double lensU, double lensV) const {
         r = b;
         phi = 2.0 * quarter - quarter * (a / b);
     }
-    const Vec3 offset =
-        mLensRadius * r * (std::cos(phi) * mRight + std::sin(phi) * mUp);
-    const Vec3 focus = pinhole.origin + (mFocusDistance / glm::dot(pinhole.dir, mForward)) * pinhole.dir;
+    const Vec3 offset = mLensRadius * r * (std::cos(phi) * mRight + std::sin(phi) * mUp);
+    const Vec3 focus =
+        pinhole.origin + (mFocusDistance / glm::dot(pinhole.dir, mForward)) * pinhole.dir;
     const Vec3 origin = mEye + offset;
     return Ray{origin, glm::normalize(focus - origin)};
 }
@@ -65,7 +65,7 @@ Bounds3 Camera::frustumSlice(double x0, double y0, double x1, double y1, double 
     // d = v/|v| with v = f + sx·r + sy·u and |v|² = 1 + sx² + sy² (f, r, u orthonormal), so
     // t·d = s·v with s = t/|v| in [ta/|v|max, tb/|v|min]; s·v for v in the rectangle and s in
     // that range lies in the hull of the eight scaled corners.
-    auto nearestToZero = [](const double (&r)[2]) { return std::clamp(0.0, r[0], r[1]); };
+    auto nearestToZero = [](const double(&r)[2]) { return std::clamp(0.0, r[0], r[1]); };
     const double nx = nearestToZero(sx), ny = nearestToZero(sy);
     const double fx = std::max(std::fabs(sx[0]), std::fabs(sx[1]));
     const double fy = std::max(std::fabs(sy[0]), std::fabs(sy[1]));

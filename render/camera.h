@@ -1,10 +1,11 @@
 /// @file render/camera.h
-/// @brief The camera (a pinhole, or a thin lens): film positions to world rays, by exactly the formula of the
-/// documentation (right-handed world, vertical field of view, pixel (0, 0) at the top left).
+/// @brief The camera (a pinhole, or a thin lens): film positions to world rays, by exactly the
+/// formula of the documentation (right-handed world, vertical field of view, pixel (0, 0) at the
+/// top left).
 #pragma once
 
-#include "scene/scene.h"
 #include "csg/types.h"
+#include "scene/scene.h"
 
 namespace kerf {
 

@@ -27,8 +27,10 @@ double ReconstructionFilter::weight1D(double x) const {
             constexpr double B = 1.0 / 3.0, C = 1.0 / 3.0;
             const double x2 = x * x, x3 = x2 * x;
             if (x < 1.0)
-                return ((12 - 9 * B - 6 * C) * x3 + (-18 + 12 * B + 6 * C) * x2 + (6 - 2 * B)) / 6.0;
-            return ((-B - 6 * C) * x3 + (6 * B + 30 * C) * x2 + (-12 * B - 48 * C) * x + (8 * B + 24 * C)) /
+                return ((12 - 9 * B - 6 * C) * x3 + (-18 + 12 * B + 6 * C) * x2 + (6 - 2 * B)) /
+                       6.0;
+            return ((-B - 6 * C) * x3 + (6 * B + 30 * C) * x2 + (-12 * B - 48 * C) * x +
+                    (8 * B + 24 * C)) /
                    6.0;
         }
     }
@@ -36,13 +38,18 @@ double ReconstructionFilter::weight1D(double x) const {
 }
 
 TileFilm::TileFilm(int x0, int y0, int x1, int y1, int margin)
-    : mX0(x0 - margin), mY0(y0 - margin), mWidth(x1 - x0 + 2 * margin), mHeight(y1 - y0 + 2 * margin),
+    : mX0(x0 - margin),
+      mY0(y0 - margin),
+      mWidth(x1 - x0 + 2 * margin),
+      mHeight(y1 - y0 + 2 * margin),
       mSums(size_t(mWidth) * size_t(mHeight) * 4, 0.0) {}
 
 void TileFilm::add(double fx, double fy, const Vec3& radiance, const ReconstructionFilter& filter) {
     // Pixel k's centre is k + 0.5: the pixels within the radius of the sample.
-    const int kx0 = int(std::ceil(fx - filter.radius - 0.5)), kx1 = int(std::floor(fx + filter.radius - 0.5));
-    const int ky0 = int(std::ceil(fy - filter.radius - 0.5)), ky1 = int(std::floor(fy + filter.radius - 0.5));
+    const int kx0 = int(std::ceil(fx - filter.radius - 0.5)),
+              kx1 = int(std::floor(fx + filter.radius - 0.5));
+    const int ky0 = int(std::ceil(fy - filter.radius - 0.5)),
+              ky1 = int(std::floor(fy + filter.radius - 0.5));
     for (int ky = std::max(ky0, mY0); ky <= std::min(ky1, mY0 + mHeight - 1); ++ky) {
         const double wy = filter.weight1D(ky + 0.5 - fy);
         if (wy == 0.0) continue;

@@ -9,9 +9,9 @@
 /// image does not depend on the thread count or schedule.
 #pragma once
 
+#include "csg/types.h"
 #include "io/image.h"
 #include "scene/sampling.h"
-#include "csg/types.h"
 
 #include <vector>
 

@@ -10,7 +10,7 @@ namespace kerf {
 
 Vec3 perpendicularTo(const Vec3& a) {
     // The axis a is least aligned with gives a well-conditioned cross product.
-    const Vec3 other = std::fabs(a.x) < 0.57 ? Vec3(1.0, 0.0, 0.0)
+    const Vec3 other = std::fabs(a.x) < 0.57   ? Vec3(1.0, 0.0, 0.0)
                        : std::fabs(a.y) < 0.57 ? Vec3(0.0, 1.0, 0.0)
                                                : Vec3(0.0, 0.0, 1.0);
     return glm::normalize(glm::cross(a, other));
@@ -54,8 +54,7 @@ Vec3 sampleConeAbove(const Vec3& axis, const Vec3& side, double halfAngleDegrees
     return dir;
 }
 
-LightSample sampleLight(const Light& light, const Vec3& p, const Vec3& origin,
-                        const SubPixel& u) {
+LightSample sampleLight(const Light& light, const Vec3& p, const Vec3& origin, const SubPixel& u) {
     const double pi = glm::pi<double>();
     LightSample s;
     switch (light.kind) {

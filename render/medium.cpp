@@ -122,8 +122,8 @@ double marchStep(const Medium& medium) {
     return medium.step > 0.0 ? medium.step : glm::length(medium.bounds.extent()) / 128.0;
 }
 
-double marchTransmittance(const Medium& medium, const Ray& ray, const MediumPath& path,
-                          double tEnd, double step, double* tauError) {
+double marchTransmittance(const Medium& medium, const Ray& ray, const MediumPath& path, double tEnd,
+                          double step, double* tauError) {
     double tau = 0.0, err = 0.0;
     for (int i = 0; i < path.size(); ++i) {
         const MediumPiece& p = path[i];
@@ -155,7 +155,8 @@ double mediumTransmittance(const Medium& medium, const Ray& ray, double tmax, Me
     switch (medium.method) {
         case MediumMethod::Ratio: return ratioTracking(medium, ray, path, tmax, rng);
         case MediumMethod::Delta: return deltaTracking(medium, ray, path, tmax, rng);
-        case MediumMethod::March: return marchTransmittance(medium, ray, path, tmax, marchStep(medium));
+        case MediumMethod::March:
+            return marchTransmittance(medium, ray, path, tmax, marchStep(medium));
     }
     return 1.0;
 }
@@ -164,7 +165,7 @@ bool sampleMajorantDistance(const MediumPath& path, double u, double& t, double&
     const double total = path.majorantDepth();
     if (!(total > 0.0)) return false;
     const double mass = -std::expm1(-total);  // P(a majorant collision within the path)
-    double target = -std::log1p(-u * mass);    // the optical depth of the collision
+    double target = -std::log1p(-u * mass);   // the optical depth of the collision
     double before = 0.0;
     for (int i = 0; i < path.size(); ++i) {
         const MediumPiece& p = path[i];

@@ -84,8 +84,8 @@ double deltaTracking(const Medium& medium, const Ray& ray, const MediumPath& pat
 /// (0 once the depth passes kMarchOpaqueDepth, unless tauError is asked for).
 /// tauError (optional) receives the bound Σ (hi − lo)·h on |τ − τ_h| from the range over each
 /// step (so |T − T_h| ≤ T_h·(e^bound − 1)).
-double marchTransmittance(const Medium& medium, const Ray& ray, const MediumPath& path,
-                          double tEnd, double step, double* tauError = nullptr);
+double marchTransmittance(const Medium& medium, const Ray& ray, const MediumPath& path, double tEnd,
+                          double step, double* tauError = nullptr);
 /// The method's step: medium.step, or the box's diagonal / 128 when it is 0.
 double marchStep(const Medium& medium);
 

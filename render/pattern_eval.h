@@ -3,7 +3,7 @@
 /// gradient noise they use.
 #pragma once
 
-#include "csg/noise.h"
+#include "csg/tape/noise.h"
 #include "scene/pattern.h"
 #include "scene/scene.h"
 
@@ -51,8 +51,8 @@ struct ImageCoordinates {
     double dua = 0, dva = 0;  ///< along a
     double dub = 0, dvb = 0;  ///< along b
 };
-ImageCoordinates mapToImage(ImageMap::Mapping mapping, const Vec3& q, const Vec3& a,
-                            const Vec3& b, const Vec3& nq);
+ImageCoordinates mapToImage(ImageMap::Mapping mapping, const Vec3& q, const Vec3& a, const Vec3& b,
+                            const Vec3& nq);
 
 /// The pattern's own scalar in [0, 1] at p, the weight of b against a (0: a, 1: b) before its
 /// entries are looked at: a bump map's height (filtered over the footprint like the colour).

@@ -2,7 +2,6 @@
 /// @brief Tiles of camera rays proved empty slice by slice, split where they cannot be.
 #include "render/primary_beams.h"
 
-
 #include <algorithm>
 #include <cmath>
 

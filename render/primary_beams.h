@@ -8,9 +8,9 @@
 /// distance before which no point of any ray through the block is inside any object.
 #pragma once
 
-#include "csg/node.h"
+#include "csg/tree/node.h"
 #include "render/camera.h"
-#include "volume/octree.h"
+#include "volume/octree/octree.h"
 
 #include <cstdint>
 #include <optional>
@@ -30,9 +30,9 @@ std::optional<BeamMode> parseBeamMode(const std::string& name);
 
 /// What the beams cost and gained (`--stats`).
 struct BeamStats {
-    uint64_t slices = 0;        ///< interval classifications of frustum slices
-    uint64_t pixels = 0;        ///< pixels given a start
-    double startSum = 0.0;      ///< sum of the starts given (mean = startSum / pixels)
+    uint64_t slices = 0;    ///< interval classifications of frustum slices
+    uint64_t pixels = 0;    ///< pixels given a start
+    double startSum = 0.0;  ///< sum of the starts given (mean = startSum / pixels)
     BeamStats& operator+=(const BeamStats& o) {
         slices += o.slices;
         pixels += o.pixels;

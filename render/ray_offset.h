@@ -17,13 +17,13 @@
 /// by the same factor and renders the same. Lengths that matter for shading (Beer absorption,
 /// mist) are measured from p itself, not from the moved origin, so the offset does not bias them.
 ///
-/// The bound itself (hitErrorBound) lives beside Hit in csg/scene_geometry.h: the nearest-hit
+/// The bound itself (hitErrorBound) lives beside Hit in csg/bvh/scene_geometry.h: the nearest-hit
 /// search uses it too, to tell when surfaces of two objects coincide. A hit with such a twin
 /// carries a relError widened by their distance, so the new ray starts past both surfaces and
 /// neither re-hits the one behind it nor misses the one it is in.
 #pragma once
 
-#include "csg/scene_geometry.h"
+#include "csg/bvh/scene_geometry.h"
 
 namespace kerf {
 

@@ -24,9 +24,9 @@ PixelRect tileRect(int tile, int width, int height) {
 
 std::vector<int> regionTiles(int width, int height, const PixelRect& region, int margin) {
     const int tilesAcross = (width + kTileSize - 1) / kTileSize;
-    const PixelRect reach = intersect(
-        {region.x0 - margin, region.y0 - margin, region.x1 + margin, region.y1 + margin},
-        {0, 0, width, height});
+    const PixelRect reach =
+        intersect({region.x0 - margin, region.y0 - margin, region.x1 + margin, region.y1 + margin},
+                  {0, 0, width, height});
     std::vector<int> tiles;
     if (reach.empty()) return tiles;
     for (int ty = reach.y0 / kTileSize; ty <= (reach.y1 - 1) / kTileSize; ++ty)

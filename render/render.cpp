@@ -2,8 +2,8 @@
 /// @brief The render loop: tiles in parallel, per-pixel samples, film and auxiliary outputs.
 #include "render/render.h"
 
-#include "csg/motion.h"
-#include "csg/scene_geometry.h"
+#include "csg/bvh/scene_geometry.h"
+#include "csg/tree/motion.h"
 #include "render/camera.h"
 #include "render/film.h"
 #include "render/sampler.h"
@@ -45,15 +45,15 @@ struct FrameJob {
     const SceneGeometry& geometry;
     const WhittedIntegrator& integrator;
     const PrimaryBeams* beams;  ///< null when camera rays start at the eye
-    RenderResult& result;  ///< images of the region's size
-    int width, height;     ///< the full image
-    PixelRect region;      ///< the pixels kept
-    PixelRect traced;      ///< the region and the pixels whose samples the filter spreads into it
+    RenderResult& result;       ///< images of the region's size
+    int width, height;          ///< the full image
+    PixelRect region;           ///< the pixels kept
+    PixelRect traced;  ///< the region and the pixels whose samples the filter spreads into it
     bool wantDepth;
     bool wantNormal;
-    ReconstructionFilter filter;  ///< box: each pixel averages its own samples
-    double noise;                 ///< adaptive sampling's target standard error; 0: off
-    std::vector<TileFilm>* films;  ///< one per tile, for filters wider than the box
+    ReconstructionFilter filter;       ///< box: each pixel averages its own samples
+    double noise;                      ///< adaptive sampling's target standard error; 0: off
+    std::vector<TileFilm>* films;      ///< one per tile, for filters wider than the box
     double shutterOpen, shutterClose;  ///< scene times; equal: one instant, no motion blur
 };
 
@@ -93,7 +93,8 @@ void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContex
         SubPixel at;  // the film position within the pixel
         if (!centreServes) {
             at = job.sampler.position(pixel, s);
-            const SubPixel lensAt = lens ? job.sampler.get2D(pixel, s, sample_dim::kLens) : SubPixel{};
+            const SubPixel lensAt =
+                lens ? job.sampler.get2D(pixel, s, sample_dim::kLens) : SubPixel{};
             ray = job.camera.rayThrough(i + at.x, j + at.y, lensAt.x, lensAt.y);
         }
         // Each sample sees the scene at its own time in the shutter interval.
@@ -115,7 +116,8 @@ void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContex
             lumSum += l;
             lumSum2 += l * l;
             if (taken >= std::min(kMinAdaptiveSamples, count) && taken >= 2) {
-                const double variance = std::max(0.0, (lumSum2 - lumSum * lumSum / taken) / (taken - 1));
+                const double variance =
+                    std::max(0.0, (lumSum2 - lumSum * lumSum / taken) / (taken - 1));
                 if (std::sqrt(variance / taken) < job.noise) break;
             }
         }
@@ -156,7 +158,8 @@ void renderTile(const FrameJob& job, int tile, ShadingContext& ctx, BeamStats& b
     const PixelRect part = intersect(t, job.traced);
     for (int j = part.y0; j < part.y1; ++j)
         for (int i = part.x0; i < part.x1; ++i)
-            renderPixel(job, i, j, starts[(j - y0) * (x1 - x0) + (i - x0)], ctx, film, samplesTaken);
+            renderPixel(job, i, j, starts[(j - y0) * (x1 - x0) + (i - x0)], ctx, film,
+                        samplesTaken);
 }
 
 /// Calls the user's progress callback from the tile loop: rarely, and from one thread at a
@@ -230,8 +233,7 @@ RenderResult render(const Scene& input, const RenderOptions& options) {
     if (options.wantNormal) result.normal = Image(region.width(), region.height(), 3);
 
     const Camera camera(scene.camera, width, height);
-    tbb::task_arena arena(options.threads > 0 ? options.threads
-                                              : int(tbb::task_arena::automatic));
+    tbb::task_arena arena(options.threads > 0 ? options.threads : int(tbb::task_arena::automatic));
     const auto accelStart = Clock::now();
     OctreeOptions octreeOptions;
     octreeOptions.depth = options.accelDepth;
@@ -239,9 +241,7 @@ RenderResult render(const Scene& input, const RenderOptions& options) {
     octreeOptions.footprintPerDistance =
         2.0 * std::tan(0.5 * scene.camera.fovDegrees * glm::pi<double>() / 180.0) / height;
     AcceleratedObjects accelerated;
-    arena.execute([&] {
-        accelerated = accelerate(scene.objects, options.accel, octreeOptions);
-    });
+    arena.execute([&] { accelerated = accelerate(scene.objects, options.accel, octreeOptions); });
     result.stats.secondsAccel = secondsSince(accelStart);
     // Objects marked no_shadow are left out of a second geometry that shadow rays use.
     std::optional<SceneGeometry> shadowGeometry;
@@ -264,12 +264,11 @@ RenderResult render(const Scene& input, const RenderOptions& options) {
     const bool useBeams =
         beams.enabled() && scene.camera.aperture == 0.0 &&
         (options.beams == BeamMode::On ||
-                            (options.beams == BeamMode::Auto &&
-                             beamsPay(scene.objects, octreeOptions)));
+         (options.beams == BeamMode::Auto && beamsPay(scene.objects, octreeOptions)));
     result.stats.beamsUsed = useBeams;
     const FilterKind filterKind = options.filter.value_or(scene.settings.filter);
-    const int tileCount = ((width + kTileSize - 1) / kTileSize) *
-                          ((height + kTileSize - 1) / kTileSize);
+    const int tileCount =
+        ((width + kTileSize - 1) / kTileSize) * ((height + kTileSize - 1) / kTileSize);
     const int margin = filterMargin(filterKind);
     const std::vector<int> tiles = regionTiles(width, height, region, margin);
     std::vector<TileFilm> films;
@@ -311,41 +310,43 @@ RenderResult render(const Scene& input, const RenderOptions& options) {
     // With a shared tile counter (app/mpi), each thread takes tiles until none is left.
     tbb::enumerable_thread_specific<std::vector<int>> taken;
     std::mutex counterMutex;
-    if (options.nextTile) arena.execute([&] {
-        tbb::parallel_for(
-            tbb::blocked_range<int>(0, arena.max_concurrency(), 1),
-            [&](const tbb::blocked_range<int>&) {
-                ShadingContext& ctx = contexts.local();
-                for (;;) {
-                    int n;
-                    {
-                        std::lock_guard<std::mutex> lock(counterMutex);
-                        n = options.nextTile();
+    if (options.nextTile)
+        arena.execute([&] {
+            tbb::parallel_for(
+                tbb::blocked_range<int>(0, arena.max_concurrency(), 1),
+                [&](const tbb::blocked_range<int>&) {
+                    ShadingContext& ctx = contexts.local();
+                    for (;;) {
+                        int n;
+                        {
+                            std::lock_guard<std::mutex> lock(counterMutex);
+                            n = options.nextTile();
+                        }
+                        if (n < 0 || size_t(n) >= tiles.size()) break;
+                        renderTile(job, tiles[size_t(n)], ctx, beamStats.local(), samples.local());
+                        taken.local().push_back(tiles[size_t(n)]);
+                        progress.tileDone();
                     }
-                    if (n < 0 || size_t(n) >= tiles.size()) break;
-                    renderTile(job, tiles[size_t(n)], ctx, beamStats.local(), samples.local());
-                    taken.local().push_back(tiles[size_t(n)]);
-                    progress.tileDone();
-                }
-            },
-            tbb::simple_partitioner());
-    });
-    else arena.execute([&] {
-        // One tile per task: tiles are already coarse, and the simple partitioner keeps the
-        // split independent of timing (the image never depends on it, the load balance does).
-        tbb::parallel_for(
-            tbb::blocked_range<int>(0, int(tiles.size()), 1),
-            [&](const tbb::blocked_range<int>& range) {
-                ShadingContext& ctx = contexts.local();
-                BeamStats& beamCounts = beamStats.local();
-                uint64_t& samplesTaken = samples.local();
-                for (int k = range.begin(); k != range.end(); ++k) {
-                    renderTile(job, tiles[size_t(k)], ctx, beamCounts, samplesTaken);
-                    progress.tileDone();
-                }
-            },
-            tbb::simple_partitioner());
-    });
+                },
+                tbb::simple_partitioner());
+        });
+    else
+        arena.execute([&] {
+            // One tile per task: tiles are already coarse, and the simple partitioner keeps the
+            // split independent of timing (the image never depends on it, the load balance does).
+            tbb::parallel_for(
+                tbb::blocked_range<int>(0, int(tiles.size()), 1),
+                [&](const tbb::blocked_range<int>& range) {
+                    ShadingContext& ctx = contexts.local();
+                    BeamStats& beamCounts = beamStats.local();
+                    uint64_t& samplesTaken = samples.local();
+                    for (int k = range.begin(); k != range.end(); ++k) {
+                        renderTile(job, tiles[size_t(k)], ctx, beamCounts, samplesTaken);
+                        progress.tileDone();
+                    }
+                },
+                tbb::simple_partitioner());
+        });
     progress.finished();
 
     for (const ShadingContext& ctx : contexts) {

@@ -2,12 +2,12 @@
 /// @brief The front door of render/: a Scene and options in, images and statistics out.
 #pragma once
 
-#include "scene/scene.h"
 #include "csg/trace_context.h"
 #include "io/image.h"
 #include "render/film.h"
 #include "render/primary_beams.h"
-#include "volume/accelerate.h"
+#include "scene/scene.h"
+#include "volume/octree/accelerate.h"
 
 #include <functional>
 #include <optional>
@@ -45,20 +45,20 @@ std::vector<int> regionTiles(int width, int height, const PixelRect& region, int
 int filterMargin(FilterKind kind);
 
 struct RenderOptions {
-    int width = 0;        ///< 0: take the scene's render settings
-    int height = 0;       ///< 0: take the scene's render settings
-    int spp = 0;          ///< 0: take the scene's render settings
+    int width = 0;                       ///< 0: take the scene's render settings
+    int height = 0;                      ///< 0: take the scene's render settings
+    int spp = 0;                         ///< 0: take the scene's render settings
     std::optional<SamplerKind> sampler;  ///< unset: take the scene's render settings
     std::optional<FilterKind> filter;    ///< unset: take the scene's render settings
-    double noise = -1.0;  ///< adaptive sampling's target; < 0: take the scene's render settings
-    int threads = 0;      ///< 0: all hardware threads
-    double tolerance = 0; ///< relative hit-distance tolerance; 0: derived from the pixel footprint
+    double noise = -1.0;   ///< adaptive sampling's target; < 0: take the scene's render settings
+    int threads = 0;       ///< 0: all hardware threads
+    double tolerance = 0;  ///< relative hit-distance tolerance; 0: derived from the pixel footprint
     TraceMethod method = TraceMethod::Closed;  ///< how primitives find crossings
-    Accel accel = Accel::Auto;  ///< acceleration structures (volume/accelerate.h)
-    int accelDepth = 0;         ///< the octree's finest level; 0: from the pixel footprint
+    Accel accel = Accel::Auto;        ///< acceleration structures (volume/octree/accelerate.h)
+    int accelDepth = 0;               ///< the octree's finest level; 0: from the pixel footprint
     BeamMode beams = BeamMode::Auto;  ///< coherent camera rays (render/primary_beams.h)
-    bool wantDepth = false;   ///< fill RenderResult::depth
-    bool wantNormal = false;  ///< fill RenderResult::normal
+    bool wantDepth = false;           ///< fill RenderResult::depth
+    bool wantNormal = false;          ///< fill RenderResult::normal
     /// Called now and then with the fraction done (0..1); may be empty.
     std::function<void(double)> progress;
     /// Only these pixels of the full image (`--region`); each equal, bit for bit, to the same
@@ -79,13 +79,13 @@ struct RenderStats {
     uint64_t reflectionRays = 0;
     uint64_t refractionRays = 0;
     TraceStats trace;
-    OctreeStats octree;       ///< what the octrees cost and hold (none: all zero)
-    bool beamsUsed = false;   ///< whether camera rays started where their beams said
+    OctreeStats octree;      ///< what the octrees cost and hold (none: all zero)
+    bool beamsUsed = false;  ///< whether camera rays started where their beams said
     BeamStats beams;
     double secondsSetup = 0;  ///< parse excluded: camera, acceleration structures
     double secondsAccel = 0;  ///< of secondsSetup, building the octrees
     double secondsTrace = 0;
-    double tolerance = 0;  ///< the relative tolerance in force
+    double tolerance = 0;     ///< the relative tolerance in force
     int samplesPerPixel = 0;  ///< traced per pixel (the requested spp, clamped to the limit)
     SamplerKind sampler = SamplerKind::Jittered;
     FilterKind filter = FilterKind::Box;

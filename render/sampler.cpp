@@ -53,7 +53,8 @@ std::vector<uint32_t> spreadOrderFor(SamplerKind kind, int count, int columns, i
                 y |= uint32_t((i >> (2 * b + 1)) & 1u) << b;
             }
             const uint32_t cx = reverseBits(x, bits), cy = reverseBits(y, bits);
-            if (cx < uint32_t(columns) && cy < uint32_t(rows)) order.push_back(cy * uint32_t(columns) + cx);
+            if (cx < uint32_t(columns) && cy < uint32_t(rows))
+                order.push_back(cy * uint32_t(columns) + cx);
         }
         return order;
     }

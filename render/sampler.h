@@ -8,8 +8,8 @@
 /// is the same bit for bit whatever the thread count.
 #pragma once
 
-#include "scene/limits.h"
 #include "csg/mix_bits.h"
+#include "scene/limits.h"
 #include "scene/sampling.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // Section views: objects cut by half-spaces whose boundaries carry the cap material.
 #include "render/section_cut.h"
 
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 
 namespace kerf {
 namespace {
@@ -27,10 +27,13 @@ Classification classify(const KeptSide& side, const Bounds3& box) {
     if (box.empty()) return Classification::Filled;
     if (side.axis < 0) return side.halfSpace->valueInterval(boxOf(box)).classify();
     const double lo = box.lo[side.axis], hi = box.hi[side.axis];
-    if (side.sign > 0) return lo > side.at ? Classification::Empty
-                              : hi <= side.at ? Classification::Filled : Classification::Ambiguous;
-    return hi < side.at ? Classification::Empty
-           : lo >= side.at ? Classification::Filled : Classification::Ambiguous;
+    if (side.sign > 0)
+        return lo > side.at    ? Classification::Empty
+               : hi <= side.at ? Classification::Filled
+                               : Classification::Ambiguous;
+    return hi < side.at    ? Classification::Empty
+           : lo >= side.at ? Classification::Filled
+                           : Classification::Ambiguous;
 }
 
 KeptSide keptSide(const SectionPlane& plane, int32_t capMaterial) {
@@ -38,7 +41,10 @@ KeptSide keptSide(const SectionPlane& plane, int32_t capMaterial) {
     Vec3 n = plane.normal;
     int nonZero = 0;
     for (int a = 0; a < 3; ++a)
-        if (n[a] != 0.0) { ++nonZero; side.axis = a; }
+        if (n[a] != 0.0) {
+            ++nonZero;
+            side.axis = a;
+        }
     if (nonZero == 1) {
         // The unit normal of a plane across an axis, exactly: n·p ≤ offset is then exact.
         side.sign = n[side.axis] > 0 ? 1.0 : -1.0;
@@ -88,14 +94,15 @@ Scene cutBySections(const Scene& scene) {
         NodePtr kept = object;
         if (!cutters.empty()) {
             // Two operands, the second closed-form only: the intersection searches the object
-            // inside the half-spaces' spans (csg/boolean.cpp, guidedFirstSurface).
-            NodePtr keep = cutters.size() == 1 ? cutters[0]
-                                               : makeBoolean(BoolOp::Intersection, cutters);
+            // inside the half-spaces' spans (csg/tree/boolean.cpp, guidedFirstSurface).
+            NodePtr keep =
+                cutters.size() == 1 ? cutters[0] : makeBoolean(BoolOp::Intersection, cutters);
             kept = makeBoolean(BoolOp::Intersection, {object, keep});
         }
         cut.objects.push_back(std::move(kept));
-        if (flagged) cut.objectFlags.push_back(i < scene.objectFlags.size() ? scene.objectFlags[i]
-                                                                           : ObjectFlags{});
+        if (flagged)
+            cut.objectFlags.push_back(i < scene.objectFlags.size() ? scene.objectFlags[i]
+                                                                   : ObjectFlags{});
     }
     return cut;
 }

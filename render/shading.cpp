@@ -50,9 +50,8 @@ double falloffScale(const Light& light, const Vec3& p) {
                      : light.falloff == Falloff::Linear      ? 1.0
                                                              : 0.0;
     // The irradiance at distance 1 times the falloff's law, over the 1/d² already applied.
-    const double law = light.fadeDistance > 0.0
-                           ? 2.0 / (1.0 + std::pow(d / light.fadeDistance, k))
-                           : std::pow(d, -k);
+    const double law = light.fadeDistance > 0.0 ? 2.0 / (1.0 + std::pow(d / light.fadeDistance, k))
+                                                : std::pow(d, -k);
     return law * d * d;
 }
 
@@ -101,7 +100,8 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene, const SceneGeometry& ge
         if (m.transmit > 0) mAnyTransmissive = true;
     mMedium = scene.medium.enabled();
     for (const Light& light : scene.lights)
-        mLightLattice.push_back(light.samples > 1 ? PixelSampler::latticeGenerator(uint32_t(light.samples)) : 1);
+        mLightLattice.push_back(
+            light.samples > 1 ? PixelSampler::latticeGenerator(uint32_t(light.samples)) : 1);
 }
 
 const Material& WhittedIntegrator::material(int32_t index) const {
@@ -132,13 +132,13 @@ Vec3 WhittedIntegrator::traceCamera(const Ray& ray, ShadingContext& ctx,
 
 Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int depth,
                               const Vec3& weight, uint64_t budget, ShadingContext& ctx,
-                              std::optional<Hit>* firstHit, double tStart,
-                              double travelled) const {
+                              std::optional<Hit>* firstHit, double tStart, double travelled) const {
     const std::optional<Hit> hit = mGeometry.nearestHit(ray, tStart, kInf, ctx.trace);
     if (firstHit) *firstHit = hit;
     if (!hit) {
         const Vec3 d = glm::normalize(ray.dir);
-        return mMedium ? throughMedium(Ray{segmentStart, d}, kInf, missColor(d), depth, ctx) : missColor(d);
+        return mMedium ? throughMedium(Ray{segmentStart, d}, kInf, missColor(d), depth, ctx)
+                       : missColor(d);
     }
 
     const Material& m = material(hit->material);
@@ -151,13 +151,13 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
     if (m.bump && m.bumpDepth != 0.0) {
         // The bumped normal shades; one tilted to face away from the viewer (a bump steeper
         // than the view is grazing) would light the back of the surface, so it is not taken.
-        const Vec3 bumped =
-            bumpedNormal(*m.bump, m.bumpDepth, p, n, err, footprintAt(d, n, travelled + length, ctx));
+        const Vec3 bumped = bumpedNormal(*m.bump, m.bumpDepth, p, n, err,
+                                         footprintAt(d, n, travelled + length, ctx));
         if (glm::dot(bumped, d) < 0.0) n = bumped;
     }
 
-    const Vec3 albedo = m.pattern ? surfaceColor(m, p, err, footprintAt(d, n, travelled + length, ctx))
-                                  : m.color;
+    const Vec3 albedo =
+        m.pattern ? surfaceColor(m, p, err, footprintAt(d, n, travelled + length, ctx)) : m.color;
     Vec3 c = m.emit + (1.0 - m.transmit) * m.ambient * albedo;
     c += directLight(m, albedo, p, n, d, err, depth, ctx);
 
@@ -197,8 +197,9 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
         if (split.refract > 0) {
             ++ctx.rays.refraction;
             if (m.translucent > 0.0)
-                refractDir = sampleConeAbove(refractDir, -n, m.translucent,
-                                         ctx.sample2D(sample_dim::gloss(depth) | kTranslucentDim));
+                refractDir =
+                    sampleConeAbove(refractDir, -n, m.translucent,
+                                    ctx.sample2D(sample_dim::gloss(depth) | kTranslucentDim));
             const Ray r{offsetRayOrigin(p, -n, err), refractDir};
             c += refractWeight * trace(r, p, depth + 1, wRefract, split.refract - 1, ctx, nullptr,
                                        0.0, travelled + length);
@@ -212,8 +213,7 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, const Vec3& segmentStart, int dept
 }
 
 Vec3 WhittedIntegrator::directLight(const Material& m, const Vec3& albedo, const Vec3& p,
-                                    const Vec3& n,
-                                    const Vec3& d, double errorBound, int depth,
+                                    const Vec3& n, const Vec3& d, double errorBound, int depth,
                                     ShadingContext& ctx) const {
     Vec3 sum(0.0);
     const Vec3 origin = offsetRayOrigin(p, n, errorBound);
@@ -278,7 +278,8 @@ Vec3 WhittedIntegrator::transmittance(const Ray& ray, double tmax, ShadingContex
                                       tmax * glm::length(ray.dir), rng);
 }
 
-Vec3 WhittedIntegrator::surfaceTransmittance(const Ray& ray, double tmax, ShadingContext& ctx) const {
+Vec3 WhittedIntegrator::surfaceTransmittance(const Ray& ray, double tmax,
+                                             ShadingContext& ctx) const {
     if (!mAnyTransmissive)
         return mShadowGeometry.occluded(ray, 0.0, tmax, ctx.trace) ? Vec3(0.0) : Vec3(1.0);
 
@@ -289,15 +290,19 @@ Vec3 WhittedIntegrator::surfaceTransmittance(const Ray& ray, double tmax, Shadin
     auto cross = [&](const Boundary& b) {
         if (!b.isSurface() || !(b.t > 0.0 && b.t < tmax)) return;
         const Material& mb = material(b.material);
-        if (mb.transmit <= 0) blocked = true;
-        else pass *= mb.transmit * surfaceColor(mb, ray.at(b.t), 0.0, Footprint{Vec3(0.0), Vec3(0.0), b.normal});
+        if (mb.transmit <= 0)
+            blocked = true;
+        else
+            pass *= mb.transmit *
+                    surfaceColor(mb, ray.at(b.t), 0.0, Footprint{Vec3(0.0), Vec3(0.0), b.normal});
     };
     // Only the spans' extents and materials matter here, within the tolerance.
     const OcclusionScope scope(ctx.trace);
     mShadowGeometry.forEachObjectSpans(ray, 0.0, tmax, ctx.trace, [&](int, const SpanList& spans) {
         for (const Span& s : spans) {
             if (blocked) return false;
-            if (s.in.t == s.out.t) {  // a surface's crossing (csg/surfaces.h): nothing inside
+            if (s.in.t ==
+                s.out.t) {  // a surface's crossing (csg/primitives/surfaces.h): nothing inside
                 cross(s.in);
                 continue;
             }

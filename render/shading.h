@@ -33,11 +33,11 @@
 ///    of ordinary depth.
 #pragma once
 
-#include "scene/scene.h"
-#include "csg/scene_geometry.h"
+#include "csg/bvh/scene_geometry.h"
 #include "csg/trace_context.h"
 #include "render/medium.h"
 #include "render/sampler.h"
+#include "scene/scene.h"
 
 #include <cstdint>
 #include <optional>
@@ -104,8 +104,8 @@ public:
     /// The radiance seen along a camera ray. When firstHit is given, it receives the ray's
     /// first hit (or nullopt on a miss), for the depth and normal outputs. tStart: a distance
     /// before which the ray is known to be outside every object (render/primary_beams.h).
-    Vec3 traceCamera(const Ray& ray, ShadingContext& ctx,
-                     std::optional<Hit>* firstHit = nullptr, double tStart = 0.0) const;
+    Vec3 traceCamera(const Ray& ray, ShadingContext& ctx, std::optional<Hit>* firstHit = nullptr,
+                     double tStart = 0.0) const;
 
 private:
     /// Radiance arriving along `ray`, whose segment starts at `segmentStart` (the un-offset

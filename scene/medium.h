@@ -5,7 +5,7 @@
 /// stays the cheap special case; this is what `mist { density … bounds … }` builds.
 #pragma once
 
-#include "csg/scalar_field.h"
+#include "csg/tape/scalar_field.h"
 #include "csg/types.h"
 
 #include <cstdint>
@@ -42,13 +42,13 @@ struct Medium {
     /// range() over a box must hold every value there (the majorant). Null: no medium.
     std::shared_ptr<const ScalarField> density;
     Bounds3 bounds;
-    double extinction = 1.0;   ///< σt per unit density, per unit length
-    Vec3 albedo{1.0};          ///< scattering albedo per channel, in [0, 1]
-    Vec3 emission{0.0};        ///< see above
-    double g = 0.0;            ///< Henyey–Greenstein asymmetry, in (−1, 1)
+    double extinction = 1.0;  ///< σt per unit density, per unit length
+    Vec3 albedo{1.0};         ///< scattering albedo per channel, in [0, 1]
+    Vec3 emission{0.0};       ///< see above
+    double g = 0.0;           ///< Henyey–Greenstein asymmetry, in (−1, 1)
     MediumMethod method = MediumMethod::Ratio;
-    double step = 0.0;         ///< March: the step length; 0: the box's diagonal / 128
-    int samples = 1;           ///< in-scattering points per camera segment (Ratio, Delta)
+    double step = 0.0;  ///< March: the step length; 0: the box's diagonal / 128
+    int samples = 1;    ///< in-scattering points per camera segment (Ratio, Delta)
 
     bool enabled() const { return density != nullptr; }
 };

@@ -49,8 +49,8 @@ struct Pattern {
     Entry a, b;
     /// World space to the pattern's space: the inverse of the pattern's own transform.
     Affine toPattern;
-    uint64_t seed = 0;  ///< noise and turbulence
-    int octaves = 6;    ///< turbulence
+    uint64_t seed = 0;                      ///< noise and turbulence
+    int octaves = 6;                        ///< turbulence
     std::shared_ptr<const ImageMap> image;  ///< Image: set, and a and b are not used
 };
 

@@ -10,9 +10,9 @@
 namespace kerf {
 
 enum class SamplerKind : uint8_t {
-    Regular,   ///< the centres of N cells of a cols × rows grid (all of them when N = cols × rows,
-               ///< else a shuffled choice per pixel): no noise, aliasing
-    Random,    ///< independent uniform points
+    Regular,  ///< the centres of N cells of a cols × rows grid (all of them when N = cols × rows,
+              ///< else a shuffled choice per pixel): no noise, aliasing
+    Random,   ///< independent uniform points
     Jittered,  ///< one uniform point in each cell of a cols × rows grid (the default)
     Lattice,   ///< a rank-1 lattice (Korobov) shifted per pixel: low discrepancy
 };
@@ -47,8 +47,8 @@ inline const char* samplerName(SamplerKind kind) {
 }
 
 inline std::optional<SamplerKind> parseSampler(const std::string& name) {
-    for (SamplerKind k : {SamplerKind::Regular, SamplerKind::Random, SamplerKind::Jittered,
-                          SamplerKind::Lattice})
+    for (SamplerKind k :
+         {SamplerKind::Regular, SamplerKind::Random, SamplerKind::Jittered, SamplerKind::Lattice})
         if (name == samplerName(k)) return k;
     return std::nullopt;
 }

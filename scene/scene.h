@@ -5,7 +5,7 @@
 /// cycle: lang → scene → csg, render → scene.
 #pragma once
 
-#include "csg/node.h"
+#include "csg/tree/node.h"
 #include "csg/types.h"
 #include "scene/medium.h"
 #include "scene/pattern.h"
@@ -26,8 +26,8 @@ struct Material {
     double reflect = 0.0;   ///< mirror weight
     double transmit = 0.0;  ///< refraction weight; > 0 makes the material a dielectric
     double ior = 1.5;
-    Vec3 absorb{0.0};       ///< Beer absorption coefficient per unit length inside
-    Vec3 emit{0.0};         ///< emitted radiance, added unlit
+    Vec3 absorb{0.0};  ///< Beer absorption coefficient per unit length inside
+    Vec3 emit{0.0};    ///< emitted radiance, added unlit
     /// Glossy reflection: the mirror ray is spread uniformly over a cone of this half-angle
     /// (degrees) about the mirror direction; 0 is a perfect mirror.
     double glossy = 0.0;
@@ -57,7 +57,7 @@ struct Light {
     /// shading point, so their shadows are soft.
     enum class Kind { Point, Directional, Area, Sphere };
     Kind kind = Kind::Point;
-    Vec3 position{0.0};            ///< point and sphere lights: the centre; area: a corner
+    Vec3 position{0.0};              ///< point and sphere lights: the centre; area: a corner
     Vec3 direction{0.0, -1.0, 0.0};  ///< directional lights: the direction light travels
     Vec3 color{1.0};
     /// Point lights: irradiance at distance d is color·power / (4π d²). Area and sphere lights
@@ -120,14 +120,14 @@ struct Mist {
 /// removed. render/section_cut.h renders the cut; slice/ may read them too.
 struct SectionPlane {
     Vec3 point{0.0};
-    Vec3 normal{0.0, 0.0, 1.0};  ///< unit length
+    Vec3 normal{0.0, 0.0, 1.0};   ///< unit length
     Vec3 color{0.85, 0.2, 0.15};  ///< the caps' colour (the cut faces), lit as a diffuse material
 };
 
 struct RenderSettings {
     int width = 640;
     int height = 480;
-    int spp = 1;       ///< samples per pixel, exactly
+    int spp = 1;                                  ///< samples per pixel, exactly
     SamplerKind sampler = SamplerKind::Jittered;  ///< how they are placed (scene/sampling.h)
     FilterKind filter = FilterKind::Box;          ///< how they are weighed into pixels
     /// Adaptive sampling: a pixel stops once the standard error of its mean (luminance) is

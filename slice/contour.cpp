@@ -33,9 +33,7 @@ struct EdgeKey {
     bool operator==(const EdgeKey& o) const { return a == o.a && b == o.b; }
 };
 struct EdgeKeyHash {
-    size_t operator()(const EdgeKey& k) const {
-        return KeyHash()(k.a) * 31 + KeyHash()(k.b);
-    }
+    size_t operator()(const EdgeKey& k) const { return KeyHash()(k.a) * 31 + KeyHash()(k.b); }
 };
 
 enum class State : uint8_t { Empty, Full, Boundary };
@@ -54,8 +52,8 @@ struct Cell {
 };
 
 struct Chain {
-    int from, to;            // crossing vertices
-    std::vector<Pt> inner;   // vertices between them
+    int from, to;           // crossing vertices
+    std::vector<Pt> inner;  // vertices between them
 };
 
 class Contourer {
@@ -142,8 +140,10 @@ Simple Contourer::provedSimple(const Tape& tape, const Interval& U, const Interv
     auto edgeRange = [&](bool alongU, double end) {
         const Interval& along = alongU ? V : U;
         const double mid = along.mid();
-        const Interval direct = alongU ? tape.evalInterval(end, V, mW) : tape.evalInterval(U, end, mW);
-        const Interval middle = alongU ? tape.evalInterval(end, mid, mW) : tape.evalInterval(mid, end, mW);
+        const Interval direct =
+            alongU ? tape.evalInterval(end, V, mW) : tape.evalInterval(U, end, mW);
+        const Interval middle =
+            alongU ? tape.evalInterval(end, mid, mW) : tape.evalInterval(mid, end, mW);
         const Interval centred = middle + (alongU ? s.dv : s.du) * (along - Interval(mid));
         const Interval both(std::max(direct.lo, centred.lo), std::min(direct.hi, centred.hi));
         return direct.maybeNan || centred.maybeNan || !(both.lo <= both.hi) ? direct : both;
@@ -233,7 +233,10 @@ void Contourer::edgeSplits(int node, int side, const Cell& c, std::vector<int64_
     const int64_t h = sizeOf(n.level), ch = sizeOf(c.level);
     // The row or column just across the side, and the span along it.
     const bool horizontal = side == 0 || side == 2;
-    const int64_t across = side == 0 ? c.y - 1 : side == 1 ? c.x + ch : side == 2 ? c.y + ch : c.x - 1;
+    const int64_t across = side == 0   ? c.y - 1
+                           : side == 1 ? c.x + ch
+                           : side == 2 ? c.y + ch
+                                       : c.x - 1;
     const int64_t lo = horizontal ? c.x : c.y;
     const int64_t nAcross = horizontal ? n.y : n.x;
     const int64_t nAlong = horizontal ? n.x : n.y;
@@ -292,8 +295,10 @@ Pt Contourer::rootOnSegment(const Tape& t, const Pt& in, const Pt& out, double f
             break;  // NaN: keep the bracket
         }
         double next;
-        if (sPrev < 0.0) next = f < 0.0 ? s + step : s - step;  // the second point
-        else next = f != fPrev ? s - f * (s - sPrev) / (f - fPrev) : -1.0;
+        if (sPrev < 0.0)
+            next = f < 0.0 ? s + step : s - step;  // the second point
+        else
+            next = f != fPrev ? s - f * (s - sPrev) / (f - fPrev) : -1.0;
         if (!(next > lo && next < hi)) {
             double a = flo, b = fhi;
             if (stale <= -2) b *= 0.5;
@@ -320,8 +325,8 @@ int Contourer::crossing(const Key& a, const Key& b, bool aInside, const Tape& t)
     const Key& out = aInside ? b : a;
     const Pt pin{uOf(in.x), vOf(in.y)}, pout{uOf(out.x), vOf(out.y)};
     // Crossings to a 64th of the tolerance: corners are placed from them (placeCorner).
-    const Pt p = rootOnSegment(t, pin, pout, evalAt(t, pin[0], pin[1]), evalAt(t, pout[0], pout[1]), -1.0,
-                               1.0 / 64.0);
+    const Pt p = rootOnSegment(t, pin, pout, evalAt(t, pin[0], pin[1]), evalAt(t, pout[0], pout[1]),
+                               -1.0, 1.0 / 64.0);
     const int id = static_cast<int>(mVertices.size());
     mVertices.push_back(p);
     mCrossing.emplace(key, id);
@@ -333,9 +338,12 @@ void Contourer::refine(const Cell& c, const Pt& p, const Pt& q, int depth, std::
     const Tape& t = *c.tape;
     // Lines of constant v (a root along u) or of constant u.
     bool lineOfV;
-    if (c.simple == Simple::AlongU) lineOfV = true;
-    else if (c.simple == Simple::AlongV) lineOfV = false;
-    else lineOfV = std::fabs(q[1] - p[1]) > std::fabs(q[0] - p[0]);
+    if (c.simple == Simple::AlongU)
+        lineOfV = true;
+    else if (c.simple == Simple::AlongV)
+        lineOfV = false;
+    else
+        lineOfV = std::fabs(q[1] - p[1]) > std::fabs(q[0] - p[0]);
     const int param = lineOfV ? 1 : 0;
     if (std::fabs(q[param] - p[param]) <= mTol) return;
     const double m = 0.5 * (p[param] + q[param]);
@@ -363,9 +371,12 @@ void Contourer::refine(const Cell& c, const Pt& p, const Pt& q, int depth, std::
         mid = rootOnSegment(t, b, a, unknown, unknown, 1.0 - g);
     } else {
         const double fa = evalAt(t, a[0], a[1]), fb = evalAt(t, b[0], b[1]);
-        if (fa <= 0.0 && fb > 0.0) mid = rootOnSegment(t, a, b, fa, fb, g);
-        else if (fb <= 0.0 && fa > 0.0) mid = rootOnSegment(t, b, a, fb, fa, 1.0 - g);
-        else return;  // no sign change (rounding at the very end of the curve): keep the chord
+        if (fa <= 0.0 && fb > 0.0)
+            mid = rootOnSegment(t, a, b, fa, fb, g);
+        else if (fb <= 0.0 && fa > 0.0)
+            mid = rootOnSegment(t, b, a, fb, fa, 1.0 - g);
+        else
+            return;  // no sign change (rounding at the very end of the curve): keep the chord
     }
     // Distance of the curve's point from the chord p–q.
     const double dx = q[0] - p[0], dy = q[1] - p[1];
@@ -405,7 +416,8 @@ void Contourer::placeCorner(const Cell& c, const Pt& a, const Pt& b, std::vector
     const double ra = ax * a[0] + ay * a[1], rb = bx * b[0] + by * b[1];
     const Pt corner{(ra * by - ay * rb) / det, (ax * rb - ra * bx) / det};
     const int64_t h = sizeOf(c.level);
-    if (corner[0] < uOf(c.x) || corner[0] > uOf(c.x + h) || corner[1] < vOf(c.y) || corner[1] > vOf(c.y + h))
+    if (corner[0] < uOf(c.x) || corner[0] > uOf(c.x + h) || corner[1] < vOf(c.y) ||
+        corner[1] > vOf(c.y + h))
         return;
     out.push_back(corner);
 }
@@ -425,14 +437,19 @@ void Contourer::contourCell(const Cell& c) {
         splits.erase(std::unique(splits.begin(), splits.end()), splits.end());
         if (side >= 2) std::reverse(splits.begin(), splits.end());
         for (const int64_t s : splits)
-            ring.push_back(side == 0 ? Key{s, c.y} : side == 1 ? Key{c.x + h, s}
-                           : side == 2 ? Key{s, c.y + h} : Key{c.x, s});
+            ring.push_back(side == 0   ? Key{s, c.y}
+                           : side == 1 ? Key{c.x + h, s}
+                           : side == 2 ? Key{s, c.y + h}
+                                       : Key{c.x, s});
     }
     const size_t n = ring.size();
     std::vector<char> in(n);
     for (size_t i = 0; i < n; ++i) in[i] = inside(ring[i], t);
     // Crossings in ring order; they alternate between leaving (in → out) and entering.
-    struct X { int vertex; bool leaving; };
+    struct X {
+        int vertex;
+        bool leaving;
+    };
     std::vector<X> xs;
     for (size_t i = 0; i < n; ++i) {
         const size_t j = (i + 1) % n;

@@ -20,7 +20,7 @@
 ///   clockwise.
 #pragma once
 
-#include "csg/tape.h"
+#include "csg/tape/tape.h"
 #include "io/section_writers.h"
 #include "slice/plane.h"
 
@@ -39,14 +39,14 @@ struct ContourOptions {
 };
 
 struct ContourStats {
-    size_t cells = 0;            ///< quadtree cells classified
-    size_t boundaryLeaves = 0;   ///< boundary cells contoured
-    size_t simpleLeaves = 0;     ///< of those, proved simple before the finest level
-    size_t pointEvals = 0;       ///< tape evaluations at points (signs and root finding)
-    size_t repairedLoops = 0;    ///< open chains closed by a segment (rounding at a tangency)
-    size_t flatCells = 0;        ///< cells where f is within rounding of 0 (a face in the plane)
-    bool budgetExceeded = false; ///< the cell budget (2^21 per object) was reached
-    int depth = 0;               ///< the finest level allowed
+    size_t cells = 0;             ///< quadtree cells classified
+    size_t boundaryLeaves = 0;    ///< boundary cells contoured
+    size_t simpleLeaves = 0;      ///< of those, proved simple before the finest level
+    size_t pointEvals = 0;        ///< tape evaluations at points (signs and root finding)
+    size_t repairedLoops = 0;     ///< open chains closed by a segment (rounding at a tangency)
+    size_t flatCells = 0;         ///< cells where f is within rounding of 0 (a face in the plane)
+    bool budgetExceeded = false;  ///< the cell budget (2^21 per object) was reached
+    int depth = 0;                ///< the finest level allowed
     void add(const ContourStats& o);
 };
 

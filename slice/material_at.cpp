@@ -13,7 +13,8 @@ int32_t materialAt(const Node& node, const Vec3& p, int32_t inherited) {
         case NodeKind::Material:
             return materialAt(*kids[0], p, std::get<MaterialParams>(node.params()).material);
         case NodeKind::Transform:
-            return materialAt(*kids[0], std::get<TransformParams>(node.params()).localFromWorld.point(p),
+            return materialAt(*kids[0],
+                              std::get<TransformParams>(node.params()).localFromWorld.point(p),
                               inherited);
         case NodeKind::Motion:  // as at scene time 0, where a motion leaves its child unmoved
             return materialAt(*kids[0], p, inherited);

@@ -4,7 +4,7 @@
 /// colours a surface by its innermost material).
 #pragma once
 
-#include "csg/node.h"
+#include "csg/tree/node.h"
 
 #include <cstdint>
 

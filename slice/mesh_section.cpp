@@ -18,7 +18,8 @@ std::shared_ptr<const PlacedMesh> placedMeshOf(const Node& object) {
         if (kind == NodeKind::Material) {
             node = node->children()[0].get();
         } else if (kind == NodeKind::Transform) {
-            const Affine m = std::get<TransformParams>(node->params()).worldFromLocal;  // params() is a copy
+            const Affine m =
+                std::get<TransformParams>(node->params()).worldFromLocal;  // params() is a copy
             worldFromLocal = worldFromLocal.after(m);
             node = node->children()[0].get();
         } else if (kind == NodeKind::Mesh) {
@@ -34,7 +35,8 @@ std::shared_ptr<const PlacedMesh> placedMeshOf(const Node& object) {
     placed->triangles = shape.mesh().triangles;
     placed->weld = buildHalfEdges(shape.mesh()).weld;
     placed->positions.reserve(shape.mesh().positions.size());
-    for (const Vec3& p : shape.mesh().positions) placed->positions.push_back(worldFromLocal.point(p));
+    for (const Vec3& p : shape.mesh().positions)
+        placed->positions.push_back(worldFromLocal.point(p));
     return placed;
 }
 
@@ -50,7 +52,8 @@ std::vector<SectionLoop> meshSectionLoops(const PlacedMesh& mesh, const SlicePla
     auto cut = [&](uint32_t a, uint32_t b) {
         if (mesh.weld[a] > mesh.weld[b]) std::swap(a, b);
         const double ha = height[a], hb = height[b];
-        const Vec3 p = mesh.positions[a] + (ha / (ha - hb)) * (mesh.positions[b] - mesh.positions[a]);
+        const Vec3 p =
+            mesh.positions[a] + (ha / (ha - hb)) * (mesh.positions[b] - mesh.positions[a]);
         const Vec3 d = p - base;
         return std::array<double, 2>{glm::dot(d, plane.u), glm::dot(d, plane.v)};
     };

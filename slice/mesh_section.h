@@ -6,7 +6,7 @@
 /// Objects with a mesh inside CSG go through the general contouring of its distance field.
 #pragma once
 
-#include "csg/node.h"
+#include "csg/tree/node.h"
 #include "io/section_writers.h"
 #include "slice/plane.h"
 
@@ -18,8 +18,8 @@ namespace kerf {
 
 /// A mesh placed in the scene, prepared once for every plane of a family.
 struct PlacedMesh {
-    std::vector<Vec3> positions;                    ///< in scene space
-    std::vector<uint32_t> weld;                     ///< vertex → first vertex at its position
+    std::vector<Vec3> positions;  ///< in scene space
+    std::vector<uint32_t> weld;   ///< vertex → first vertex at its position
     std::vector<std::array<uint32_t, 3>> triangles;
     bool solid = false;
 };

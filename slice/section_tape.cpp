@@ -1,10 +1,10 @@
 // The section tape and its interval slopes.
 #include "slice/section_tape.h"
 
-#include "csg/interval_ops.h"
-#include "csg/noise.h"
-#include "csg/scalar_field.h"
-#include "csg/tree_tape.h"
+#include "csg/interval/interval_ops.h"
+#include "csg/tape/noise.h"
+#include "csg/tape/scalar_field.h"
+#include "csg/tape/tree_tape.h"
 
 namespace kerf {
 
@@ -47,13 +47,33 @@ IntervalSlopes evalIntervalSlopes(const Tape& tape, const Interval& u, const Int
         const Interval* a = in.a >= 0 ? &s[3 * in.a] : nullptr;
         const Interval* b = in.b >= 0 ? &s[3 * in.b] : nullptr;
         switch (in.op) {
-            case Op::Const: r[0] = in.value; r[1] = r[2] = zero; break;
-            case Op::VarX: r[0] = u; r[1] = one; r[2] = zero; break;
-            case Op::VarY: r[0] = v; r[1] = zero; r[2] = one; break;
-            case Op::VarZ: r[0] = w; r[1] = r[2] = zero; break;
-            case Op::Neg: for (int k = 0; k < 3; ++k) r[k] = -a[k]; break;
-            case Op::Add: for (int k = 0; k < 3; ++k) r[k] = a[k] + b[k]; break;
-            case Op::Sub: for (int k = 0; k < 3; ++k) r[k] = a[k] - b[k]; break;
+            case Op::Const:
+                r[0] = in.value;
+                r[1] = r[2] = zero;
+                break;
+            case Op::VarX:
+                r[0] = u;
+                r[1] = one;
+                r[2] = zero;
+                break;
+            case Op::VarY:
+                r[0] = v;
+                r[1] = zero;
+                r[2] = one;
+                break;
+            case Op::VarZ:
+                r[0] = w;
+                r[1] = r[2] = zero;
+                break;
+            case Op::Neg:
+                for (int k = 0; k < 3; ++k) r[k] = -a[k];
+                break;
+            case Op::Add:
+                for (int k = 0; k < 3; ++k) r[k] = a[k] + b[k];
+                break;
+            case Op::Sub:
+                for (int k = 0; k < 3; ++k) r[k] = a[k] - b[k];
+                break;
             case Op::Mul:
                 r[0] = a[0] * b[0];
                 for (int k = 1; k < 3; ++k) r[k] = a[k] * b[0] + a[0] * b[k];
@@ -80,7 +100,8 @@ IntervalSlopes evalIntervalSlopes(const Tape& tape, const Interval& u, const Int
                 for (int k = 1; k < 3; ++k) r[k] = d * a[k];
                 break;
             }
-            case Op::Sin: case Op::Cos: {
+            case Op::Sin:
+            case Op::Cos: {
                 Interval sn, cs;
                 sinCos(a[0], sn, cs);
                 r[0] = in.op == Op::Sin ? sn : cs;
@@ -105,7 +126,8 @@ IntervalSlopes evalIntervalSlopes(const Tape& tape, const Interval& u, const Int
                 for (int k = 1; k < 3; ++k)
                     r[k] = a[0].lo > 0.0 ? a[k] : a[0].hi < 0.0 ? -a[k] : hull(a[k], -a[k]);
                 break;
-            case Op::Min: case Op::Max: {
+            case Op::Min:
+            case Op::Max: {
                 const bool isMin = in.op == Op::Min;
                 r[0] = isMin ? min(a[0], b[0]) : max(a[0], b[0]);
                 // Which operand is the result over the whole box, if one is.

@@ -1,13 +1,13 @@
 /// @file slice/section_tape.h
 /// @brief An object's implicit form restricted to the planes of one family: the tree's
-/// expression (csg/tree_tape.h) composed with x = origin + u·U + v·V + w·N, compiled over
+/// expression (csg/tape/tree_tape.h) composed with x = origin + u·U + v·V + w·N, compiled over
 /// (u, v, w) as the tape's (x, y, z). A stack of parallel planes shares the one tape (w moves).
 /// Also the interval enclosure of ∂f/∂u and ∂f/∂v over a cell, which proves a cell's boundary
 /// simple (slice/quadtree.cpp).
 #pragma once
 
-#include "csg/node.h"
-#include "csg/tape.h"
+#include "csg/tape/tape.h"
+#include "csg/tree/node.h"
 #include "slice/plane.h"
 
 #include <memory>

@@ -1,7 +1,7 @@
 // The scene's section: objects contoured, loops grouped into regions and material layers.
 #include "slice/slice.h"
 
-#include "csg/surfaces.h"
+#include "csg/primitives/surfaces.h"
 
 #include "slice/material_at.h"
 #include "slice/mesh_section.h"
@@ -43,7 +43,8 @@ bool pointInLoop(const SectionLoop& loop, double x, double y) {
 /// The rectangle padded by a sixteenth of its size (at least the tolerance), so the boundary
 /// lies strictly inside it even where the bounds are tight.
 PlaneRect padded(PlaneRect r, double tolerance) {
-    const double pad = std::max(0.0625 * std::max(r.maxU - r.minU, r.maxV - r.minV), 4.0 * tolerance);
+    const double pad =
+        std::max(0.0625 * std::max(r.maxU - r.minU, r.maxV - r.minV), 4.0 * tolerance);
     return {r.minU - pad, r.minV - pad, r.maxU + pad, r.maxV + pad};
 }
 
@@ -56,21 +57,24 @@ SceneSlicer::SceneSlicer(const Scene& scene, const SlicePlane& family, const Sli
         const NodePtr& node = scene.objects[i];
         const Bounds3 b = node->bounds();
         if (b.empty()) continue;
-        if (isSurfaceTree(*node)) {  // csg/surfaces.h: a sheet has no inside to cut
+        if (isSurfaceTree(*node)) {  // csg/primitives/surfaces.h: a sheet has no inside to cut
             mNotes.push_back("object " + std::to_string(i + 1) +
-                             " is a surface (disc, triangle, open cylinder or cone, surface, clip), not a solid; "
+                             " is a surface (disc, triangle, open cylinder or cone, surface, "
+                             "clip), not a solid; "
                              "left out of the section");
             continue;
         }
         if (!b.finite()) {
-            mNotes.push_back("object " + std::to_string(i + 1) +
-                             " is unbounded (a half-space or infinite solid); left out of the section");
+            mNotes.push_back(
+                "object " + std::to_string(i + 1) +
+                " is unbounded (a half-space or infinite solid); left out of the section");
             continue;
         }
         if (auto mesh = placedMeshOf(*node)) {
             if (!mesh->solid) {
-                mNotes.push_back("object " + std::to_string(i + 1) +
-                                 " is an open mesh (a surface, not a solid); left out of the section");
+                mNotes.push_back(
+                    "object " + std::to_string(i + 1) +
+                    " is an open mesh (a surface, not a solid); left out of the section");
                 continue;
             }
             mBounds.extend(b);
@@ -133,8 +137,10 @@ SliceResult SceneSlicer::slice(double w) const {
             for (const size_t o : outers)
                 if ((best == SIZE_MAX || area[o] < area[best]) && pointInLoop(loops[o], p[0], p[1]))
                     best = o;
-            if (best != SIZE_MAX) holesOf[best].push_back(i);
-            else outers.push_back(i);  // no outer around it (should not happen): keep it alone
+            if (best != SIZE_MAX)
+                holesOf[best].push_back(i);
+            else
+                outers.push_back(i);  // no outer around it (should not happen): keep it alone
         }
         for (const size_t o : outers) {
             // A point just inside the outer loop: left of its longest segment.
@@ -145,7 +151,10 @@ SliceResult SceneSlicer::slice(double w) const {
                 const auto& a = pts[i];
                 const auto& b = pts[(i + 1) % pts.size()];
                 const double l = std::hypot(b[0] - a[0], b[1] - a[1]);
-                if (l > len) { len = l; longest = i; }
+                if (l > len) {
+                    len = l;
+                    longest = i;
+                }
             }
             const auto& a = pts[longest];
             const auto& b = pts[(longest + 1) % pts.size()];
@@ -162,7 +171,8 @@ SliceResult SceneSlicer::slice(double w) const {
             if (added) {
                 SectionLayer layer;
                 const bool known = material >= 0 && size_t(material) < mScene.materials.size();
-                layer.name = known ? mScene.materials[material].name : "material" + std::to_string(material);
+                layer.name =
+                    known ? mScene.materials[material].name : "material" + std::to_string(material);
                 if (known) {
                     const Vec3 c = mScene.materials[material].color;
                     layer.color = {c.x, c.y, c.z};

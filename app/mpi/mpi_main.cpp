@@ -11,8 +11,8 @@
 #include "app/cli_render.h"
 #include "app/cli_slice.h"
 #include "app/exit_codes.h"
-#include "app/model_loader.h"
 #include "app/frame_sequence.h"
+#include "app/model_loader.h"
 #include "app/mpi/tile_exchange.h"
 #include "app/render_setup.h"
 #include "app/stats_report.h"
@@ -21,9 +21,9 @@
 #include "lang/openscad_csg.h"
 #include "lang/source.h"
 
-#include <CLI/CLI.hpp>
 #include <mpi.h>
 #include <tbb/global_control.h>
+#include <CLI/CLI.hpp>
 
 #include <chrono>
 #include <cstdint>
@@ -98,15 +98,17 @@ std::string broadcastModel(const Ranks& r, const std::string& path, int& code) {
 std::optional<Scene> compileModel(const Ranks& r, const std::string& path, const std::string& text,
                                   bool quiet, const SequenceFrame& frame) {
     DiagnosticSink sink;
-    std::optional<Scene> scene = isOpenScadCsgPath(path) ? compileOpenScadString(text, path, sink)
-                                                         : compileString(text, path, sink, EvalLimits{}, frame);
+    std::optional<Scene> scene = isOpenScadCsgPath(path)
+                                     ? compileOpenScadString(text, path, sink)
+                                     : compileString(text, path, sink, EvalLimits{}, frame);
     if (r.rank == 0 && !sink.diagnostics().empty()) std::cerr << sink.format(!quiet);
     if (!scene) {
         if (r.rank == 0 && !sink.hasErrors())
             std::cerr << "kerf: error: '" << path << "' could not be compiled\n";
         // Printed above on rank 0; another rank's own failure (an include it cannot read)
         // is printed by it when rank 0 compiled the model.
-        throw UsageError(r.rank == 0 ? std::string() : "the model failed here:\n" + sink.format(false));
+        throw UsageError(r.rank == 0 ? std::string()
+                                     : "the model failed here:\n" + sink.format(false));
     }
     return scene;
 }
@@ -183,7 +185,8 @@ int renderImage(const Ranks& r, const RenderCommandLine& line) {
     std::optional<Scene> scene;
     const auto compileStart = std::chrono::steady_clock::now();
     code = agreed(r, [&] {
-        scene = compileModel(r, line.model, text, line.quiet || r.rank != 0, line.frame.value_or(SequenceFrame{}));
+        scene = compileModel(r, line.model, text, line.quiet || r.rank != 0,
+                             line.frame.value_or(SequenceFrame{}));
         applySetup(setup, *scene);
     });
     if (code != kExitSuccess) return code;
@@ -265,10 +268,11 @@ int sliceStack(const Ranks& r, SliceCommandLine line) {
 }
 
 int run(const Ranks& r, int argc, char** argv) {
-    CLI::App cli("kerf-mpi: kerf render and kerf slice --stack across MPI processes (mpirun -n N "
-                 "kerf-mpi render FILE …); the image is the same, bit for bit, as kerf render's, and a "
-                 "stack's layers are shared out",
-                 "kerf-mpi");
+    CLI::App cli(
+        "kerf-mpi: kerf render and kerf slice --stack across MPI processes (mpirun -n N "
+        "kerf-mpi render FILE …); the image is the same, bit for bit, as kerf render's, and a "
+        "stack's layers are shared out",
+        "kerf-mpi");
     cli.require_subcommand(1);
     RenderCommandLine line;
     addRenderCommand(cli, line);
@@ -296,7 +300,8 @@ int run(const Ranks& r, int argc, char** argv) {
     }
     int code = kExitSuccess;
     const int checked = agreed(r, [&] {
-        code = renderFrames(loop, [&](const RenderCommandLine& one) { return renderImage(r, one); });
+        code =
+            renderFrames(loop, [&](const RenderCommandLine& one) { return renderImage(r, one); });
     });
     return checked != kExitSuccess ? checked : code;
 }
@@ -314,8 +319,9 @@ int main(int argc, char** argv) {
         tbb::task_scheduler_handle workers{tbb::attach{}};
         try {
             if (provided < MPI_THREAD_SERIALIZED)
-                throw std::runtime_error("this MPI library cannot be called from several threads "
-                                         "(MPI_THREAD_SERIALIZED)");
+                throw std::runtime_error(
+                    "this MPI library cannot be called from several threads "
+                    "(MPI_THREAD_SERIALIZED)");
             code = run(r, argc, argv);
         } catch (const std::exception& e) {
             // A failure inside the render or the gather: the other ranks may be waiting.

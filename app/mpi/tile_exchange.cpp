@@ -29,7 +29,8 @@ public:
     bool done() const { return mAt == mBytes.size(); }
     template <typename T>
     void get(T* data, size_t count) {
-        if (count * sizeof(T) > mBytes.size() - mAt) throw std::runtime_error("tile data cut short");
+        if (count * sizeof(T) > mBytes.size() - mAt)
+            throw std::runtime_error("tile data cut short");
         std::memcpy(data, mBytes.data() + mAt, count * sizeof(T));
         mAt += count * sizeof(T);
     }
@@ -49,13 +50,16 @@ private:
 void putPixels(std::vector<char>& out, const Image& image, const PixelRect& region,
                const PixelRect& part) {
     for (int y = part.y0; y < part.y1; ++y)
-        put(out, &image.pixels[(size_t(y - region.y0) * image.width + (part.x0 - region.x0)) * image.channels],
+        put(out,
+            &image.pixels[(size_t(y - region.y0) * image.width + (part.x0 - region.x0)) *
+                          image.channels],
             size_t(part.width()) * image.channels);
 }
 
 void getPixels(Reader& in, Image& image, const PixelRect& region, const PixelRect& part) {
     for (int y = part.y0; y < part.y1; ++y)
-        in.get(&image.pixels[(size_t(y - region.y0) * image.width + (part.x0 - region.x0)) * image.channels],
+        in.get(&image.pixels[(size_t(y - region.y0) * image.width + (part.x0 - region.x0)) *
+                             image.channels],
                size_t(part.width()) * image.channels);
 }
 
@@ -67,7 +71,8 @@ std::vector<char> packTiles(const RenderResult& result) {
     for (size_t k = 0; k < result.tiles.size(); ++k) {
         const int tile = result.tiles[k];
         put(out, int32_t(tile));
-        const PixelRect part = intersect(tileRect(tile, result.fullWidth, result.fullHeight), result.region);
+        const PixelRect part =
+            intersect(tileRect(tile, result.fullWidth, result.fullHeight), result.region);
         if (films) {
             const TileFilm& f = result.films[k];
             const int32_t extent[4] = {f.filmX0(), f.filmY0(), f.filmWidth(), f.filmHeight()};
@@ -103,9 +108,11 @@ RenderResult assembleTiles(const RenderResult& local, const std::vector<std::vec
         Reader in(pack);
         while (!in.done()) {
             const int tile = in.get<int32_t>();
-            if (seen[tile]) throw std::runtime_error("tile " + std::to_string(tile) + " came twice");
+            if (seen[tile])
+                throw std::runtime_error("tile " + std::to_string(tile) + " came twice");
             seen[tile] = true;
-            const PixelRect part = intersect(tileRect(tile, local.fullWidth, local.fullHeight), region);
+            const PixelRect part =
+                intersect(tileRect(tile, local.fullWidth, local.fullHeight), region);
             if (filtered) {
                 int32_t e[4];
                 in.get(e, 4);
@@ -128,7 +135,8 @@ RenderResult assembleTiles(const RenderResult& local, const std::vector<std::vec
         std::vector<const TileFilm*> inOrder;
         for (int tile : expected) {
             const auto it = films.find(tile);
-            if (it == films.end()) throw std::runtime_error("tile " + std::to_string(tile) + " is missing");
+            if (it == films.end())
+                throw std::runtime_error("tile " + std::to_string(tile) + " is missing");
             inOrder.push_back(&it->second);
         }
         resolveTileFilms(inOrder, region, full.color);

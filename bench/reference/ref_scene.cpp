@@ -95,8 +95,9 @@ public:
         } else if (keyword == "torus") {
             n.kind = K::Torus, n.r1 = number(words), n.r2 = number(words);
         } else if (keyword == "union" || keyword == "intersection" || keyword == "difference") {
-            n.kind = keyword == "union" ? K::Union
-                     : keyword == "intersection" ? K::Intersection : K::Difference;
+            n.kind = keyword == "union"          ? K::Union
+                     : keyword == "intersection" ? K::Intersection
+                                                 : K::Difference;
             const Real count = number(words);
             if (count < 1) fail("a CSG node needs at least one child");
             for (long i = 0; i < static_cast<long>(count); ++i) n.children.push_back(node());

@@ -13,21 +13,21 @@ namespace kerf::bench {
 
 struct RefNode {
     enum class Kind {
-        Sphere,        // center, radius
-        Box,           // lo, hi
-        Cylinder,      // a, b, radius (capped)
-        HalfSpace,     // normal . p <= offset
-        Torus,         // around y: major, minor
+        Sphere,     // center, radius
+        Box,        // lo, hi
+        Cylinder,   // a, b, radius (capped)
+        HalfSpace,  // normal . p <= offset
+        Torus,      // around y: major, minor
         Union,
         Intersection,
-        Difference,    // the first child minus the others
-        Transform,     // child seen through worldFromLocal = linear * p + offset
+        Difference,  // the first child minus the others
+        Transform,   // child seen through worldFromLocal = linear * p + offset
     };
     Kind kind = Kind::Union;
-    V3 a, b;                 // centre / lo / from / normal; hi / to
-    Real r1 = 0, r2 = 0;     // radius / offset / major; minor
-    M3 localFromWorld;       // Transform: inverse of the linear part
-    V3 offset;               // Transform: translation of worldFromLocal
+    V3 a, b;              // centre / lo / from / normal; hi / to
+    Real r1 = 0, r2 = 0;  // radius / offset / major; minor
+    M3 localFromWorld;    // Transform: inverse of the linear part
+    V3 offset;            // Transform: translation of worldFromLocal
     std::vector<RefNode> children;
 };
 

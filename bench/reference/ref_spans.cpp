@@ -71,8 +71,10 @@ void halfSpaceSpans(const RefNode& n, V3 o, V3 d, RefSpans& out) {
         return;
     }
     const Real t = (n.r1 - no) / nd;
-    if (nd > 0) addSpan(out, -kInf, t);
-    else addSpan(out, t, kInf);
+    if (nd > 0)
+        addSpan(out, -kInf, t);
+    else
+        addSpan(out, t, kInf);
 }
 
 Real evaluate(const Real* c, int degree, Real s) {
@@ -85,11 +87,14 @@ Real evaluate(const Real* c, int degree, Real s) {
 Real bisect(const Real* c, int degree, Real lo, Real hi, Real vlo) {
     for (;;) {
         const Real mid = lo + (hi - lo) / 2;
-        if (mid <= lo || mid >= hi) return std::fabs(vlo) <= std::fabs(evaluate(c, degree, hi)) ? lo : hi;
+        if (mid <= lo || mid >= hi)
+            return std::fabs(vlo) <= std::fabs(evaluate(c, degree, hi)) ? lo : hi;
         const Real v = evaluate(c, degree, mid);
         if (v == 0) return mid;
-        if ((v < 0) == (vlo < 0)) lo = mid, vlo = v;
-        else hi = mid;
+        if ((v < 0) == (vlo < 0))
+            lo = mid, vlo = v;
+        else
+            hi = mid;
     }
 }
 
@@ -115,8 +120,10 @@ void torusSpans(const RefNode& n, V3 o, V3 d, RefSpans& out) {
     bool inside = evaluate(coeff, 4, -margin) <= 0;
     Real enter = -kInf;
     for (int i = 0; i < count; ++i) {
-        if (inside) addSpan(out, enter, start + roots[i]);
-        else enter = start + roots[i];
+        if (inside)
+            addSpan(out, enter, start + roots[i]);
+        else
+            enter = start + roots[i];
         inside = !inside;
     }
 }
@@ -137,8 +144,14 @@ RefSpans combine(const RefSpans& a, const RefSpans& b, Keep keep) {
         if (t == kInf && i >= a.size() && j >= b.size()) break;
         // Every boundary at the same t changes state together: touching spans merge, a cutter
         // sharing a face leaves no sliver.
-        if (ta == t && i < a.size()) { if (inA) ++i; inA = !inA; }
-        if (tb == t && j < b.size()) { if (inB) ++j; inB = !inB; }
+        if (ta == t && i < a.size()) {
+            if (inA) ++i;
+            inA = !inA;
+        }
+        if (tb == t && j < b.size()) {
+            if (inB) ++j;
+            inB = !inB;
+        }
         const bool now = keep(inA, inB);
         if (now && !was) enter = t;
         if (!now && was) addSpan(out, enter, t);
@@ -156,7 +169,10 @@ int polynomialRoots(const Real* c, int degree, Real lo, Real hi, Real* roots) {
     if (degree == 0) return 0;
     if (degree == 1) {
         const Real s = -c[0] / c[1];
-        if (lo <= s && s <= hi) { roots[0] = s; return 1; }
+        if (lo <= s && s <= hi) {
+            roots[0] = s;
+            return 1;
+        }
         return 0;
     }
     Real derivative[4], critical[4];
@@ -208,9 +224,12 @@ RefSpans spansOf(const RefNode& n, V3 o, V3 d) {
                     if (n.kind == K::Intersection) out.clear();
                     continue;
                 }
-                if (n.kind == K::Union) out = combine(out, other, [](bool a, bool b) { return a || b; });
-                else if (n.kind == K::Intersection) out = combine(out, other, [](bool a, bool b) { return a && b; });
-                else out = combine(out, other, [](bool a, bool b) { return a && !b; });
+                if (n.kind == K::Union)
+                    out = combine(out, other, [](bool a, bool b) { return a || b; });
+                else if (n.kind == K::Intersection)
+                    out = combine(out, other, [](bool a, bool b) { return a && b; });
+                else
+                    out = combine(out, other, [](bool a, bool b) { return a && !b; });
             }
             break;
         }

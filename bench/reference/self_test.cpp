@@ -117,8 +117,8 @@ int runSelfTest() {
     const Real tanHalf = std::tan(20 * 3.141592653589793238462643383279502884L / 180);
     const Real sx = (548 + 0.5L) / 800 * 2 - 1, sy = 1 - (382 + 0.5L) / 600 * 2;
     const V3 d = normalize(f + (sx * tanHalf * 800 / 600) * r + (sy * tanHalf) * u);
-    check.near("tori.ref pixel (548, 382)", nearestHit({placed}, eye, d).first,
-               7.600654719270893L, 1e-15L);
+    check.near("tori.ref pixel (548, 382)", nearestHit({placed}, eye, d).first, 7.600654719270893L,
+               1e-15L);
     return check.failures();
 }
 

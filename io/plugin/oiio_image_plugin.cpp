@@ -41,9 +41,9 @@ int encodeUnguarded(void* data) {
         std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(c.fileName);
         if (!out) return fail(OIIO::geterror(), c.error, c.errorSize);
         if (!out->supports("ioproxy"))
-            return fail(std::string("OpenImageIO cannot encode ") + out->format_name() +
-                            " in memory",
-                        c.error, c.errorSize);
+            return fail(
+                std::string("OpenImageIO cannot encode ") + out->format_name() + " in memory",
+                c.error, c.errorSize);
         std::vector<unsigned char> encoded;
         OIIO::Filesystem::IOVecOutput proxy(encoded);
         const OIIO::TypeDesc type = c.bytes ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
@@ -78,12 +78,12 @@ int encodeImageWindow(const char* fileName, int width, int height, int channels,
                       const void* pixels, const char* colorSpace, int x, int y, int fullWidth,
                       int fullHeight, KerfImageBytes sink, void* user, char* error,
                       size_t errorSize) {
-    EncodeCall call{fileName, width, height,    channels,   bytes, pixels, colorSpace, x,
-                    y,        fullWidth, fullHeight, sink, user,  error,  errorSize};
+    EncodeCall call{fileName, width,     height,     channels, bytes, pixels, colorSpace, x,
+                    y,        fullWidth, fullHeight, sink,     user,  error,  errorSize};
     // libjpeg would otherwise print its own message and exit (io/plugin/jpeg_errors.h).
     char jpegMessage[256] = "";
-    const int result = kerf_plugin::runCatchingJpegErrors(encodeUnguarded, &call, jpegMessage,
-                                                          sizeof jpegMessage);
+    const int result =
+        kerf_plugin::runCatchingJpegErrors(encodeUnguarded, &call, jpegMessage, sizeof jpegMessage);
     if (result == -1) return fail(jpegMessage, error, errorSize);
     return result;
 }
@@ -126,10 +126,9 @@ int readImage(const char* path, KerfImageAllocate allocate, void* user, char* er
     return readImageWindow(path, allocate, user, nullptr, error, errorSize);
 }
 
-const KerfImagePlugin kPlugin = {KERF_IMAGE_PLUGIN_ABI,       encodeImage,
-                                 readImage,                   kerf_plugin::textureOpen,
-                                 kerf_plugin::textureLookup, encodeImageWindow,
-                                 readImageWindow};
+const KerfImagePlugin kPlugin = {
+    KERF_IMAGE_PLUGIN_ABI,      encodeImage,       readImage,      kerf_plugin::textureOpen,
+    kerf_plugin::textureLookup, encodeImageWindow, readImageWindow};
 
 }  // namespace
 

@@ -38,7 +38,7 @@ struct LinearPixels {
 /// Everything the plug-in keeps for textures. Never destroyed: OpenImageIO's cache and its
 /// threads live until the process ends, like the plug-in itself.
 struct Textures {
-    std::mutex mutex;  ///< held while opening; the cache calls LinearInput::open under it
+    std::mutex mutex;        ///< held while opening; the cache calls LinearInput::open under it
     std::mutex pixelsMutex;  ///< guards byCacheName alone
     OIIO::ImageCache* cache = nullptr;
     OIIO::TextureSystem* system = nullptr;
@@ -78,8 +78,7 @@ public:
     bool seek_subimage(int subimage, int miplevel) override {
         return subimage == 0 && miplevel == 0;  // one level: the cache makes the others
     }
-    bool read_native_scanline(int subimage, int miplevel, int y, int /*z*/,
-                              void* data) override {
+    bool read_native_scanline(int subimage, int miplevel, int y, int /*z*/, void* data) override {
         if (!mPixels || subimage != 0 || miplevel != 0 || y < 0 || y >= mPixels->height)
             return false;
         const size_t row = size_t(mPixels->width) * size_t(mPixels->channels);
@@ -184,7 +183,8 @@ int textureOpen(const char* path, KerfTexture** texture, int* width, int* height
             return fail(message.empty() ? "the texture system refused it" : message, error,
                         errorSize);
         }
-        auto made = std::make_unique<KerfTexture>(KerfTexture{handle, pixels->channels, pixels->width, pixels->height});
+        auto made = std::make_unique<KerfTexture>(
+            KerfTexture{handle, pixels->channels, pixels->width, pixels->height});
         *texture = made.get();
         *width = pixels->width;
         *height = pixels->height;
@@ -195,8 +195,8 @@ int textureOpen(const char* path, KerfTexture** texture, int* width, int* height
     }
 }
 
-void textureLookup(const KerfTexture* texture, float s, float t, float dsdx, float dtdx,
-                   float dsdy, float dtdy, int wrapS, int wrapT, float rgb[3]) {
+void textureLookup(const KerfTexture* texture, float s, float t, float dsdx, float dtdx, float dsdy,
+                   float dtdy, int wrapS, int wrapT, float rgb[3]) {
     OIIO::TextureSystem* system = textures().system;
     // The calling thread's state, found once per thread: the TextureSystem's own lookup of it
     // goes through a thread-specific pointer on every call otherwise.

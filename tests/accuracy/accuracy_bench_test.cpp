@@ -11,10 +11,10 @@
 #include <map>
 #include <sstream>
 
-#include "csg/solids.h"
-#include "lang/compile.h"
 #include "accuracy/plot.h"
 #include "accuracy/report.h"
+#include "csg/tree/solids.h"
+#include "lang/compile.h"
 
 namespace kerf {
 namespace {
@@ -74,7 +74,7 @@ TEST_CASE("measureAccuracy") {
     CHECK(m.runs == 3);
     CHECK(m.bothHit == 2);
     CHECK(m.uncertainRays == 1);
-    CHECK(m.overTolerance == 1);  // 1e-6 off at tolerance 1e-9
+    CHECK(m.overTolerance == 1);         // 1e-6 off at tolerance 1e-9
     CHECK(m.overToleranceNotThin == 1);  // the sphere is 2 thick: nothing vanished there
     CHECK(m.hitMissMismatches == 0);
     const double expected = 1e-6 / (1 + 1e-6);

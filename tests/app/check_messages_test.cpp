@@ -78,7 +78,8 @@ TEST_CASE("kerf check and render: echo lines on stderr, silenced by --quiet") {
     for (const char* command : {"check", "render"}) {
         INFO(command);
         std::vector<std::string> args{command, "e.kerf"};
-        if (std::string(command) == "render") args.insert(args.end(), {"-o", "e.png", "--width", "4", "--height", "3"});
+        if (std::string(command) == "render")
+            args.insert(args.end(), {"-o", "e.png", "--width", "4", "--height", "3"});
         const KerfRun loud = runKerf(dir, args);
         CHECK(loud.exitCode == 0);
         CHECK(loud.err.find("e.kerf:2: echo: n is, 3") != std::string::npos);

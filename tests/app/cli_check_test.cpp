@@ -64,7 +64,8 @@ TEST_CASE("kerf check: shared subtrees are counted once, their uses in 64 bits")
     std::string text = "solid s0 = sphere { radius 0.4 };\n";
     for (int i = 1; i <= 32; ++i)
         text += "solid s" + std::to_string(i) + " = union { s" + std::to_string(i - 1) + " s" +
-                std::to_string(i - 1) + " translate <" + std::to_string(1L << (i - 1)) + ", 0, 0> };\n";
+                std::to_string(i - 1) + " translate <" + std::to_string(1L << (i - 1)) +
+                ", 0, 0> };\n";
     text += "object s32;\n";
     dir.write("doubled.kerf", text);
     const KerfRun run = runKerf(dir, {"check", "doubled.kerf"});
@@ -83,7 +84,8 @@ TEST_CASE("kerf check: text, a profile and an extrusion are counted and bounded"
     // most a small fraction of the size (they come from the outline's control boxes).
     TempDir dir;
     dir.write("text.kerf",
-              "object extrude { profile text { string \"HI\" font \"DejaVu Sans\" size 1 } height 0.5 };\n");
+              "object extrude { profile text { string \"HI\" font \"DejaVu Sans\" size 1 } height "
+              "0.5 };\n");
     const KerfRun run = runKerf(dir, {"check", "text.kerf"});
     INFO("stdout:\n" << run.out << "\nstderr:\n" << run.err);
     REQUIRE(run.exitCode == 0);
@@ -91,11 +93,12 @@ TEST_CASE("kerf check: text, a profile and an extrusion are counted and bounded"
     CHECK(summaryNumber(run.out, "primitives") == 1);
     std::smatch m;
     const std::string number = "(-?[0-9.e+-]+)";
-    REQUIRE(std::regex_search(run.out, m,
-                              std::regex("bounds:\\s+x \\[" + number + ", " + number + "\\]\\s+y \\[" + number +
-                                         ", " + number + "\\]\\s+z \\[" + number + ", " + number + "\\]")));
-    const double x0 = std::stod(m[1]), x1 = std::stod(m[2]), y0 = std::stod(m[3]), y1 = std::stod(m[4]),
-                 z0 = std::stod(m[5]), z1 = std::stod(m[6]);
+    REQUIRE(std::regex_search(
+        run.out, m,
+        std::regex("bounds:\\s+x \\[" + number + ", " + number + "\\]\\s+y \\[" + number + ", " +
+                   number + "\\]\\s+z \\[" + number + ", " + number + "\\]")));
+    const double x0 = std::stod(m[1]), x1 = std::stod(m[2]), y0 = std::stod(m[3]),
+                 y1 = std::stod(m[4]), z0 = std::stod(m[5]), z1 = std::stod(m[6]);
     const double em = 1.0 / 2048;
     CHECK(x0 <= 201 * em);
     CHECK(x0 >= 201 * em - 0.05);

@@ -32,8 +32,7 @@ const BadModel kBadModels[] = {
      R"(bad\.kerf:1:\d+: error: [^\n]*nowhere\.kerf)"},
     {"a solid made of itself", "solid a = union { sphere { radius 1 } a };\nobject a;\n",
      R"(bad\.kerf:1:\d+: error: )"},
-    {"binary garbage", "\x01\x02\xff\xfe object\x7f",
-     R"(bad\.kerf:1:\d+: error: )"},
+    {"binary garbage", "\x01\x02\xff\xfe object\x7f", R"(bad\.kerf:1:\d+: error: )"},
 };
 
 }  // namespace
@@ -64,8 +63,7 @@ TEST_CASE("kerf check: a diagnostic shows the source line and a caret under the 
     REQUIRE(run.exitCode == 2);
     CHECK(std::regex_search(run.err, std::regex(R"(bad\.kerf:2:10: error: [^\n]*teapot)")));
     // The offending line, then a caret under column 10 (9 characters before it).
-    CHECK(std::regex_search(run.err,
-                            std::regex(R"(object   teapot material red;\n\s{9}\^)")));
+    CHECK(std::regex_search(run.err, std::regex(R"(object   teapot material red;\n\s{9}\^)")));
 }
 
 TEST_CASE("kerf check: several errors in one run") {

@@ -12,7 +12,8 @@ namespace {
 
 /// A sphere whose radius and colour follow `frame` and `time` (written in by `withValues`).
 std::string model(const std::string& frame, const std::string& time) {
-    return "let f = " + frame + "; let t = " + time + ";\n"
+    return "let f = " + frame + "; let t = " + time +
+           ";\n"
            "material m { color <0.2 + t, 0.5, 0.9 - 0.1 * f> }\n"
            "object sphere { center <0, 0, 0> radius 0.5 + 0.2 * f + t } material m;\n"
            "camera { eye <0, 0, -6> look_at <0, 0, 0> up <0, 1, 0> fov 40 }\n"
@@ -25,7 +26,8 @@ std::string model(const std::string& frame, const std::string& time) {
 TEST_CASE("kerf render --frames 2-3 writes two files, each a single render of its frame") {
     TempDir dir;
     dir.write("seq.kerf", model("frame", "time"));
-    const KerfRun run = runKerf(dir, {"render", "seq.kerf", "--frames", "2-3", "-o", "out_%03d.png", "-q"});
+    const KerfRun run =
+        runKerf(dir, {"render", "seq.kerf", "--frames", "2-3", "-o", "out_%03d.png", "-q"});
     INFO(run.err);
     REQUIRE(run.exitCode == 0);
     CHECK(dir.listing() == std::vector<std::string>{"out_002.png", "out_003.png", "seq.kerf"});
@@ -46,31 +48,36 @@ TEST_CASE("kerf render --frames 2-3 writes two files, each a single render of it
 TEST_CASE("kerf render --frames N --sequence A-B is the same frame as in the whole sequence") {
     TempDir dir;
     dir.write("seq.kerf", model("frame", "time"));
-    REQUIRE(runKerf(dir, {"render", "seq.kerf", "--frames", "0-3", "-o", "all_%d.png", "-q"}).exitCode == 0);
+    REQUIRE(runKerf(dir, {"render", "seq.kerf", "--frames", "0-3", "-o", "all_%d.png", "-q"})
+                .exitCode == 0);
     // A farm job with one frame of the four: the same `time` (0.5), the same bits.
-    const KerfRun part =
-        runKerf(dir, {"render", "seq.kerf", "--frames", "2", "--sequence", "0-3", "-o", "part_%d.png", "-q"});
+    const KerfRun part = runKerf(dir, {"render", "seq.kerf", "--frames", "2", "--sequence", "0-3",
+                                       "-o", "part_%d.png", "-q"});
     INFO(part.err);
     REQUIRE(part.exitCode == 0);
     CHECK(readFile(dir.file("part_2.png")) == readFile(dir.file("all_2.png")));
     CHECK(!fs::exists(dir.file("part_3.png")));
     // Without --sequence the one frame is a sequence of its own: time 0, a different image.
-    REQUIRE(runKerf(dir, {"render", "seq.kerf", "--frames", "2", "-o", "alone_%d.png", "-q"}).exitCode == 0);
+    REQUIRE(runKerf(dir, {"render", "seq.kerf", "--frames", "2", "-o", "alone_%d.png", "-q"})
+                .exitCode == 0);
     CHECK(readFile(dir.file("alone_2.png")) != readFile(dir.file("all_2.png")));
 }
 
 TEST_CASE("kerf render --frames names every frame's AOV files and the default name") {
     TempDir dir;
     dir.write("seq.kerf", model("frame", "time"));
-    const KerfRun run = runKerf(dir, {"render", "seq.kerf", "--frames", "7-8", "--aov", "depth=d_%02d.exr", "-q"});
+    const KerfRun run =
+        runKerf(dir, {"render", "seq.kerf", "--frames", "7-8", "--aov", "depth=d_%02d.exr", "-q"});
     INFO(run.err);
     REQUIRE(run.exitCode == 0);
-    CHECK(dir.listing() ==
-          std::vector<std::string>{"d_07.exr", "d_08.exr", "seq.kerf", "seq_0007.png", "seq_0008.png"});
+    CHECK(dir.listing() == std::vector<std::string>{"d_07.exr", "d_08.exr", "seq.kerf",
+                                                    "seq_0007.png", "seq_0008.png"});
     // %% is a literal percent sign; %0Nd pads to N digits, and a longer number is not cut.
     dir.write("tiny.kerf", kTinySphereModel);
-    REQUIRE(runKerf(dir, {"render", "tiny.kerf", "--frames", "1", "-o", "p%%_%02d.png", "-q"}).exitCode == 0);
-    REQUIRE(runKerf(dir, {"render", "tiny.kerf", "--frames", "123", "-o", "q_%02d.png", "-q"}).exitCode == 0);
+    REQUIRE(runKerf(dir, {"render", "tiny.kerf", "--frames", "1", "-o", "p%%_%02d.png", "-q"})
+                .exitCode == 0);
+    REQUIRE(runKerf(dir, {"render", "tiny.kerf", "--frames", "123", "-o", "q_%02d.png", "-q"})
+                .exitCode == 0);
     CHECK(fs::exists(dir.file("p%_01.png")));
     CHECK(fs::exists(dir.file("q_123.png")));
 }
@@ -93,8 +100,10 @@ TEST_CASE("kerf render --frames refuses bad ranges and names with exit code 2, w
         {{"--frames", "1-2", "-o", "o_%4d.png"}, "-o: the name needs exactly one %d"},
         {{"--frames", "1-2", "-o", "o_%s.png"}, "-o: the name needs exactly one %d"},
         {{"--frames", "1-2", "-o", "o_%d.txt"}, "cannot write 'o_1.txt' (use .png"},
-        {{"--frames", "1-2", "-o", "o_%d.png", "--aov", "depth=d.exr"}, "--aov: the name needs exactly one %d"},
-        {{"--frames", "1-5", "--sequence", "2-9", "-o", "o_%d.png"}, "is not inside --sequence 2-9"},
+        {{"--frames", "1-2", "-o", "o_%d.png", "--aov", "depth=d.exr"},
+         "--aov: the name needs exactly one %d"},
+        {{"--frames", "1-5", "--sequence", "2-9", "-o", "o_%d.png"},
+         "is not inside --sequence 2-9"},
         {{"--sequence", "1-9", "-o", "o.png"}, "--sequence goes with --frames"},
     };
     for (const Case& c : cases) {
@@ -108,14 +117,16 @@ TEST_CASE("kerf render --frames refuses bad ranges and names with exit code 2, w
     }
 }
 
-TEST_CASE("kerf render --frames with a model that fails at one frame stops there with exit code 2") {
+TEST_CASE(
+    "kerf render --frames with a model that fails at one frame stops there with exit code 2") {
     TempDir dir;
     // The radius is 1 − frame: positive at frame 0, zero (an error) at frame 1.
     dir.write("seq.kerf",
               "object sphere { radius 1 - frame };\n"
               "camera { eye <0, 0, -5> look_at <0, 0, 0> up <0, 1, 0> fov 40 }\n"
               "render { width 8 height 8 spp 1 }\n");
-    const KerfRun run = runKerf(dir, {"render", "seq.kerf", "--frames", "0-2", "-o", "o_%d.png", "-q"});
+    const KerfRun run =
+        runKerf(dir, {"render", "seq.kerf", "--frames", "0-2", "-o", "o_%d.png", "-q"});
     INFO(run.err);
     CHECK(run.exitCode == 2);
     CHECK(run.err.find("seq.kerf:1:") != std::string::npos);

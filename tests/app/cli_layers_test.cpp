@@ -10,18 +10,21 @@ using namespace kerf::test;
 namespace {
 // Off-centre and cut by a box, so that every layer's section is different.
 const char* kModel =
-    "object difference { sphere { center <0.1, 0, 0> radius 1 } box { min <0, 0, -2> max <2, 2, 0.3> } };\n";
-}
+    "object difference { sphere { center <0.1, 0, 0> radius 1 } box { min <0, 0, -2> max <2, 2, "
+    "0.3> } };\n";
+}  // namespace
 
 TEST_CASE("kerf slice --layers parts equal the same layers of the full stack byte for byte") {
     for (const char* ext : {"svg", "png"}) {
         TempDir dir;
         dir.write("m.kerf", kModel);
         const std::string stack = "z=-0.9:0.9:0.2";  // layers 0 to 9
-        const std::vector<std::string> size = std::string(ext) == "png" ? std::vector<std::string>{"--width", "64"}
-                                                                        : std::vector<std::string>{};
+        const std::vector<std::string> size = std::string(ext) == "png"
+                                                  ? std::vector<std::string>{"--width", "64"}
+                                                  : std::vector<std::string>{};
         auto slice = [&](const std::string& prefix, const std::vector<std::string>& extra) {
-            std::vector<std::string> args{"slice", "m.kerf", "--stack", stack, "-o", prefix + "_%02d." + ext, "-q"};
+            std::vector<std::string> args{
+                "slice", "m.kerf", "--stack", stack, "-o", prefix + "_%02d." + ext, "-q"};
             args.insert(args.end(), size.begin(), size.end());
             args.insert(args.end(), extra.begin(), extra.end());
             const KerfRun run = runKerf(dir, args);
@@ -41,7 +44,8 @@ TEST_CASE("kerf slice --layers parts equal the same layers of the full stack byt
             REQUIRE(!full.empty());
             CHECK(full == readFile(dir.file(std::string("part") + name)));
         }
-        CHECK(readFile(dir.file(std::string("full_03.") + ext)) != readFile(dir.file(std::string("full_04.") + ext)));
+        CHECK(readFile(dir.file(std::string("full_03.") + ext)) !=
+              readFile(dir.file(std::string("full_04.") + ext)));
         CHECK(dir.listing().size() == 21);  // the model and 10 + 10 layers: no other file
     }
 }

@@ -113,8 +113,8 @@ TEST_CASE("kerf slice: OpenSCAD extrusions have the analytic areas") {
             std::ofstream out(dir.file(c.name));
             out << c.text;
         }
-        const KerfRun run = runKerf(dir, {"slice", dir.file(c.name), "--plane", c.plane,
-                                          "-o", "cut.svg", "--stats"});
+        const KerfRun run = runKerf(
+            dir, {"slice", dir.file(c.name), "--plane", c.plane, "-o", "cut.svg", "--stats"});
         INFO("stdout:\n" << run.out << "\nstderr:\n" << run.err);
         REQUIRE(run.exitCode == 0);
         std::smatch m;

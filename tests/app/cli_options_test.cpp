@@ -84,9 +84,9 @@ TEST_CASE("kerf render: never writes over its input") {
     fs::create_directories(dir.path() / "sub");
     fs::create_symlink(model, dir.path() / "link.png");
     // The same file named four ways, and through a symbolic link.
-    for (const std::string& out : {std::string("scene.kerf"), std::string("./scene.kerf"),
-                                   dir.file("scene.kerf"), std::string("sub/../scene.kerf"),
-                                   std::string("link.png")}) {
+    for (const std::string& out :
+         {std::string("scene.kerf"), std::string("./scene.kerf"), dir.file("scene.kerf"),
+          std::string("sub/../scene.kerf"), std::string("link.png")}) {
         INFO("-o " << out);
         const KerfRun run = runKerf(dir, {"render", "scene.kerf", "-o", out});
         CHECK(run.exitCode == 2);
@@ -96,9 +96,7 @@ TEST_CASE("kerf render: never writes over its input") {
     }
 }
 
-TEST_CASE("kerf render: unknown output format") {
-    requireUsageError({"-o", "picture.bmpx"}, "-o");
-}
+TEST_CASE("kerf render: unknown output format") { requireUsageError({"-o", "picture.bmpx"}, "-o"); }
 
 TEST_CASE("kerf: command-line structure errors") {
     TempDir dir;
@@ -153,8 +151,8 @@ TEST_CASE("kerf render: flags override the render block, 0 flags take it") {
         CHECK(image.height == 10);
     }
     SECTION("--width and --height override") {
-        const KerfRun run = runKerf(dir, {"render", "tiny.kerf", "--width", "13", "--height",
-                                          "7", "-o", "o.png"});
+        const KerfRun run =
+            runKerf(dir, {"render", "tiny.kerf", "--width", "13", "--height", "7", "-o", "o.png"});
         REQUIRE(run.exitCode == 0);
         const kerf::Image image = kerf::readImage(dir.file("o.png"));
         CHECK(image.width == 13);

@@ -49,8 +49,8 @@ KerfRun runOnTerminal(const TempDir& dir, const std::string& kerfArgs) {
 TEST_CASE("kerf render --stats") {
     TempDir dir;
     dir.write("matte.kerf", kMatteModel);
-    const KerfRun run = runKerf(dir, {"render", "matte.kerf", "-o", "m.png", "--stats",
-                                      "--spp", "4", "--threads", "2", "--tolerance", "1e-6"});
+    const KerfRun run = runKerf(dir, {"render", "matte.kerf", "-o", "m.png", "--stats", "--spp",
+                                      "4", "--threads", "2", "--tolerance", "1e-6"});
     INFO("stderr:\n" << run.err);
     REQUIRE(run.exitCode == 0);
     CHECK(statsValue(run.err, "image") == "20 x 10");
@@ -61,9 +61,9 @@ TEST_CASE("kerf render --stats") {
     CHECK(statsValue(run.err, "camera rays") == std::to_string(20 * 10 * 4));
     CHECK(statsValue(run.err, "reflection rays") == "0");
     CHECK(statsValue(run.err, "refraction rays") == "0");
-    for (const char* label : {"shadow rays", "primitive tests", "bounds tests",
-                              "root-finder steps", "interval evaluations", "parse \\+ compile",
-                              "setup", "trace", "write", "rays per second"}) {
+    for (const char* label : {"shadow rays", "primitive tests", "bounds tests", "root-finder steps",
+                              "interval evaluations", "parse \\+ compile", "setup", "trace",
+                              "write", "rays per second"}) {
         CHECK(statsValue(run.err, label) != "<absent>");
     }
 }
@@ -79,10 +79,13 @@ TEST_CASE("kerf render --stats: samples per pixel as traced") {
         const char* printed;
         int traced;
     };
-    for (const Case& c : {Case{"5", "", "5, jittered, box filter", 5}, Case{"9", "lattice", "9, lattice, box filter", 9},
-                          Case{"2", "random", "2, random, box filter", 2}, Case{"1", "regular", "1, regular, box filter", 1}}) {
+    for (const Case& c : {Case{"5", "", "5, jittered, box filter", 5},
+                          Case{"9", "lattice", "9, lattice, box filter", 9},
+                          Case{"2", "random", "2, random, box filter", 2},
+                          Case{"1", "regular", "1, regular, box filter", 1}}) {
         INFO("--spp " << c.spp << " --sampler " << c.sampler);
-        std::vector<std::string> args{"render", "matte.kerf", "-o", "m.png", "--stats", "--spp", c.spp};
+        std::vector<std::string> args{"render",  "matte.kerf", "-o", "m.png",
+                                      "--stats", "--spp",      c.spp};
         if (*c.sampler) args.insert(args.end(), {"--sampler", c.sampler});
         const KerfRun run = runKerf(dir, args);
         REQUIRE(run.exitCode == 0);
@@ -101,8 +104,9 @@ TEST_CASE("kerf render --stats: samples per pixel as traced") {
         const KerfRun run =
             runKerf(dir, {"render", "matte.kerf", "-o", "m.png", "--sampler", "sobol"});
         CHECK(run.exitCode == 2);
-        CHECK(run.err.find("--sampler must be regular, random, jittered or lattice (got 'sobol')") !=
-              std::string::npos);
+        CHECK(
+            run.err.find("--sampler must be regular, random, jittered or lattice (got 'sobol')") !=
+            std::string::npos);
     }
 }
 
@@ -133,9 +137,9 @@ TEST_CASE("kerf render: the same pixels whatever --threads") {
     TempDir dir;
     const std::string model = (modelsDir() / "glass.kerf").string();
     for (const char* threads : {"1", "3"}) {
-        const KerfRun run = runKerf(dir, {"render", model, "--width", "48", "--height", "36",
-                                          "--spp", "4", "--threads", threads, "-o",
-                                          std::string("t") + threads + ".exr"});
+        const KerfRun run =
+            runKerf(dir, {"render", model, "--width", "48", "--height", "36", "--spp", "4",
+                          "--threads", threads, "-o", std::string("t") + threads + ".exr"});
         REQUIRE(run.exitCode == 0);
     }
     const kerf::Image one = kerf::readImage(dir.file("t1.exr"));

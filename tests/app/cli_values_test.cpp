@@ -14,7 +14,8 @@ namespace {
 
 std::string statsLine(const std::string& text, const std::string& label) {
     std::smatch match;
-    if (!std::regex_search(text, match, std::regex("\\n\\s*" + label + "\\s+([^\\n]*)\\n"))) return "<absent>";
+    if (!std::regex_search(text, match, std::regex("\\n\\s*" + label + "\\s+([^\\n]*)\\n")))
+        return "<absent>";
     return match[1].str();
 }
 
@@ -34,16 +35,19 @@ std::string mirrorBox(const std::string& reflect) {
 TEST_CASE("kerf render: weights that add energy are refused at the property") {
     TempDir dir;
     dir.write("mirror.kerf", mirrorBox("2"));
-    dir.write("glass.kerf", "material g { color <1, 1, 1> transmit 1 reflect 1 ior 1.5 }\n"
-                            "object sphere {} material g;\nrender { max_depth 1000 }\n");
+    dir.write("glass.kerf",
+              "material g { color <1, 1, 1> transmit 1 reflect 1 ior 1.5 }\n"
+              "object sphere {} material g;\nrender { max_depth 1000 }\n");
     const KerfRun mirror = runKerf(dir, {"render", "mirror.kerf", "-o", "mirror.png"});
     INFO(mirror.err);
     CHECK(mirror.exitCode == 2);
-    CHECK(mirror.err.find("mirror.kerf:1:38: error: material reflect must be at most 1, got 2") != std::string::npos);
+    CHECK(mirror.err.find("mirror.kerf:1:38: error: material reflect must be at most 1, got 2") !=
+          std::string::npos);
     const KerfRun glass = runKerf(dir, {"render", "glass.kerf", "-o", "glass.png"});
     INFO(glass.err);
     CHECK(glass.exitCode == 2);
-    CHECK(glass.err.find("glass.kerf:1:49: error: material reflect + transmit must be at most 1") != std::string::npos);
+    CHECK(glass.err.find("glass.kerf:1:49: error: material reflect + transmit must be at most 1") !=
+          std::string::npos);
     CHECK_FALSE(fs::exists(dir.file("mirror.png")));
     CHECK_FALSE(fs::exists(dir.file("glass.png")));
 }

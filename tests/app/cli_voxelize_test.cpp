@@ -9,9 +9,10 @@ using namespace kerf::test;
 
 TEST_CASE("cli_voxelize/writes a .vdb, its statistics and notes") {
     TempDir dir;
-    dir.write("ball.kerf", "object sphere { radius 1 };\n"
-                           "object halfspace { normal <0, 1, 0> offset -1 };\n"
-                           "object disc { center <0, 3, 0> normal <0, 1, 0> radius 1 };\n");
+    dir.write("ball.kerf",
+              "object sphere { radius 1 };\n"
+              "object halfspace { normal <0, 1, 0> offset -1 };\n"
+              "object disc { center <0, 3, 0> normal <0, 1, 0> radius 1 };\n");
     const KerfRun run =
         runKerf(dir, {"voxelize", "ball.kerf", "-o", "ball.vdb", "--voxel", "0.1", "--stats"});
     INFO(run.err);
@@ -38,18 +39,29 @@ TEST_CASE("cli_voxelize/bad options exit 2 and write nothing") {
         const char* message;
     };
     const Case cases[] = {
-        {{"ball.kerf", "-o", "b.vdb", "--voxel", "0"}, "--voxel must be a finite number greater than 0"},
-        {{"ball.kerf", "-o", "b.vdb", "--voxel=-0.1"}, "--voxel must be a finite number greater than 0"},
-        {{"ball.kerf", "-o", "b.vdb", "--voxel", "nan"}, "--voxel must be a finite number greater than 0"},
+        {{"ball.kerf", "-o", "b.vdb", "--voxel", "0"},
+         "--voxel must be a finite number greater than 0"},
+        {{"ball.kerf", "-o", "b.vdb", "--voxel=-0.1"},
+         "--voxel must be a finite number greater than 0"},
+        {{"ball.kerf", "-o", "b.vdb", "--voxel", "nan"},
+         "--voxel must be a finite number greater than 0"},
         {{"ball.kerf", "-o", "b.vdb", "--voxel", "abc"}, "--voxel must be a number"},
-        {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.1", "--band", "0.5"}, "--band must be a number of voxels from 1 to 16"},
-        {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.1", "--band", "17"}, "--band must be a number of voxels from 1 to 16"},
-        {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.1", "--max-voxels", "0"}, "--max-voxels must be a whole number"},
-        {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.1", "--max-voxels", "1.5"}, "--max-voxels must be a whole number"},
-        {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.001"}, "active voxels estimated at --voxel 0.001"},
-        {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.1", "--max-voxels", "1000"}, "more than the limit 1000"},
-        {{"ball.kerf", "-o", "b.vdb", "--voxel", "1e-4"}, "a surface of about 12.56 square units"},  // 4π
-        {{"ball.kerf", "-o", "b.vdb", "--voxel", "1e-9"}, "smaller than an OpenVDB transform can be"},
+        {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.1", "--band", "0.5"},
+         "--band must be a number of voxels from 1 to 16"},
+        {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.1", "--band", "17"},
+         "--band must be a number of voxels from 1 to 16"},
+        {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.1", "--max-voxels", "0"},
+         "--max-voxels must be a whole number"},
+        {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.1", "--max-voxels", "1.5"},
+         "--max-voxels must be a whole number"},
+        {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.001"},
+         "active voxels estimated at --voxel 0.001"},
+        {{"ball.kerf", "-o", "b.vdb", "--voxel", "0.1", "--max-voxels", "1000"},
+         "more than the limit 1000"},
+        {{"ball.kerf", "-o", "b.vdb", "--voxel", "1e-4"},
+         "a surface of about 12.56 square units"},  // 4π
+        {{"ball.kerf", "-o", "b.vdb", "--voxel", "1e-9"},
+         "smaller than an OpenVDB transform can be"},
         {{"big.kerf", "-o", "b.vdb", "--voxel", "1e-3"}, "past OpenVDB's 32-bit coordinates"},
         {{"ball.kerf", "-o", "b.obj", "--voxel", "0.1"}, "-o: the output must end in .vdb"},
         {{"plane.kerf", "-o", "b.vdb", "--voxel", "0.1"}, "no solid object to voxelize"},

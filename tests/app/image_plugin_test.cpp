@@ -82,9 +82,9 @@ TEST_CASE("kerf without its image plug-in") {
         fs::copy_file(KERF_SOME_SHARED_LIBRARY, plugin);
         const KerfRun run = runBinary(dir, "", kerf, {"render", "ball.kerf", "-o", "b.png"});
         CHECK(run.exitCode == 1);
-        CHECK(run.err.rfind("kerf: error: cannot load image support '" + plugin +
-                                "': no entry point",
-                            0) == 0);
+        CHECK(run.err.rfind(
+                  "kerf: error: cannot load image support '" + plugin + "': no entry point", 0) ==
+              0);
         CHECK(!fs::exists(dir.file("b.png")));
     }
     SECTION("a file that is not a plug-in is refused the same way") {

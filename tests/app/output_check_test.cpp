@@ -32,11 +32,10 @@ TEST_CASE("kerf render checks every output before any work") {
         CHECK(run.err == "kerf: error: cannot write 'a/b/x.exr': folder 'a/b' does not exist\n");
     }
     SECTION("an AOV's folder does not exist") {
-        const KerfRun run = runKerf(
-            dir, {"render", "broken.kerf", "-o", "x.png", "--aov", "normal=maps/n.exr"});
+        const KerfRun run =
+            runKerf(dir, {"render", "broken.kerf", "-o", "x.png", "--aov", "normal=maps/n.exr"});
         CHECK(run.exitCode == 1);
-        CHECK(run.err ==
-              "kerf: error: cannot write 'maps/n.exr': folder 'maps' does not exist\n");
+        CHECK(run.err == "kerf: error: cannot write 'maps/n.exr': folder 'maps' does not exist\n");
     }
     SECTION("the output is a folder") {
         fs::create_directory(dir.path() / "x.png");
@@ -47,7 +46,8 @@ TEST_CASE("kerf render checks every output before any work") {
     SECTION("the folder is a file") {
         const KerfRun run = runKerf(dir, {"render", "broken.kerf", "-o", "notes.txt/x.png"});
         CHECK(run.exitCode == 1);
-        CHECK(run.err == "kerf: error: cannot write 'notes.txt/x.png': 'notes.txt' is not a folder\n");
+        CHECK(run.err ==
+              "kerf: error: cannot write 'notes.txt/x.png': 'notes.txt' is not a folder\n");
     }
     SECTION("nothing is written and nothing is left behind") {
         runKerf(dir, {"render", "tiny.kerf", "-o", "out/x.png", "--aov", "depth=d.exr"});
@@ -61,8 +61,7 @@ TEST_CASE("kerf render: an output name that is only an extension") {
     SECTION("-o .png") {
         const KerfRun run = runKerf(dir, {"render", "tiny.kerf", "-o", ".png"});
         CHECK(run.exitCode == 2);
-        CHECK(run.err ==
-              "kerf: error: -o: output '.png' has no file name before the extension\n");
+        CHECK(run.err == "kerf: error: -o: output '.png' has no file name before the extension\n");
     }
     SECTION("-o out/.JPG") {
         fs::create_directory(dir.path() / "out");
@@ -88,8 +87,8 @@ TEST_CASE("kerf bench accuracy checks its tables before the run") {
     TempDir dir;
     fs::create_directories(dir.path() / "out" / "accuracy.svg");  // a folder in the way
     const std::string sceneDir = (fs::path(KERF_SOURCE_DIR) / "accuracy" / "scenes").string();
-    const KerfRun run = runKerf(dir, {"bench", "accuracy", "--quick", "--out", "out",
-                                      "--scene-dir", sceneDir, "--scenes", "sphere"});
+    const KerfRun run = runKerf(dir, {"bench", "accuracy", "--quick", "--out", "out", "--scene-dir",
+                                      sceneDir, "--scenes", "sphere"});
     INFO("stderr:\n" << run.err);
     CHECK(run.exitCode == 1);
     // Only the error: the run announces itself ("kerf bench accuracy: 1 scenes …") first.

@@ -28,8 +28,8 @@ TEST_CASE("kerf render: an output that cannot be written") {
         CHECK(fs::is_empty(dir.path() / "out.png"));
     }
     SECTION("an AOV that cannot be written") {
-        const KerfRun run = runKerf(dir, {"render", "tiny.kerf", "-o", "out.png", "--aov",
-                                          "depth=nowhere/depth.exr"});
+        const KerfRun run = runKerf(
+            dir, {"render", "tiny.kerf", "-o", "out.png", "--aov", "depth=nowhere/depth.exr"});
         INFO("stderr:\n" << run.err);
         CHECK(run.exitCode == 1);
         CHECK(run.err.find("nowhere/depth.exr") != std::string::npos);

@@ -16,8 +16,8 @@ using namespace kerf::test;
 namespace {
 
 struct ImageDifference {
-    double rmse = 0;              ///< over every channel of every pixel, values clamped to [0, 1]
-    double fractionOver = 0;      ///< pixels with some channel differing by more than 0.1
+    double rmse = 0;          ///< over every channel of every pixel, values clamped to [0, 1]
+    double fractionOver = 0;  ///< pixels with some channel differing by more than 0.1
 };
 
 ImageDifference compare(const kerf::Image& a, const kerf::Image& b) {
@@ -49,8 +49,9 @@ TEST_CASE("small renders match the stored references") {
     for (const char* name : {"cup", "glass", "tori_cones", "gyroid_sphere"}) {
         const fs::path reference = testDataDir() / (std::string(name) + "_80x60.exr");
         const std::string out = std::string(name) + ".exr";
-        const KerfRun run = runKerf(dir, {"render", (modelsDir() / (std::string(name) + ".kerf")).string(),
-                                          "--width", "80", "--height", "60", "--spp", "1", "-o", out});
+        const KerfRun run =
+            runKerf(dir, {"render", (modelsDir() / (std::string(name) + ".kerf")).string(),
+                          "--width", "80", "--height", "60", "--spp", "1", "-o", out});
         INFO(name << "\nstderr:\n" << run.err);
         REQUIRE(run.exitCode == 0);
         const kerf::Image expected = kerf::readImage(reference.string());

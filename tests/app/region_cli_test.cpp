@@ -18,7 +18,8 @@ using namespace kerf::test;
 namespace {
 
 /// A lit scene whose pixels all differ a little (shading, a shadow, an edge per tile row).
-const char* kModel = R"(material clay { color <0.8, 0.5, 0.3> ambient 0.1 diffuse 0.8 specular 0.3 shininess 20 }
+const char* kModel =
+    R"(material clay { color <0.8, 0.5, 0.3> ambient 0.1 diffuse 0.8 specular 0.3 shininess 20 }
 material blue { color <0.4, 0.6, 0.8> diffuse 0.9 }
 object sphere { center <0, 0, 0> radius 1 } material clay;
 object box { min <-3, -1.4, -3> max <3, -1, 3> } material blue;
@@ -51,7 +52,9 @@ std::vector<std::string> renderQuarters(const TempDir& dir, const std::vector<st
 TEST_CASE("kerf render --region: an EXR whose data window is the region") {
     TempDir dir;
     dir.write("m.kerf", kModel);
-    REQUIRE(runKerf(dir, {"render", "m.kerf", "-q", "--region", "3,5,20,9", "-o", "r.exr"}).exitCode == 0);
+    REQUIRE(
+        runKerf(dir, {"render", "m.kerf", "-q", "--region", "3,5,20,9", "-o", "r.exr"}).exitCode ==
+        0);
     ImageWindow window;
     const Image part = readImage(dir.file("r.exr"), window);
     CHECK(part.width == 17);
@@ -72,7 +75,8 @@ TEST_CASE("kerf assemble: four region parts make the full render, bit for bit") 
         full.insert(full.end(), options.begin(), options.end());
         REQUIRE(runKerf(dir, full).exitCode == 0);
         std::vector<std::string> assemble{"assemble", "whole.exr"};
-        for (const std::string& p : renderQuarters(dir, {"--filter", filter})) assemble.push_back(p);
+        for (const std::string& p : renderQuarters(dir, {"--filter", filter}))
+            assemble.push_back(p);
         const KerfRun run = runKerf(dir, assemble);
         INFO(run.err);
         REQUIRE(run.exitCode == 0);
@@ -91,8 +95,9 @@ TEST_CASE("kerf assemble: missing and overlapping parts are errors naming them")
         CHECK(!fs::exists(dir.file("whole.exr")));
     }
     SECTION("two parts overlap") {
-        REQUIRE(runKerf(dir, {"render", "m.kerf", "-q", "--region", "15,10,30,20", "-o", "extra.exr"})
-                    .exitCode == 0);
+        REQUIRE(
+            runKerf(dir, {"render", "m.kerf", "-q", "--region", "15,10,30,20", "-o", "extra.exr"})
+                .exitCode == 0);
         std::vector<std::string> args{"assemble", "whole.exr"};
         args.insert(args.end(), parts.begin(), parts.end());
         args.push_back("extra.exr");
@@ -103,21 +108,25 @@ TEST_CASE("kerf assemble: missing and overlapping parts are errors naming them")
     }
     SECTION("parts of different images") {
         REQUIRE(runKerf(dir, {"render", "m.kerf", "-q", "--width", "46", "--region", "0,0,21,13",
-                              "-o", "other.exr"}).exitCode == 0);
-        const KerfRun run = runKerf(dir, {"assemble", "whole.exr", "other.exr", parts[1], parts[2], parts[3]});
+                              "-o", "other.exr"})
+                    .exitCode == 0);
+        const KerfRun run =
+            runKerf(dir, {"assemble", "whole.exr", "other.exr", parts[1], parts[2], parts[3]});
         CHECK(run.exitCode == 2);
         CHECK(run.err.find("parts of different images") != std::string::npos);
     }
     SECTION("a PNG part, which holds no place") {
         REQUIRE(runKerf(dir, {"render", "m.kerf", "-q", "--region", "0,0,21,13", "-o", "p.png"})
                     .exitCode == 0);
-        const KerfRun run = runKerf(dir, {"assemble", "whole.exr", "p.png", parts[1], parts[2], parts[3]});
+        const KerfRun run =
+            runKerf(dir, {"assemble", "whole.exr", "p.png", parts[1], parts[2], parts[3]});
         CHECK(run.exitCode == 2);
         CHECK(run.err.find("'p.png'") != std::string::npos);
     }
     SECTION("the output is one of the parts") {
         const std::string before = readFile(dir.file(parts[0]));
-        const KerfRun run = runKerf(dir, {"assemble", parts[0], parts[0], parts[1], parts[2], parts[3]});
+        const KerfRun run =
+            runKerf(dir, {"assemble", parts[0], parts[0], parts[1], parts[2], parts[3]});
         CHECK(run.exitCode == 2);
         CHECK(readFile(dir.file(parts[0])) == before);
     }
@@ -129,7 +138,8 @@ TEST_CASE("kerf render --region: a bad region is an error naming --region") {
     for (const char* region : {"0,0,46,10", "0,0,10,35", "5,5,5,9", "9,5,4,7", "1,2,3", "1,2,3,4,5",
                                "a,0,3,3", "-1,0,3,3", ""}) {
         CAPTURE(region);
-        const KerfRun run = runKerf(dir, {"render", "m.kerf", "-q", "--region", region, "-o", "r.exr"});
+        const KerfRun run =
+            runKerf(dir, {"render", "m.kerf", "-q", "--region", region, "-o", "r.exr"});
         CHECK(run.exitCode == 2);
         CHECK(run.err.find("--region") != std::string::npos);
         CHECK(!fs::exists(dir.file("r.exr")));
@@ -165,8 +175,8 @@ TEST_CASE("kerf-mpi render on 2 ranks: the same image as kerf render, bit for bi
         CAPTURE(filter);
         TempDir dir;
         dir.write("m.kerf", kModel);
-        const std::vector<std::string> common{"m.kerf", "-q", "--threads", "1", "--filter", filter,
-                                              "--aov", "normal=n.exr"};
+        const std::vector<std::string> common{"m.kerf",   "-q",   "--threads", "1",
+                                              "--filter", filter, "--aov",     "normal=n.exr"};
         std::vector<std::string> one{"render", "-o", "one.exr"}, two{"render", "-o", "two.exr"};
         one.insert(one.end(), common.begin(), common.end());
         two.insert(two.end(), common.begin(), common.end());
@@ -189,8 +199,10 @@ TEST_CASE("kerf-mpi render --frames: each frame the same as kerf render's, bit f
               "camera { eye <0, 0, -5> look_at <0, 0, 0> fov 40 }\n"
               "light point { at <-2, 5, -3> power 400 }\n"
               "render { width 40 height 30 }\n");
-    REQUIRE(runKerf(dir, {"render", "grow.kerf", "-q", "--frames", "1-2", "-o", "one_%d.exr"}).exitCode == 0);
-    const KerfRun run = runMpi(dir, {"render", "grow.kerf", "-q", "--frames", "1-2", "-o", "two_%d.exr"});
+    REQUIRE(runKerf(dir, {"render", "grow.kerf", "-q", "--frames", "1-2", "-o", "one_%d.exr"})
+                .exitCode == 0);
+    const KerfRun run =
+        runMpi(dir, {"render", "grow.kerf", "-q", "--frames", "1-2", "-o", "two_%d.exr"});
     INFO(run.err);
     REQUIRE(run.exitCode == 0);
     CHECK(sameBits(readImage(dir.file("one_1.exr")), readImage(dir.file("two_1.exr"))));
@@ -201,8 +213,11 @@ TEST_CASE("kerf-mpi render --frames: each frame the same as kerf render's, bit f
 TEST_CASE("kerf-mpi slice --stack: the layers shared out, the files those of kerf slice") {
     TempDir dir;
     dir.write("m.kerf", kModel);
-    REQUIRE(runKerf(dir, {"slice", "m.kerf", "-q", "--stack", "y=-0.8:0.8:0.2", "-o", "one_%02d.svg"}).exitCode == 0);
-    const KerfRun run = runMpi(dir, {"slice", "m.kerf", "-q", "--stack", "y=-0.8:0.8:0.2", "-o", "two_%02d.svg"});
+    REQUIRE(
+        runKerf(dir, {"slice", "m.kerf", "-q", "--stack", "y=-0.8:0.8:0.2", "-o", "one_%02d.svg"})
+            .exitCode == 0);
+    const KerfRun run =
+        runMpi(dir, {"slice", "m.kerf", "-q", "--stack", "y=-0.8:0.8:0.2", "-o", "two_%02d.svg"});
     INFO(run.err);
     REQUIRE(run.exitCode == 0);
     int layers = 0;

@@ -18,7 +18,9 @@ namespace {
 
 std::string texturedModel(const std::string& file) {
     return "camera { eye <0, 0, -4> look_at <0, 0, 0> fov 40 }\n"
-           "material tex { pattern image { file \"" + file + "\" mapping planar } ambient 1 diffuse 0 specular 0 }\n"
+           "material tex { pattern image { file \"" +
+           file +
+           "\" mapping planar } ambient 1 diffuse 0 specular 0 }\n"
            "object box { min <-1, -1, -1> max <1, 1, 1> } material tex;\n"
            "render { width 8 height 8 spp 1 }\n";
 }
@@ -47,8 +49,9 @@ TEST_CASE("kerf render: a missing or unreadable texture is exit 2 at its file pr
             INFO(bad.what << ", " << command << "\nstderr:\n" << run.err);
             CHECK(run.exitCode == kExitUsage);
             // Line 2, the column of the file name's opening quote.
-            const std::string expected = std::string(R"(models/scene\.kerf:2:\d+: error: cannot read texture ')") +
-                                         bad.file + "': " + bad.reason;
+            const std::string expected =
+                std::string(R"(models/scene\.kerf:2:\d+: error: cannot read texture ')") +
+                bad.file + "': " + bad.reason;
             CHECK(std::regex_search(run.err, std::regex(expected)));
             CHECK_FALSE(fs::exists(dir.path() / "out.png"));
         }

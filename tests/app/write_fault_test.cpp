@@ -57,9 +57,10 @@ TEST_CASE("kerf render on a full disk: an AOV keeps its earlier file") {
 
     Environment env = faultEnvironment("depth.exr");
     env.push_back({"KERF_FAULT_AFTER", "0"});  // no room at all
-    KerfChild child(dir, {"render", "tiny.kerf", "-q", "-o", "out.png", "--aov",
-                          "depth=depth.exr", "--width", "20"},
-                    env);
+    KerfChild child(
+        dir,
+        {"render", "tiny.kerf", "-q", "-o", "out.png", "--aov", "depth=depth.exr", "--width", "20"},
+        env);
     REQUIRE(child.wait());
     const std::string err = child.err();
     INFO("stderr:\n" << err);
@@ -72,7 +73,8 @@ TEST_CASE("kerf render on a full disk: an AOV keeps its earlier file") {
 TEST_CASE("failures the write calls do not show: at fsync, or bytes lost") {
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"KERF_FAULT_FSYNC", "kerf: error: cannot write 'out.png': Input/output error\n"},
-        {"KERF_FAULT_DROP", "kerf: error: cannot write 'out.png': the file holds 0 bytes instead of "}};
+        {"KERF_FAULT_DROP",
+         "kerf: error: cannot write 'out.png': the file holds 0 bytes instead of "}};
     for (const auto& [variable, message] : cases) {
         DYNAMIC_SECTION(variable) {
             TempDir dir;
@@ -102,9 +104,9 @@ TEST_CASE("kerf bench accuracy on a full disk keeps the earlier CSV") {
 
     Environment env = faultEnvironment("accuracy.csv");
     env.push_back({"KERF_FAULT_AFTER", "10"});
-    KerfChild child(dir, {"bench", "accuracy", "--quick", "--out", "out", "--scene-dir", sceneDir,
-                          "--scenes", "sphere", "--methods", "closed", "--width", "8",
-                          "--height", "6"},
+    KerfChild child(dir,
+                    {"bench", "accuracy", "--quick", "--out", "out", "--scene-dir", sceneDir,
+                     "--scenes", "sphere", "--methods", "closed", "--width", "8", "--height", "6"},
                     env);
     REQUIRE(child.wait());
     const std::string err = child.err();

@@ -1,7 +1,7 @@
 // Boolean and transform nodes against independent oracles: brute-force span combination,
 // closed-form ellipsoids, and the point-wise definition of each operation.
-#include "csg/scene_geometry.h"
-#include "csg/solids.h"
+#include "csg/bvh/scene_geometry.h"
+#include "csg/tree/solids.h"
 
 #include <catch2/catch.hpp>
 
@@ -21,7 +21,8 @@ bool insideSpans(const SpanList& s, double t) {
 std::vector<NodePtr> randomSpheres(std::mt19937_64& rng, int n) {
     std::uniform_real_distribution<double> pos(-2.0, 2.0), rad(0.05, 0.2);
     std::vector<NodePtr> spheres;
-    for (int i = 0; i < n; ++i) spheres.push_back(makeSphere({pos(rng), pos(rng) * 0.5, pos(rng)}, rad(rng)));
+    for (int i = 0; i < n; ++i)
+        spheres.push_back(makeSphere({pos(rng), pos(rng) * 0.5, pos(rng)}, rad(rng)));
     return spheres;
 }
 
@@ -34,8 +35,7 @@ Ray randomRayThrough(std::mt19937_64& rng, double spread) {
 
 }  // namespace
 
-TEST_CASE("makeBoolean: a box minus 1000 spheres equals the brute-force combination",
-          "[boolean]") {
+TEST_CASE("makeBoolean: a box minus 1000 spheres equals the brute-force combination", "[boolean]") {
     std::mt19937_64 rng(7);
     std::vector<NodePtr> children{makeBox({-2, -1, -2}, {2, 1, 2})};
     const std::vector<NodePtr> spheres = randomSpheres(rng, 1000);
@@ -73,8 +73,7 @@ TEST_CASE("makeBoolean: a box minus 1000 spheres equals the brute-force combinat
     CHECK(perRay < 40.0);
 }
 
-TEST_CASE("makeBoolean: membership along rays matches value() for every operation",
-          "[boolean]") {
+TEST_CASE("makeBoolean: membership along rays matches value() for every operation", "[boolean]") {
     std::mt19937_64 rng(11);
     const NodePtr a = makeSphere({0, 0, 0}, 1.0);
     const NodePtr b = makeBox({-0.3, -2, -0.7}, {1.5, 0.4, 0.9});
@@ -129,8 +128,8 @@ TEST_CASE("makeBoolean: a cutter sharing faces with the body leaves a clean hole
 
 TEST_CASE("makeTransform: a scaled sphere is the closed-form ellipsoid", "[transform]") {
     const Vec3 radii(2.0, 0.5, 1.25), centre(1, -2, 3);
-    const NodePtr ellipsoid = makeTransform(
-        makeSphere({0, 0, 0}, 1.0), Affine::translate(centre).after(Affine::scale(radii)));
+    const NodePtr ellipsoid = makeTransform(makeSphere({0, 0, 0}, 1.0),
+                                            Affine::translate(centre).after(Affine::scale(radii)));
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> u(-1, 1);
     TraceContext ctx;
@@ -166,13 +165,13 @@ TEST_CASE("makeTransform: a scaled sphere is the closed-form ellipsoid", "[trans
     CHECK(hits > 500);
 }
 
-TEST_CASE("SceneGeometry::nearestHit: nearest object, instances, and rays from inside",
-          "[scene]") {
+TEST_CASE("SceneGeometry::nearestHit: nearest object, instances, and rays from inside", "[scene]") {
     const NodePtr unit = makeSphere({0, 0, 0}, 1.0);
     // One shared subtree, three instances.
     std::vector<NodePtr> objects;
     for (int i = 0; i < 3; ++i)
-        objects.push_back(makeMaterial(makeTransform(unit, Affine::translate({3.0 * i, 0, 0})), i + 1));
+        objects.push_back(
+            makeMaterial(makeTransform(unit, Affine::translate({3.0 * i, 0, 0})), i + 1));
     objects.push_back(makeHalfSpace({0, 1, 0}, -1.0));  // floor at y = -1, default material
     const SceneGeometry scene(objects);
     TraceContext ctx;
@@ -241,9 +240,9 @@ TEST_CASE("SceneGeometry::occluded: any surface within the segment blocks", "[sc
     const Ray along{{0, 0, -10}, {0, 0, 1}};
     CHECK(scene.occluded(along, 0.0, kInf, ctx));
     CHECK(scene.occluded(along, 0.0, 9.5, ctx));
-    CHECK_FALSE(scene.occluded(along, 0.0, 8.5, ctx));     // stops short of the first sphere
+    CHECK_FALSE(scene.occluded(along, 0.0, 8.5, ctx));  // stops short of the first sphere
     CHECK_FALSE(scene.occluded({{5, 0, -10}, {0, 0, 1}}, 0.0, kInf, ctx));  // passes beside
-    CHECK(scene.occluded({{5, 0, -10}, {0, -1, 0}}, 0.0, kInf, ctx));      // down to the floor
+    CHECK(scene.occluded({{5, 0, -10}, {0, -1, 0}}, 0.0, kInf, ctx));       // down to the floor
     // From inside a sphere the way out is a surface too.
     CHECK(scene.occluded({{0, 0, 3}, {1, 0, 0}}, 0.0, kInf, ctx));
 }

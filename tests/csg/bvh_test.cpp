@@ -5,7 +5,7 @@
 // subnormal direction components, and ranges that start below 0.
 #include <catch2/catch.hpp>
 
-#include "csg/bvh.h"
+#include "csg/bvh/bvh.h"
 
 #include <cfloat>
 #include <cmath>
@@ -115,17 +115,19 @@ void ranges(Sampler& s, double& tmin, double& tmax) {
         case 0: tmin = 0.0, tmax = kInf; break;
         case 1: tmin = -kInf, tmax = kInf; break;
         case 2: tmin = -std::fabs(s.scaled(-10, 10)), tmax = std::fabs(s.scaled(-10, 10)); break;
-        default: tmin = std::fabs(s.scaled(-20, 20)), tmax = tmin * (1.0 + std::fabs(s.scaled(-8, 8))); break;
+        default:
+            tmin = std::fabs(s.scaled(-20, 20)), tmax = tmin * (1.0 + std::fabs(s.scaled(-8, 8)));
+            break;
     }
 }
 
 std::string describe(const Ray& r, double tmin, double tmax, const Bounds3& b) {
     std::ostringstream os;
     os.precision(17);
-    os << "ray o=(" << r.origin.x << ", " << r.origin.y << ", " << r.origin.z << ") d=("
-       << r.dir.x << ", " << r.dir.y << ", " << r.dir.z << ") t in [" << tmin << ", " << tmax
-       << "], box (" << b.lo.x << ", " << b.lo.y << ", " << b.lo.z << ")-(" << b.hi.x << ", "
-       << b.hi.y << ", " << b.hi.z << ")";
+    os << "ray o=(" << r.origin.x << ", " << r.origin.y << ", " << r.origin.z << ") d=(" << r.dir.x
+       << ", " << r.dir.y << ", " << r.dir.z << ") t in [" << tmin << ", " << tmax << "], box ("
+       << b.lo.x << ", " << b.lo.y << ", " << b.lo.z << ")-(" << b.hi.x << ", " << b.hi.y << ", "
+       << b.hi.z << ")";
     return os.str();
 }
 
@@ -168,8 +170,9 @@ TEST_CASE("Bvh::traverse reports every box the exact segment meets, at every sca
                 for (char c : seen) reported += c;
             }
         }
-        INFO((split == Bvh::Split::Sah ? "SAH, " : "median, ") << sc.name << ": " << rays << " rays, " << exactHits << " exact box hits, "
-                     << reported << " reported; first lost: " << firstLost);
+        INFO((split == Bvh::Split::Sah ? "SAH, " : "median, ")
+             << sc.name << ": " << rays << " rays, " << exactHits << " exact box hits, " << reported
+             << " reported; first lost: " << firstLost);
         CHECK(exactHits > 0);
         CHECK(lost == 0);
         CHECK(lateEntries == 0);

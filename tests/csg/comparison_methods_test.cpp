@@ -1,14 +1,14 @@
 // csg/comparison_methods: every primitive's implicit form (Primitive::implicitExpr) is its
-// value(), a whole tree's tape (csg/tree_tape.h) is the tree's value(), and the generic
+// value(), a whole tree's tape (csg/tape/tree_tape.h) is the tree's value(), and the generic
 // interval method handles unbounded ranges (half-spaces) as the closed form does.
-#include "csg/comparison_methods.h"
+#include "csg/primitives/comparison_methods.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "csg/expr.h"
-#include "csg/solids.h"
-#include "csg/tree_tape.h"
+#include "csg/tape/expr.h"
+#include "csg/tape/tree_tape.h"
+#include "csg/tree/solids.h"
 #include "util/oracles.h"
 
 using namespace kerf;

@@ -2,7 +2,7 @@
 // 1e±300 (glm's determinant overflowed at 1e103), the relative determinant's independence of
 // scale, checkAffine's verdicts, and rays with an infinite origin or direction.
 #include "csg/affine_check.h"
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 
 #include <catch2/catch.hpp>
 
@@ -31,10 +31,12 @@ TEST_CASE("Affine::inverse at scales 1e-300 to 1e300") {
 }
 
 TEST_CASE("relativeDeterminant: the same at every scale, 0 when singular") {
-    const Mat3 m = Affine::rotateDegrees(Vec3(10, 20, 30)).linear * Mat3(1, 0, 0, 0.5, 1, 0, 0, 0, 2);
+    const Mat3 m =
+        Affine::rotateDegrees(Vec3(10, 20, 30)).linear * Mat3(1, 0, 0, 0.5, 1, 0, 0, 0, 2);
     const double unit = relativeDeterminant(m);
     CHECK(unit > 0.1);
-    for (const double s : {1e-300, 1e-150, 1e150, 1e300}) CHECK(relativeDeterminant(s * m) == Approx(unit).epsilon(1e-14));
+    for (const double s : {1e-300, 1e-150, 1e150, 1e300})
+        CHECK(relativeDeterminant(s * m) == Approx(unit).epsilon(1e-14));
     CHECK(relativeDeterminant(Mat3(1, 2, 3, 2, 4, 6, 0, 0, 1)) <= kSingularRelativeDeterminant);
     CHECK(relativeDeterminant(Mat3(0.0)) == 0.0);
     CHECK(std::isnan(relativeDeterminant(Mat3(kInf))));
@@ -44,14 +46,16 @@ TEST_CASE("checkAffine: not finite, singular, inverse not finite") {
     Affine inf = Affine::translate(Vec3(1e308, 0, 0));
     inf.offset.x *= 2.0;
     CHECK(checkAffine(inf) == AffineStatus::NotFinite);
-    CHECK(checkAffine(Affine::scale(Vec3(1e-200)).after(Affine::scale(Vec3(1e-200)))) == AffineStatus::Singular);
+    CHECK(checkAffine(Affine::scale(Vec3(1e-200)).after(Affine::scale(Vec3(1e-200)))) ==
+          AffineStatus::Singular);
     CHECK(checkAffine(Affine::scale(Vec3(1e-310))) == AffineStatus::InverseNotFinite);
     CHECK(checkAffine(Affine::scale(Vec3(1e-300))) == AffineStatus::Ok);
     CHECK(checkAffine(Affine::scale(Vec3(1e300))) == AffineStatus::Ok);
 }
 
 TEST_CASE("closed-form primitives: an infinite ray origin or direction meets nothing") {
-    const NodePtr solids[] = {makeSphere(Vec3(0.0), 1.0), makeCylinder(Vec3(0, -1, 0), Vec3(0, 1, 0), 1.0),
+    const NodePtr solids[] = {makeSphere(Vec3(0.0), 1.0),
+                              makeCylinder(Vec3(0, -1, 0), Vec3(0, 1, 0), 1.0),
                               makeCone(Vec3(0, -1, 0), Vec3(0, 1, 0), 1.0, 0.2)};
     const Ray rays[] = {{Vec3(kInf, 0, 0), Vec3(-1, 0, 0)},
                         {Vec3(-kInf, 0.1, 0), Vec3(1, 0, 0)},

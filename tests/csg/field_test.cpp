@@ -1,4 +1,4 @@
-// Op::Field, an external scalar field in a tape (csg/scalar_field.h): two fields kept apart by
+// Op::Field, an external scalar field in a tape (csg/tape/scalar_field.h): two fields kept apart by
 // the graph and the tape; every evaluator against the closed forms of a sphere's and a box's
 // signed distances (point, long double, gradient, slope along a ray; interval enclosures of
 // dense samples, and the exact range where the tape is the field alone); and tracing, as an
@@ -9,15 +9,15 @@
 #include <random>
 #include <stdexcept>
 
-#include "csg/comparison_methods.h"
-#include "csg/expr.h"
-#include "csg/implicit_expr.h"
-#include "csg/primitive.h"
-#include "csg/solids.h"
-#include "csg/tape.h"
-#include "csg/tape_ray_program.h"
+#include "csg/primitives/comparison_methods.h"
+#include "csg/primitives/implicit_expr.h"
+#include "csg/primitives/primitive.h"
+#include "csg/tape/expr.h"
+#include "csg/tape/tape.h"
+#include "csg/tape/tape_ray_program.h"
+#include "csg/tape/tree_tape.h"
 #include "csg/trace_context.h"
-#include "csg/tree_tape.h"
+#include "csg/tree/solids.h"
 #include "util/oracles.h"
 #include "util/test_fields.h"
 
@@ -58,7 +58,9 @@ struct Mixed {
     BoxField b = *boxField();
 
     LV mapA(const LV& p) const { return {2.0L * p.x, p.y + 0.5L * p.z, p.z}; }
-    long double branchA(const LV& p) const { return a.valueExtended(mapA(p)) - (long double)0.1 * p.x; }
+    long double branchA(const LV& p) const {
+        return a.valueExtended(mapA(p)) - (long double)0.1 * p.x;
+    }
     long double value(const LV& p) const { return std::min(branchA(p), b.valueExtended(p)); }
     /// The gradient where the two branches are apart (false at a near tie).
     bool gradient(const Vec3& p, Vec3& out) const {
@@ -83,7 +85,8 @@ void forSamples(const Bounds3& box, std::mt19937_64& rng, F&& f) {
     for (int i = 0; i < 5; ++i)
         for (int j = 0; j < 5; ++j)
             for (int k = 0; k < 5; ++k) f(box.lo + (box.hi - box.lo) * (Vec3(i, j, k) / 4.0));
-    for (int s = 0; s < 60; ++s) f(box.lo + (box.hi - box.lo) * Vec3(unit(rng), unit(rng), unit(rng)));
+    for (int s = 0; s < 60; ++s)
+        f(box.lo + (box.hi - box.lo) * Vec3(unit(rng), unit(rng), unit(rng)));
 }
 
 Bounds3 randomBox(std::mt19937_64& rng, double size) {
@@ -104,7 +107,9 @@ public:
         comparisonSpans(*this, ray, tmin, tmax, ctx, out);
     }
     double value(const Vec3& p) const override { return mField->value(p); }
-    Interval valueInterval(const IntervalVec3& b) const override { return mField->range(b.x, b.y, b.z); }
+    Interval valueInterval(const IntervalVec3& b) const override {
+        return mField->range(b.x, b.y, b.z);
+    }
     long double valueExtended(const LVec3& p) const override { return mField->valueExtended(p); }
     NodeKind kind() const override { return NodeKind::Mesh; }
     NodeParams params() const override { return MeshParams{nullptr, false}; }
@@ -119,7 +124,8 @@ private:
 /// The sphere's entry and exit along the ray in long double; false when it misses or grazes.
 bool sphereHits(const Ray& ray, long double& t0, long double& t1) {
     const LV o = LV(ray.origin) - LV(kCentre), d(ray.dir);
-    const long double a = glm::dot(d, d), b = glm::dot(o, d), c = glm::dot(o, o) - (long double)kRadius * kRadius;
+    const long double a = glm::dot(d, d), b = glm::dot(o, d),
+                      c = glm::dot(o, o) - (long double)kRadius * kRadius;
     const long double disc = b * b - a * c;
     if (disc <= 1e-12L * b * b) return false;  // near-tangent: within the reference's own doubt
     t0 = (-b - std::sqrt(disc)) / a;
@@ -220,7 +226,8 @@ TEST_CASE("field/interval evaluators enclose samples and give the field's exact 
                 CHECK(simpler->fields().size() == tape->fields().size());
                 // Four boxes at once, by each path: evalInterval's bits in every lane.
                 const Interval xs[4] = {x, x, x, x}, ys[4] = {y, y, y, y}, zs[4] = {z, z, z, z};
-                for (Tape::Lanes4 lanes : {Tape::Lanes4::Scalar, Tape::Lanes4::Avx2, Tape::Lanes4::Auto}) {
+                for (Tape::Lanes4 lanes :
+                     {Tape::Lanes4::Scalar, Tape::Lanes4::Avx2, Tape::Lanes4::Auto}) {
                     Interval out[4];
                     tape->evalInterval4(xs, ys, zs, out, lanes);
                     for (int k = 0; k < 4; ++k) {
@@ -230,7 +237,8 @@ TEST_CASE("field/interval evaluators enclose samples and give the field's exact 
                 }
                 forSamples(box, rng, [&](const Vec3& p) {
                     const double v = tape->eval(p);
-                    INFO("box " << boxes << " p=(" << p.x << "," << p.y << "," << p.z << ") v=" << v);
+                    INFO("box " << boxes << " p=(" << p.x << "," << p.y << "," << p.z
+                                << ") v=" << v);
                     CHECK(f.contains(v));
                     CHECK(fc.contains(v));
                     CHECK(simpler->eval(p) == v);  // the simplified tape's contract on its box
@@ -310,7 +318,8 @@ TEST_CASE("field/tracing hits the sphere at its analytic depth") {
         ctx.relTolerance = tolerance;
         for (int i = 0; i < 300; ++i) {
             Ray ray{kCentre + gaussianUnit(rng) * (2.0 + 6.0 * unit(rng)), Vec3(0.0)};
-            ray.dir = (kCentre + gaussianUnit(rng) * 1.1 * unit(rng) - ray.origin) * (0.1 + 3.0 * unit(rng));
+            ray.dir = (kCentre + gaussianUnit(rng) * 1.1 * unit(rng) - ray.origin) *
+                      (0.1 + 3.0 * unit(rng));
             long double t0 = 0.0L, t1 = 0.0L;
             const bool crosses = sphereHits(ray, t0, t1);
             INFO("tolerance " << tolerance << " ray " << i);

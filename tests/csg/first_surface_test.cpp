@@ -9,9 +9,9 @@
 #include <random>
 #include <sstream>
 
-#include "csg/expr.h"
-#include "csg/solids.h"
-#include "csg/tape.h"
+#include "csg/tape/expr.h"
+#include "csg/tape/tape.h"
+#include "csg/tree/solids.h"
 #include "util/oracles.h"
 #include "util/random_solids.h"
 
@@ -58,21 +58,20 @@ void compareOne(const Node& node, const Ray& ray, double tmin, double tmax, doub
     if (foundB) ++c.hits;
     const bool same =
         foundA == foundB &&
-        (!foundA ||
-         (withinTolerance
-              ? std::fabs(a.t - b.t) <= tolerance * std::fabs(b.t) && enteringA == enteringB
-              : a.t == b.t && a.normal == b.normal && enteringA == enteringB &&
-                    a.material == b.material && a.primitive == b.primitive &&
-                    a.relError == b.relError));
+        (!foundA || (withinTolerance ? std::fabs(a.t - b.t) <= tolerance * std::fabs(b.t) &&
+                                           enteringA == enteringB
+                                     : a.t == b.t && a.normal == b.normal &&
+                                           enteringA == enteringB && a.material == b.material &&
+                                           a.primitive == b.primitive && a.relError == b.relError));
     if (same) return;
     if (c.mismatches++ > 0) return;
     std::ostringstream s;
     s.precision(17);
     s << "ray o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=("
       << ray.dir.x << ", " << ray.dir.y << ", " << ray.dir.z << ") t in [" << tmin << ", " << tmax
-      << "] tol " << tolerance << ": early " << foundA << " t=" << a.t << " entering "
-      << enteringA << " material " << a.material << "; default " << foundB << " t=" << b.t
-      << " entering " << enteringB << " material " << b.material;
+      << "] tol " << tolerance << ": early " << foundA << " t=" << a.t << " entering " << enteringA
+      << " material " << a.material << "; default " << foundB << " t=" << b.t << " entering "
+      << enteringB << " material " << b.material;
     c.firstMismatch = s.str();
 }
 
@@ -85,10 +84,10 @@ Comparison compareRandom(const Node& node, const Vec3& centre, double half, int 
     Comparison c;
     for (int i = 0; i < count; ++i) {
         const double tolerance = i % 3 == 0 ? 1e-9 : (i % 3 == 1 ? 5e-4 : 2e-2);
-        const Vec3 origin = centre + half *
-                                         Vec3(2.0 * unit(rng) - 1.0, 2.0 * unit(rng) - 1.0,
-                                              2.0 * unit(rng) - 1.0) *
-                                         (i % 4 == 0 ? 0.6 : 2.5);
+        const Vec3 origin =
+            centre + half *
+                         Vec3(2.0 * unit(rng) - 1.0, 2.0 * unit(rng) - 1.0, 2.0 * unit(rng) - 1.0) *
+                         (i % 4 == 0 ? 0.6 : 2.5);
         const Vec3 target = centre + 0.7 * half * gaussianUnit(rng) * unit(rng);
         const Vec3 dir = glm::normalize(target - origin) * (0.05 + 4.0 * unit(rng));
         const Ray ray{origin, dir};
@@ -124,8 +123,7 @@ TEST_CASE("Implicit::firstSurface") {
                                    .after(Affine::scale(Vec3(scale)));
             const NodePtr wrapped = makeTransform(makeMaterial(g, 3), map);
             INFO("scale " << scale);
-            requireAgreement(
-                compareRandom(*wrapped, Vec3(3.0, 1.0, 0.0) * scale, scale, 1500, 17));
+            requireAgreement(compareRandom(*wrapped, Vec3(3.0, 1.0, 0.0) * scale, scale, 1500, 17));
         }
     }
 }
@@ -198,8 +196,8 @@ TEST_CASE("Tape::evalIntervalAlongRay with sin and cos of shared operands") {
             for (int a = 0; a < 3; ++a) {  // sin(p_a)·cos(p_{a+1})
                 const int b = (a + 1) % 3;
                 value += std::sin(p[a]) * std::cos(p[b]);
-                slope += std::cos(p[a]) * d[a] * std::cos(p[b]) -
-                         std::sin(p[a]) * std::sin(p[b]) * d[b];
+                slope +=
+                    std::cos(p[a]) * d[a] * std::cos(p[b]) - std::sin(p[a]) * std::sin(p[b]) * d[b];
             }
             // The long-double reference is itself rounded: allow a few of its ulps.
             const long double slack = 1e-15L;
@@ -236,8 +234,8 @@ TEST_CASE("HalfSpace::firstSurface") {
             Vec3 origin(unit(rng), unit(rng), unit(rng));
             Vec3 dir(unit(rng), unit(rng), unit(rng));
             if (i % 5 == 1) dir.y = (i % 2 ? 0.0 : -0.0);  // parallel to the axis planes
-            if (i % 7 == 2) origin.y = 0.0;                 // on the floor
-            if (i % 11 == 3) origin *= 1e7;                 // far away: cancelling dots
+            if (i % 7 == 2) origin.y = 0.0;                // on the floor
+            if (i % 11 == 3) origin *= 1e7;                // far away: cancelling dots
             const double tmin = i % 3 == 1 ? std::fabs(unit(rng)) : 0.0;
             const double tmax = i % 4 == 2 ? tmin + std::fabs(unit(rng)) : kInf;
             compareOne(*plane, {origin, dir}, tmin, tmax, 1e-9, c);
@@ -249,12 +247,13 @@ TEST_CASE("HalfSpace::firstSurface") {
         compareOne(*plane, {Vec3(0.0, 0.0, 0.0), Vec3(0.0, -1.0, 0.0)}, 0.0, kInf, 1e-9, c);
     }
     // Under a transform and a material, as the objects of a scene are.
-    const NodePtr wrapped = makeMaterial(
-        makeTransform(planes[2], Affine::rotateDegrees(Vec3(20.0, 0.0, 45.0))), 4);
+    const NodePtr wrapped =
+        makeMaterial(makeTransform(planes[2], Affine::rotateDegrees(Vec3(20.0, 0.0, 45.0))), 4);
     for (int i = 0; i < 2000; ++i)
-        compareOne(*wrapped, {Vec3(unit(rng), unit(rng), unit(rng)) * 3.0,
-                              Vec3(unit(rng), unit(rng), unit(rng))},
-                   0.0, kInf, 1e-9, c);
+        compareOne(
+            *wrapped,
+            {Vec3(unit(rng), unit(rng), unit(rng)) * 3.0, Vec3(unit(rng), unit(rng), unit(rng))},
+            0.0, kInf, 1e-9, c);
     INFO(c.firstMismatch);
     REQUIRE(c.mismatches == 0);
     REQUIRE(c.hits > c.rays / 4);
@@ -279,8 +278,7 @@ TEST_CASE("Union::firstSurface") {
         if (kids.empty()) continue;
         const NodePtr u = makeBoolean(BoolOp::Union, kids);
         INFO("trial " << trial << ", " << kids.size() << " children");
-        const Comparison c =
-            compareRandom(*u, Vec3(0.0), 1.5, 300, 100 + uint64_t(trial), true);
+        const Comparison c = compareRandom(*u, Vec3(0.0), 1.5, 300, 100 + uint64_t(trial), true);
         INFO(c.firstMismatch);
         REQUIRE(c.mismatches == 0);
         REQUIRE(c.hits > 0);
@@ -291,8 +289,8 @@ TEST_CASE("Implicit::firstSurface for shadow rays (occlusion only)") {
     // Shadow rays ask only where a surface is: the crossing may be polished to the tolerance
     // instead of double precision, and get no normal. Found or not and the side crossed must
     // not change, and t must stay within the tolerance of the full search's.
-    const NodePtr g = makeTransform(makeMaterial(gyroid(), 1),
-                                    Affine::rotateDegrees(Vec3(15.0, -30.0, 5.0)));
+    const NodePtr g =
+        makeTransform(makeMaterial(gyroid(), 1), Affine::rotateDegrees(Vec3(15.0, -30.0, 5.0)));
     std::mt19937_64 rng(99);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     int hits = 0;
@@ -331,11 +329,10 @@ TEST_CASE("Intersection::firstSurface guided by a closed-form operand") {
     // end an ulp elsewhere). Both operand orders, rays from outside and from inside, ranges
     // cut short, and guides that cut the surface in several places.
     const NodePtr g = gyroid();
-    const NodePtr guides[] = {
-        makeSphere(Vec3(0.0), 0.8), makeSphere(Vec3(0.3, -0.2, 0.1), 0.45),
-        makeBox(Vec3(-0.7, -0.3, -0.9), Vec3(0.6, 0.5, 0.2)),
-        makeCylinder(Vec3(0.0, -1.0, 0.0), Vec3(0.0, 1.0, 0.0), 0.6),
-        makeHalfSpace(Vec3(0.2, 1.0, -0.3), 0.1)};
+    const NodePtr guides[] = {makeSphere(Vec3(0.0), 0.8), makeSphere(Vec3(0.3, -0.2, 0.1), 0.45),
+                              makeBox(Vec3(-0.7, -0.3, -0.9), Vec3(0.6, 0.5, 0.2)),
+                              makeCylinder(Vec3(0.0, -1.0, 0.0), Vec3(0.0, 1.0, 0.0), 0.6),
+                              makeHalfSpace(Vec3(0.2, 1.0, -0.3), 0.1)};
     int guided = 0;
     uint64_t earlyEvals = 0, fullEvals = 0;
     for (const NodePtr& guide : guides) {
@@ -343,8 +340,8 @@ TEST_CASE("Intersection::firstSurface guided by a closed-form operand") {
             std::vector<NodePtr> kids{makeMaterial(g, 1), makeMaterial(guide, 2)};
             if (guideFirst) std::swap(kids[0], kids[1]);
             const NodePtr both = makeBoolean(BoolOp::Intersection, kids);
-            const Comparison c = compareRandom(*both, Vec3(0.0), 1.0, 1500,
-                                               300 + uint64_t(guided), true);
+            const Comparison c =
+                compareRandom(*both, Vec3(0.0), 1.0, 1500, 300 + uint64_t(guided), true);
             INFO("guide " << guided << (guideFirst ? " first" : " second") << ": "
                           << c.firstMismatch);
             REQUIRE(c.mismatches == 0);

@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <random>
 
-#include "csg/expr.h"
-#include "csg/solids.h"
-#include "csg/tape.h"
+#include "csg/tape/expr.h"
+#include "csg/tape/tape.h"
+#include "csg/tree/solids.h"
 #include "util/oracles.h"
 
 using namespace kerf;

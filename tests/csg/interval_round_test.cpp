@@ -1,5 +1,6 @@
-// The bit-step rounding of csg/interval_round.h against nextafter, on every kind of double.
-#include "csg/interval_round.h"
+// The bit-step rounding of csg/interval/interval_round.h against nextafter, on every kind of
+// double.
+#include "csg/interval/interval_round.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -17,13 +18,12 @@ void checkStep(double v, int& failures) {
     const double inf = std::numeric_limits<double>::infinity();
     const double d = down(v), u = up(v);
     const double ed = std::nextafter(v, -inf), eu = std::nextafter(v, inf);
-    const bool ok = std::isnan(v) ? (std::isnan(d) && std::isnan(u))
-                                  : (sameBits(d, ed) && sameBits(u, eu));
+    const bool ok =
+        std::isnan(v) ? (std::isnan(d) && std::isnan(u)) : (sameBits(d, ed) && sameBits(u, eu));
     if (ok) return;
     std::ostringstream msg;
     msg.precision(17);
-    msg << "down/up(" << v << ") = " << d << ", " << u << "; nextafter gives " << ed << ", "
-        << eu;
+    msg << "down/up(" << v << ") = " << d << ", " << u << "; nextafter gives " << ed << ", " << eu;
     FAIL_CHECK(msg.str());
     ++failures;
 }

@@ -1,5 +1,5 @@
 // Interval arithmetic: containment properties against long double, and hand-checked cases.
-#include "csg/interval.h"
+#include "csg/interval/interval.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -27,22 +27,17 @@ public:
             return {std::min(a, b), std::max(a, b)};
         }
         switch (std::uniform_int_distribution<int>(0, 8)(mRng)) {
-            case 0:
-                return ordered(uniform(-10, 10), uniform(-10, 10));
-            case 1:
-                return {-magnitude(-3, 3), magnitude(-3, 3)};  // holds 0
+            case 0: return ordered(uniform(-10, 10), uniform(-10, 10));
+            case 1: return {-magnitude(-3, 3), magnitude(-3, 3)};  // holds 0
             case 2:
                 return coin() ? Interval{0.0, magnitude(-3, 3)} : Interval{-magnitude(-3, 3), 0.0};
-            case 3:
-                return ordered(signedMagnitude(100, 300), signedMagnitude(100, 300));
-            case 4:
-                return ordered(signedMagnitude(-300, -100), signedMagnitude(-300, -100));
+            case 3: return ordered(signedMagnitude(100, 300), signedMagnitude(100, 300));
+            case 4: return ordered(signedMagnitude(-300, -100), signedMagnitude(-300, -100));
             case 5: {
                 const double v = signedMagnitude(-5, 5);
                 return coin() ? Interval{v, kInfinity} : Interval{-kInfinity, v};
             }
-            case 6:
-                return {-kInfinity, kInfinity};
+            case 6: return {-kInfinity, kInfinity};
             case 7: {
                 const double v = signedMagnitude(-20, 20);
                 return {v, v};

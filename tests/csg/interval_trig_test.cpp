@@ -1,8 +1,8 @@
-// The libm-free sin and cos of csg/interval_trig.h: point values within the proved bound of
-// long double, interval containment on every awkward kind of interval in range, and the same
+// The libm-free sin and cos of csg/interval/interval_trig.h: point values within the proved bound
+// of long double, interval containment on every awkward kind of interval in range, and the same
 // answer as the libm path up to the widening.
-#include "csg/interval_ops.h"
-#include "csg/interval_trig.h"
+#include "csg/interval/interval_trig.h"
+#include "csg/interval/interval_ops.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -33,8 +33,7 @@ public:
     Interval next() {
         const double c = centre();
         switch (pick(0, 4)) {
-            case 0:
-                return {c, c};
+            case 0: return {c, c};
             case 1: {
                 const double w = std::pow(10.0, uniform(-16, -2));
                 return clampToRange(c - w, c + w);
@@ -45,7 +44,8 @@ public:
             }
             case 3: {  // one end exactly a double next to j·π/2
                 const double e = nearHalfPiMultiple();
-                return pick(0, 1) ? clampToRange(e, e + uniform(0, 3)) : clampToRange(e - uniform(0, 3), e);
+                return pick(0, 1) ? clampToRange(e, e + uniform(0, 3))
+                                  : clampToRange(e - uniform(0, 3), e);
             }
             default: {
                 const double e = nearHalfPiMultiple();
@@ -63,14 +63,10 @@ public:
 
     double centre() {
         switch (pick(0, 3)) {
-            case 0:
-                return uniform(-10, 10);
-            case 1:
-                return uniform(-kTrigFastLimit, kTrigFastLimit);
-            case 2:
-                return (pick(0, 1) ? 1 : -1) * std::pow(10.0, uniform(-300, 5));
-            default:
-                return nearHalfPiMultiple();
+            case 0: return uniform(-10, 10);
+            case 1: return uniform(-kTrigFastLimit, kTrigFastLimit);
+            case 2: return (pick(0, 1) ? 1 : -1) * std::pow(10.0, uniform(-300, 5));
+            default: return nearHalfPiMultiple();
         }
     }
 
@@ -143,7 +139,7 @@ TEST_CASE("interval_trig::sinCosFast holds sin and cos of every point") {
 }
 
 TEST_CASE("interval_trig: the fast path agrees with the libm path up to its widening") {
-    // sinCos (csg/interval.cpp) takes the fast path; the libm path's result for the same
+    // sinCos (csg/interval/interval.cpp) takes the fast path; the libm path's result for the same
     // interval is rebuilt here from the definition: hull of the end values and the extremes
     // inside. The two may differ only by the widening of each (32u + 4 ulps).
     TrigSource src(13);

@@ -1,8 +1,8 @@
-// The certified step of root isolation (csg/lipschitz_step.h): its reach against closed forms,
-// the same crossings as plain bisection on polynomials with known roots (simple, close,
+// The certified step of root isolation (csg/primitives/lipschitz_step.h): its reach against closed
+// forms, the same crossings as plain bisection on polynomials with known roots (simple, close,
 // double, tiny and huge scales, a root by the end of the range) and on random tapes along
 // random rays, and no root skipped against a dense long-double scan of f along the ray.
-#include "csg/lipschitz_step.h"
+#include "csg/primitives/lipschitz_step.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -10,8 +10,8 @@
 #include <sstream>
 #include <vector>
 
-#include "csg/root_isolation.h"
-#include "csg/tape_along_ray.h"
+#include "csg/primitives/root_isolation.h"
+#include "csg/tape/tape_along_ray.h"
 
 using namespace kerf;
 
@@ -198,7 +198,10 @@ TEST_CASE("lipschitzStep/same roots as bisection") {
         {"a triple root", {2.0, 2.0, 2.0}, 0.0, 4.0, false},
         {"a root by the end of the range", {0.5, 4.0 - 1e-10}, 0.0, 4.0, true},
         {"a root by the start of the range", {1e-12, 3.0}, 0.0, 4.0, true},
-        {"a grazing pair (a chord shorter than the tolerance)", {2.0, 2.0 + 1e-12}, 0.0, 4.0,
+        {"a grazing pair (a chord shorter than the tolerance)",
+         {2.0, 2.0 + 1e-12},
+         0.0,
+         4.0,
          false},
         {"tiny scale", {1e-7, 1.5e-7, 3e-7}, 0.0, 4e-7, true},
         {"huge scale", {1e7, 1.5e7, 3e7}, 0.0, 4e7, true},
@@ -259,9 +262,8 @@ using LVec = glm::tvec3<long double>;
 
 /// Every interval [tᵢ, tᵢ₊₁] of a dense scan of f along the ray in long double where f changes
 /// sign between samples whose |f| is above `floor` (below it the sign is rounding).
-std::vector<std::pair<double, double>> scanSignChanges(const Tape& tape, const Ray& ray,
-                                                       double a, double b, int samples,
-                                                       long double floor) {
+std::vector<std::pair<double, double>> scanSignChanges(const Tape& tape, const Ray& ray, double a,
+                                                       double b, int samples, long double floor) {
     std::vector<std::pair<double, double>> out;
     const LVec o(ray.origin), d(ray.dir);
     long double prevT = a, prevF = tape.evalExtended(o + (long double)a * d);
@@ -292,9 +294,9 @@ std::shared_ptr<const Tape> gyroid(double period) {
 
 std::shared_ptr<const Tape> sphere(double radius) {
     ExprGraph g;
-    const ExprId r2 = g.binary(Op::Add, g.binary(Op::Add, g.unary(Op::Square, g.x()),
-                                                 g.unary(Op::Square, g.y())),
-                               g.unary(Op::Square, g.z()));
+    const ExprId r2 =
+        g.binary(Op::Add, g.binary(Op::Add, g.unary(Op::Square, g.x()), g.unary(Op::Square, g.y())),
+                 g.unary(Op::Square, g.z()));
     return compile(g, g.binary(Op::Sub, r2, g.constant(radius * radius)));
 }
 

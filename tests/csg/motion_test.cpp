@@ -1,8 +1,8 @@
-// Moving solids (csg/motion.h): at each scene time a moving node traces as its child turned and
-// moved to that time; its bounds and interval values hold for every time in [0, 1].
-#include "csg/motion.h"
+// Moving solids (csg/tree/motion.h): at each scene time a moving node traces as its child turned
+// and moved to that time; its bounds and interval values hold for every time in [0, 1].
+#include "csg/tree/motion.h"
 
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 
 #include <catch2/catch.hpp>
 
@@ -17,15 +17,16 @@ const Vec3 kSpin(30.0, 90.0, -45.0);
 
 /// The child placed at time s by ordinary transforms: turned, then moved.
 NodePtr placedAt(const NodePtr& child, double s) {
-    return makeTransform(child, Affine::translate(kVelocity * s).after(Affine::rotateDegrees(kSpin * s)));
+    return makeTransform(child,
+                         Affine::translate(kVelocity * s).after(Affine::rotateDegrees(kSpin * s)));
 }
 
 }  // namespace
 
 TEST_CASE("a moving node traces as its child placed at the scene time") {
-    const NodePtr child = makeBoolean(BoolOp::Difference,
-                                      {makeBox(Vec3(-1.0, -0.5, -0.3), Vec3(1.0, 0.5, 0.3)),
-                                       makeSphere(Vec3(0.8, 0.0, 0.0), 0.4)});
+    const NodePtr child =
+        makeBoolean(BoolOp::Difference, {makeBox(Vec3(-1.0, -0.5, -0.3), Vec3(1.0, 0.5, 0.3)),
+                                         makeSphere(Vec3(0.8, 0.0, 0.0), 0.4)});
     const NodePtr moving = makeMotion(child, kVelocity, kSpin);
     std::mt19937_64 rng(4);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -67,8 +68,12 @@ TEST_CASE("a moving node's bounds and interval values hold for every time") {
         for (int k = 0; k < 500; ++k) {
             const double s = unit(rng);
             // A point of the sphere at time s lies in the bounds.
-            const Vec3 local = Vec3(1.0, 0.0, 0.0) + 0.5 * glm::normalize(Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5));
-            const Vec3 world = Affine::translate(kVelocity * s).after(Affine::rotateDegrees(spin * s)).point(local);
+            const Vec3 local =
+                Vec3(1.0, 0.0, 0.0) +
+                0.5 * glm::normalize(Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5));
+            const Vec3 world = Affine::translate(kVelocity * s)
+                                   .after(Affine::rotateDegrees(spin * s))
+                                   .point(local);
             for (int a = 0; a < 3; ++a) {
                 REQUIRE(world[a] >= b.lo[a]);
                 REQUIRE(world[a] <= b.hi[a]);
@@ -76,7 +81,8 @@ TEST_CASE("a moving node's bounds and interval values hold for every time") {
             // A box's interval value holds the value at any time of any point in it.
             const Vec3 c(unit(rng) * 4 - 1, unit(rng) * 2 - 1, unit(rng) * 2 - 1);
             const double h = 0.3 * unit(rng);
-            const Interval v = moving->valueInterval({{c.x - h, c.x + h}, {c.y - h, c.y + h}, {c.z - h, c.z + h}});
+            const Interval v =
+                moving->valueInterval({{c.x - h, c.x + h}, {c.y - h, c.y + h}, {c.z - h, c.z + h}});
             const Vec3 q = c + h * Vec3(2 * unit(rng) - 1, 2 * unit(rng) - 1, 2 * unit(rng) - 1);
             const SceneTimeScope clock(unit(rng));
             const double value = moving->value(q);

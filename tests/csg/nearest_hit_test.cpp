@@ -1,7 +1,7 @@
 // SceneGeometry::nearestHit where two separate objects' faces coincide: the choice is fixed
 // (not by ulps of t or the search order) and rays leaving the chosen hit start past both.
-#include "csg/scene_geometry.h"
-#include "csg/solids.h"
+#include "csg/bvh/scene_geometry.h"
+#include "csg/tree/solids.h"
 #include "util/oracles.h"
 
 #include <catch2/catch.hpp>
@@ -42,8 +42,9 @@ Vec3 leaving(const Ray& ray, const Hit& h, const Vec3& side) {
 
 TEST_CASE("nearestHit: passing from one object into a touching one meets the one entered") {
     for (bool slabFirst : {true, false}) {
-        const std::vector<NodePtr> objects =
-            slabFirst ? std::vector<NodePtr>{slabOnBlock(), block()} : std::vector<NodePtr>{block(), slabOnBlock()};
+        const std::vector<NodePtr> objects = slabFirst
+                                                 ? std::vector<NodePtr>{slabOnBlock(), block()}
+                                                 : std::vector<NodePtr>{block(), slabOnBlock()};
         const int slab = slabFirst ? 0 : 1, blk = 1 - slab;
         const SceneGeometry geometry(objects);
         TraceContext ctx;
@@ -53,7 +54,8 @@ TEST_CASE("nearestHit: passing from one object into a touching one meets the one
             // Down from inside the slab (leaving it, entering the block), or up from inside
             // the block (leaving it, entering the slab).
             const bool down = k % 2 == 0;
-            const Ray ray = down ? verticalish(rnd, 0.35, 0.55, false) : verticalish(rnd, -0.9, 0.25, true);
+            const Ray ray =
+                down ? verticalish(rnd, 0.35, 0.55, false) : verticalish(rnd, -0.9, 0.25, true);
             const std::optional<Hit> h = geometry.nearestHit(ray, 0.0, kInf, ctx);
             REQUIRE(h);
             const int entered = down ? blk : slab, left = down ? slab : blk;

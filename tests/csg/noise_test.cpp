@@ -1,4 +1,4 @@
-// Gradient noise as a tape op (csg/noise.h): the value against long double, the gradient
+// Gradient noise as a tape op (csg/tape/noise.h): the value against long double, the gradient
 // against central differences, the enclosures of value and slope against dense sampling, the
 // global slope bound, every tape evaluator against the others, and tracing a displaced
 // sphere against a dense long-double search for its first crossing.
@@ -6,12 +6,12 @@
 #include <cmath>
 #include <random>
 
-#include "csg/expr.h"
-#include "csg/implicit_expr.h"
-#include "csg/noise.h"
-#include "csg/solids.h"
-#include "csg/tape.h"
+#include "csg/primitives/implicit_expr.h"
+#include "csg/tape/expr.h"
+#include "csg/tape/noise.h"
+#include "csg/tape/tape.h"
 #include "csg/trace_context.h"
+#include "csg/tree/solids.h"
 
 using namespace kerf;
 
@@ -74,8 +74,10 @@ TEST_CASE("noise: enclosures hold every sampled value and slope, in one cell, a 
             lo = (lo - 0.5) * 20.0;
             const Vec3 hi = lo + Vec3(unit(rng), unit(rng), unit(rng)) * size;
             Interval slope[3];
-            const Interval f = gradientNoiseRange({lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, kSeed, slope);
-            const Interval alone = gradientNoiseRange({lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, kSeed);
+            const Interval f =
+                gradientNoiseRange({lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, kSeed, slope);
+            const Interval alone =
+                gradientNoiseRange({lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}, kSeed);
             CHECK((f.lo == alone.lo && f.hi == alone.hi));
             for (int s = 0; s < 40; ++s) {
                 const Vec3 p = lo + (hi - lo) * Vec3(unit(rng), unit(rng), unit(rng));
@@ -111,7 +113,8 @@ TEST_CASE("noise: every tape evaluator agrees on a tape with noise") {
         const double v = tape->eval(p);
         CHECK(tape->evalGradient(p, grad) == v);
         CHECK(std::fabs(v - double(displacedSphereLD(glm::tvec3<long double>(p)))) <= 1e-14);
-        CHECK(std::fabs(tape->evalExtended(glm::tvec3<long double>(p)) - displacedSphereLD(glm::tvec3<long double>(p))) <= 1e-15L);
+        CHECK(std::fabs(tape->evalExtended(glm::tvec3<long double>(p)) -
+                        displacedSphereLD(glm::tvec3<long double>(p))) <= 1e-15L);
         // Boxes around p, one and four at a time (the four-lane path equals the one-box path).
         Interval xs[4], ys[4], zs[4], out[4];
         for (int k = 0; k < 4; ++k) {
@@ -126,7 +129,8 @@ TEST_CASE("noise: every tape evaluator agrees on a tape with noise") {
             CHECK(one.contains(v));
         }
         // Along a ray through p: f and df/dt at t enclosed over a t-interval around it.
-        const Ray ray{p - grad, glm::normalize(Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5))};
+        const Ray ray{p - grad,
+                      glm::normalize(Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5))};
         const double t = 0.7;
         double dfdt;
         const double ft = tape->evalAlongRay(ray, t, dfdt);
@@ -152,12 +156,14 @@ TEST_CASE("noise: a displaced sphere's first hit is its first crossing") {
     for (int i = 0; i < 300; ++i) {
         const Vec3 origin = glm::normalize(Vec3(normal(rng), normal(rng), normal(rng))) * 4.0;
         // Aim near the silhouette as often as at the middle: grazing rays find thin crossings.
-        const Vec3 target = glm::normalize(Vec3(normal(rng), normal(rng), normal(rng))) * (1.2 * unit(rng));
+        const Vec3 target =
+            glm::normalize(Vec3(normal(rng), normal(rng), normal(rng))) * (1.2 * unit(rng));
         const Ray ray{origin, glm::normalize(target - origin)};
         // The reference: the first sign change of f on a grid of 20000 steps over [2, 6], in
         // long double, refined by bisection.
         const auto f = [&](long double t) {
-            return displacedSphereLD(glm::tvec3<long double>(ray.origin) + t * glm::tvec3<long double>(ray.dir));
+            return displacedSphereLD(glm::tvec3<long double>(ray.origin) +
+                                     t * glm::tvec3<long double>(ray.dir));
         };
         long double first = -1.0L;
         long double a = 2.0L, fa = f(a);

@@ -29,7 +29,8 @@ std::string describe(const SpanList& s) {
     std::ostringstream o;
     o.precision(17);
     for (const Span& x : s)
-        o << "[" << x.in.t << " p" << x.in.primitive << ", " << x.out.t << " p" << x.out.primitive << "] ";
+        o << "[" << x.in.t << " p" << x.in.primitive << ", " << x.out.t << " p" << x.out.primitive
+          << "] ";
     return o.str();
 }
 
@@ -113,12 +114,12 @@ TEST_CASE("Boolean nodes: every order of a commutative operation's children give
                     if (++mismatches > 5) continue;  // report a few in full, count the rest
                     std::ostringstream kindList;
                     for (size_t i : order) kindList << int(kinds[i]) << " ";
-                    FAIL_CHECK(opName(op) << " of kinds (in this order) " << kindList.str()
-                                          << "method " << int(method) << " ray " << ray.origin.x
-                                          << "," << ray.origin.y << "," << ray.origin.z << " dir "
-                                          << ray.dir.x << "," << ray.dir.y << "," << ray.dir.z
-                                          << "\n  first order: " << describe(first)
-                                          << "\n  this order:  " << describe(s));
+                    FAIL_CHECK(opName(op)
+                               << " of kinds (in this order) " << kindList.str() << "method "
+                               << int(method) << " ray " << ray.origin.x << "," << ray.origin.y
+                               << "," << ray.origin.z << " dir " << ray.dir.x << "," << ray.dir.y
+                               << "," << ray.dir.z << "\n  first order: " << describe(first)
+                               << "\n  this order:  " << describe(s));
                 } while (std::next_permutation(order.begin(), order.end()));
             }
         }

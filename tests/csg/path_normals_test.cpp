@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 #include <random>
 
-#include "csg/profile_field.h"
+#include "csg/profiles/profile_field.h"
 #include "io/font_outline.h"
 
 using namespace kerf;
@@ -38,17 +38,21 @@ PathSegment arc(Vec2 from, Vec2 to, Vec2 center, bool ccw) {
 PathShape curvedShape() {
     PathShape shape;
     PathLoop outer;
-    outer.segments.push_back(curve(PathSegment::Kind::Cubic, {Vec2(0, 0), Vec2(1, -1), Vec2(3, -1), Vec2(4, 0)}));
-    outer.segments.push_back(curve(PathSegment::Kind::Quadratic, {Vec2(4, 0), Vec2(5, 2), Vec2(4, 4), Vec2(0)}));
+    outer.segments.push_back(
+        curve(PathSegment::Kind::Cubic, {Vec2(0, 0), Vec2(1, -1), Vec2(3, -1), Vec2(4, 0)}));
+    outer.segments.push_back(
+        curve(PathSegment::Kind::Quadratic, {Vec2(4, 0), Vec2(5, 2), Vec2(4, 4), Vec2(0)}));
     outer.segments.push_back(line({4, 4}, {0, 4}));
-    outer.segments.push_back(curve(PathSegment::Kind::Cubic, {Vec2(0, 4), Vec2(-1, 3), Vec2(-1, 1), Vec2(0, 0)}));
+    outer.segments.push_back(
+        curve(PathSegment::Kind::Cubic, {Vec2(0, 4), Vec2(-1, 3), Vec2(-1, 1), Vec2(0, 0)}));
     shape.loops.push_back(outer);
     PathLoop hole;
     hole.segments.push_back(arc({2.5, 2}, {1.5, 2}, {2, 2}, false));
     hole.segments.push_back(arc({1.5, 2}, {2.5, 2}, {2, 2}, false));
     shape.loops.push_back(hole);
     PathLoop knot;
-    knot.segments.push_back(curve(PathSegment::Kind::Cubic, {Vec2(6, 0), Vec2(9, 2), Vec2(5, 2), Vec2(8, 0)}));
+    knot.segments.push_back(
+        curve(PathSegment::Kind::Cubic, {Vec2(6, 0), Vec2(9, 2), Vec2(5, 2), Vec2(8, 0)}));
     knot.segments.push_back(line({8, 0}, {6, 0}));
     shape.loops.push_back(knot);
     return shape;
@@ -56,7 +60,8 @@ PathShape curvedShape() {
 
 /// Checks f(p) − f(q) ∈ g·(p − q) at random pairs of random boxes; returns how many boxes had
 /// a gradient component of one sign (proven monotone).
-int checkEnclosures(const ScalarField& f, Vec2 lo0, Vec2 hi0, double maxSize, uint64_t seed, double slack) {
+int checkEnclosures(const ScalarField& f, Vec2 lo0, Vec2 hi0, double maxSize, uint64_t seed,
+                    double slack) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> ux(lo0.x, hi0.x), uy(lo0.y, hi0.y), unit(0.0, 1.0);
     int monotone = 0;
@@ -65,7 +70,8 @@ int checkEnclosures(const ScalarField& f, Vec2 lo0, Vec2 hi0, double maxSize, ui
         const Vec2 lo(ux(rng), uy(rng));
         const Vec2 hi = lo + Vec2(size, size * (0.5 + unit(rng)));
         Interval g[3];
-        const Interval r = f.rangeGradient(Interval(lo.x, hi.x), Interval(lo.y, hi.y), Interval(0.0), g);
+        const Interval r =
+            f.rangeGradient(Interval(lo.x, hi.x), Interval(lo.y, hi.y), Interval(0.0), g);
         monotone += g[0].lo > 0.0 || g[0].hi < 0.0 || g[1].lo > 0.0 || g[1].hi < 0.0;
         for (int k = 0; k < 20; ++k) {
             const Vec2 p = lo + Vec2(unit(rng), unit(rng)) * (hi - lo);
@@ -73,10 +79,13 @@ int checkEnclosures(const ScalarField& f, Vec2 lo0, Vec2 hi0, double maxSize, ui
             const double fp = f.value(Vec3(p, 0.0)), fq = f.value(Vec3(q, 0.0));
             REQUIRE(r.contains(fp));
             const Vec2 d = p - q;
-            const double dlo = std::min(g[0].lo * d.x, g[0].hi * d.x) + std::min(g[1].lo * d.y, g[1].hi * d.y);
-            const double dhi = std::max(g[0].lo * d.x, g[0].hi * d.x) + std::max(g[1].lo * d.y, g[1].hi * d.y);
-            INFO("box (" << lo.x << "," << lo.y << ")-(" << hi.x << "," << hi.y << ") g=[" << g[0].lo << ","
-                         << g[0].hi << "]x[" << g[1].lo << "," << g[1].hi << "] diff " << fp - fq);
+            const double dlo =
+                std::min(g[0].lo * d.x, g[0].hi * d.x) + std::min(g[1].lo * d.y, g[1].hi * d.y);
+            const double dhi =
+                std::max(g[0].lo * d.x, g[0].hi * d.x) + std::max(g[1].lo * d.y, g[1].hi * d.y);
+            INFO("box (" << lo.x << "," << lo.y << ")-(" << hi.x << "," << hi.y << ") g=["
+                         << g[0].lo << "," << g[0].hi << "]x[" << g[1].lo << "," << g[1].hi
+                         << "] diff " << fp - fq);
             REQUIRE(fp - fq >= dlo - slack);
             REQUIRE(fp - fq <= dhi + slack);
         }
@@ -88,7 +97,7 @@ int checkEnclosures(const ScalarField& f, Vec2 lo0, Vec2 hi0, double maxSize, ui
 
 TEST_CASE("pathField gradient enclosures near Béziers and arcs hold every difference quotient") {
     const auto f = pathField(curvedShape());
-    // The Bézier distance is refined to 2⁻³⁴ of the segment's size (csg/profile_field.h):
+    // The Bézier distance is refined to 2⁻³⁴ of the segment's size (csg/profiles/profile_field.h):
     // two such errors, on segments about 5 long.
     const double slack = 2.0 * 0x1p-34 * 6.0 + 1e-14;
     const int monotone = checkEnclosures(*f, Vec2(-1.5, -1.5), Vec2(9.5, 4.5), 0.4, 11, slack);
@@ -102,7 +111,8 @@ TEST_CASE("pathField gradient enclosures hold on a glyph's outline") {
     const TextOutline text = layoutText(spec);
     REQUIRE(!text.shape.loops.empty());
     const auto f = pathField(text.shape);
-    const int monotone = checkEnclosures(*f, text.ink.lo - 0.05, text.ink.hi, 0.05, 12, 2.0 * 0x1p-34 * 2.0 + 1e-14);
+    const int monotone =
+        checkEnclosures(*f, text.ink.lo - 0.05, text.ink.hi, 0.05, 12, 2.0 * 0x1p-34 * 2.0 + 1e-14);
     CHECK(monotone > 300);
 }
 
@@ -111,7 +121,8 @@ TEST_CASE("pathField gradient on the outline points out, at corners too") {
     // still be a finite unit vector that leads out of the shape.
     PathShape shape;
     PathLoop loop;
-    const Vec2 corners[5] = {Vec2(0, 0), Vec2(1, 0), Vec2(1, 2), Vec2(0.5, 1), Vec2(0, 2)};  // one reflex
+    const Vec2 corners[5] = {Vec2(0, 0), Vec2(1, 0), Vec2(1, 2), Vec2(0.5, 1),
+                             Vec2(0, 2)};  // one reflex
     for (int i = 0; i < 5; ++i) loop.segments.push_back(line(corners[i], corners[(i + 1) % 5]));
     shape.loops.push_back(loop);
     const auto f = pathField(shape);

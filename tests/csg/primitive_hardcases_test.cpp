@@ -1,7 +1,7 @@
 // The cases that break naive ray/primitive code: signed-zero directions, rays in face planes,
 // grazing rays a few ulps from tangency, far-away origins, huge and tiny scales, rays parallel
 // to a plane, along a cone's axis or its slant.
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 #include "util/oracles.h"
 
 #include <catch2/catch.hpp>
@@ -72,13 +72,14 @@ TEST_CASE("Box::spans with signed-zero directions and rays in face planes") {
     SECTION("oblique ray with one -0 component") {
         const std::vector<Span> s = kept(*box, Ray{Vec3(-3, 0.5, -4), Vec3(1, -0.0, 2)});
         REQUIRE(s.size() == 1);
-        CHECK(s[0].in.t == 2.0);  // x = −1 at t = 2 (z = 0 there)
+        CHECK(s[0].in.t == 2.0);   // x = −1 at t = 2 (z = 0 there)
         CHECK(s[0].out.t == 2.5);  // z = 1 at t = 2.5
         CHECK(s[0].in.normal == Vec3(-1, 0, 0));
         CHECK(s[0].out.normal == Vec3(0, 0, 1));
     }
     SECTION("a ray in a face plane or along an edge is inside the closed box") {
-        for (const Vec3& o : {Vec3(1, 0.3, -5), Vec3(-1, 0.3, -5), Vec3(1, 1, -5), Vec3(-1, 1, -5)}) {
+        for (const Vec3& o :
+             {Vec3(1, 0.3, -5), Vec3(-1, 0.3, -5), Vec3(1, 1, -5), Vec3(-1, 1, -5)}) {
             const std::vector<Span> s = kept(*box, Ray{o, Vec3(-0.0, 0.0, 2)});
             REQUIRE(s.size() == 1);
             CHECK(s[0].in.t == 2.0);
@@ -170,7 +171,8 @@ TEST_CASE("Cylinder::spans on grazing rays") {
             const Vec3 v = gRnd.perpendicular(u), w = glm::cross(u, v);
             const double k = std::exp(gRnd.uniform(0, std::log(1e4)));
             const double b = r * (1 + (i % 2 ? k : -k) * kUlp);
-            const Ray ray{a + 0.5 * len * u + b * v - 10 * r * w, w * std::exp(gRnd.uniform(-3, 3))};
+            const Ray ray{a + 0.5 * len * u + b * v - 10 * r * w,
+                          w * std::exp(gRnd.uniform(-3, 3))};
             // Distance between the ray's line and the axis line, in long double.
             const LVec3 ua = ld(a + len * u) - ld(a);
             const LVec3 nrm = glm::cross(ld(ray.dir), ua);

@@ -1,7 +1,7 @@
 // Precision of the closed-form primitives where naive formulas fail: origins a million radii
 // away, scenes scaled by 1e±6, rays parallel to a half-space's plane, and the special cases of
 // the cone (apex, r1 = r2, rays along the axis or the slant).
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 #include "util/oracles.h"
 
 #include <catch2/catch.hpp>
@@ -144,7 +144,8 @@ TEST_CASE("Primitive::spans are scale invariant") {
                 for (size_t j = 0; j < s1.size(); ++j) {
                     const Span &p = s1[j], &q = s2[j];
                     if (p.out.t - p.in.t <= 1e-4 * std::fabs(p.in.t)) continue;  // grazing
-                    for (const auto& [x, y] : {std::make_pair(p.in, q.in), std::make_pair(p.out, q.out)}) {
+                    for (const auto& [x, y] :
+                         {std::make_pair(p.in, q.in), std::make_pair(p.out, q.out)}) {
                         if (std::isinf(x.t)) {
                             CHECK(y.t == x.t);
                             continue;
@@ -207,7 +208,7 @@ TEST_CASE("Cone::spans special cases") {
         const NodePtr cone = makeCone(Vec3(0, 0, 0), Vec3(0, 2, 0), 1.0, 0.0);
         const std::vector<Span> s = kept(*cone, Ray{Vec3(-0.0, -3, 0), Vec3(0, 0.5, -0.0)});
         REQUIRE(s.size() == 1);
-        CHECK(s[0].in.t == 6.0);  // the base at y = 0
+        CHECK(s[0].in.t == 6.0);    // the base at y = 0
         CHECK(s[0].out.t == 10.0);  // the apex at y = 2
         CHECK(s[0].in.normal == Vec3(0, -1, 0));
         CHECK(unitError(s[0].out.normal, Vec3(0, 1, 0)) == 0.0);

@@ -1,6 +1,6 @@
 // Sphere, box and half-space spans against closed forms evaluated independently in long double,
 // and the implicit forms of every closed-form primitive against their spans and intervals.
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 #include "util/oracles.h"
 
 #include <catch2/catch.hpp>
@@ -76,7 +76,10 @@ struct Comparison {
         for (size_t i = 0; wellConditioned && i < ref.size(); ++i)
             wellConditioned = relError(ref2[i].tin, ref[i].tin) <= 1e-13L &&
                               relError(ref2[i].tout, ref[i].tout) <= 1e-13L;
-        if (!wellConditioned) { ++skipped; return; }
+        if (!wellConditioned) {
+            ++skipped;
+            return;
+        }
         const std::vector<RefSpan> got = ours(node, ray);
         CAPTURE(ray.origin.x, ray.origin.y, ray.origin.z, ray.dir.x, ray.dir.y, ray.dir.z);
         REQUIRE(got.size() == ref.size());
@@ -89,7 +92,8 @@ struct Comparison {
             const LD nOut = normalError(ref[i].tout, got[i].nout, ref[i].nout);
             worstT = std::max({worstT, eIn, eOut});
             worstN = std::max({worstN, nIn, nOut});
-            CAPTURE(double(ref[i].tin), double(ref[i].tout), double(got[i].tin), double(got[i].tout));
+            CAPTURE(double(ref[i].tin), double(ref[i].tout), double(got[i].tin),
+                    double(got[i].tout));
             REQUIRE(eIn <= 1e-12L);
             REQUIRE(eOut <= 1e-12L);
             REQUIRE(nIn <= 1e-12L);
@@ -137,8 +141,14 @@ std::vector<RefSpan> boxReference(const Vec3& lo, const Vec3& hi, const Ray& ray
             if (!onFace) continue;
             LVec3 n(0);
             n[a] = side ? 1 : -1;
-            if (t < tin) { tin = t; nin = n; }
-            if (t > tout) { tout = t; nout = n; }
+            if (t < tin) {
+                tin = t;
+                nin = n;
+            }
+            if (t > tout) {
+                tout = t;
+                nout = n;
+            }
         }
     }
     if (!(tin < tout)) return {};
@@ -160,14 +170,17 @@ bool capSlab(const LVec3& a, const LVec3& u, LD len, const Ray& ray, RefSpan& sl
     slab = {-kInf, kInf, -u, u};
     if (dz == 0) return fz >= 0 && fz <= len;
     const LD t0 = -fz / dz, t1 = (len - fz) / dz;
-    if (dz > 0) slab = {t0, t1, -u, u};
-    else slab = {t1, t0, u, -u};
+    if (dz > 0)
+        slab = {t0, t1, -u, u};
+    else
+        slab = {t1, t0, u, -u};
     return true;
 }
 
 /// The capped cylinder from its geometry: the chord of the ray's projection across the axis,
 /// through the projected point nearest the axis, cut by the slab between the caps.
-std::vector<RefSpan> cylinderReference(const Vec3& a, const Vec3& b, double radius, const Ray& ray) {
+std::vector<RefSpan> cylinderReference(const Vec3& a, const Vec3& b, double radius,
+                                       const Ray& ray) {
     const LVec3 axis = ld(b) - ld(a);
     const LD len = glm::length(axis);
     const LVec3 u = axis / len;
@@ -211,8 +224,10 @@ std::vector<RefSpan> coneReference(const Vec3& a, const Vec3& b, double r1, doub
     if (A != 0 && disc > 0) {
         const LD q = -(B + std::copysign(std::sqrt(disc), B));
         const LD t0 = std::min(q / A, C / q), t1 = std::max(q / A, C / q);
-        if (A > 0) inside = {{t0, t1}};
-        else inside = {{-kInf, t0}, {t1, kInf}};
+        if (A > 0)
+            inside = {{t0, t1}};
+        else
+            inside = {{-kInf, t0}, {t1, kInf}};
     } else if (A < 0 || (A == 0 && B == 0 && C <= 0)) {
         inside = {{-kInf, kInf}};
     } else if (A == 0 && B != 0) {
@@ -282,7 +297,8 @@ TEST_CASE("Cylinder::spans") {
         const Vec3 a(gRnd.uniform(-5, 5), gRnd.uniform(-5, 5), gRnd.uniform(-5, 5));
         Vec3 u = gRnd.unitVector();
         if (scene % 3 == 0) u = Vec3(0), u[scene % 9 / 3] = scene % 2 ? 1.0 : -1.0;  // axis-aligned
-        const double len = std::exp(gRnd.uniform(-1, 1.5)), radius = std::exp(gRnd.uniform(-1.5, 1));
+        const double len = std::exp(gRnd.uniform(-1, 1.5)),
+                     radius = std::exp(gRnd.uniform(-1.5, 1));
         const Vec3 b = a + len * u;
         const NodePtr cylinder = makeCylinder(a, b, radius);
         const double size = std::max(0.5 * len, radius);
@@ -434,7 +450,8 @@ TEST_CASE("Node::value is Lipschitz-1") {
         for (int i = 0; i < 5000; ++i) {
             const Vec3 p = 3.0 * gRnd.inBall();
             const Vec3 q = p + std::exp(gRnd.uniform(-8, 0)) * gRnd.unitVector();
-            worst = std::max(worst, std::fabs(solid->value(p) - solid->value(q)) / glm::length(p - q));
+            worst =
+                std::max(worst, std::fabs(solid->value(p) - solid->value(q)) / glm::length(p - q));
         }
         CHECK(worst <= 1.0 + 1e-9);
         CHECK(worst >= 0.5);  // and not needlessly flat
@@ -450,8 +467,10 @@ TEST_CASE("Node::valueInterval holds value on random boxes") {
             const Vec3 c = 2.5 * gRnd.inBall();
             // Widths from 1e-12 to 4, and sometimes exactly 0 on an axis.
             Vec3 w;
-            for (int a = 0; a < 3; ++a) w[a] = gRnd.uniform(0, 1) < 0.1 ? 0.0 : std::exp(gRnd.uniform(-28, 1.4));
-            const IntervalVec3 box{{c.x - w.x, c.x + w.x}, {c.y - w.y, c.y + w.y}, {c.z - w.z, c.z + w.z}};
+            for (int a = 0; a < 3; ++a)
+                w[a] = gRnd.uniform(0, 1) < 0.1 ? 0.0 : std::exp(gRnd.uniform(-28, 1.4));
+            const IntervalVec3 box{
+                {c.x - w.x, c.x + w.x}, {c.y - w.y, c.y + w.y}, {c.z - w.z, c.z + w.z}};
             const Interval v = solid->valueInterval(box);
             REQUIRE(v.lo <= v.hi);
             for (int k = 0; k < 20; ++k) {

@@ -1,15 +1,15 @@
-// Straight extrusions of plain outlines in closed form (csg/prism.h, makeExtrude): a polygon's
-// prism gives the same spans as the implicit extrusion it stands for, including rays through
-// vertices, along edges, vertical and in the cap planes; circles and rectangles become
+// Straight extrusions of plain outlines in closed form (csg/profiles/prism.h, makeExtrude): a
+// polygon's prism gives the same spans as the implicit extrusion it stands for, including rays
+// through vertices, along edges, vertical and in the cap planes; circles and rectangles become
 // cylinders and boxes.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
-#include "csg/profile.h"
-#include "csg/solids.h"
-#include "csg/span.h"
+#include "csg/profiles/profile.h"
 #include "csg/trace_context.h"
+#include "csg/tree/solids.h"
+#include "csg/tree/span.h"
 
 using namespace kerf;
 
@@ -31,7 +31,8 @@ Traced traced(const NodePtr& node, const Ray& ray) {
 
 /// A concave outline with a hole, with vertices on round coordinates (rays through them).
 Profile notchedPlate() {
-    return profilePolygon({{0, 0}, {4, 0}, {4, 3}, {2, 1}, {0, 3}}, {{{0.5, 0.5}, {1.5, 0.5}, {1, 1.5}}});
+    return profilePolygon({{0, 0}, {4, 0}, {4, 3}, {2, 1}, {0, 3}},
+                          {{{0.5, 0.5}, {1.5, 0.5}, {1, 1.5}}});
 }
 
 /// The implicit the prism stands for: its own parameters rebuilt by makeImplicit.
@@ -42,9 +43,10 @@ NodePtr implicitOf(const NodePtr& node) {
 
 /// `normals`: also compare the normals (not at a vertex, where the implicit's gradient picks
 /// any side; the closed form's must still face out: against the ray entering, along leaving).
-void requireSameSpans(const SpanList& exact, const SpanList& isolated, const Ray& ray, bool normals = true) {
-    INFO("ray o=(" << ray.origin.x << "," << ray.origin.y << "," << ray.origin.z << ") d=(" << ray.dir.x << ","
-                   << ray.dir.y << "," << ray.dir.z << ")");
+void requireSameSpans(const SpanList& exact, const SpanList& isolated, const Ray& ray,
+                      bool normals = true) {
+    INFO("ray o=(" << ray.origin.x << "," << ray.origin.y << "," << ray.origin.z << ") d=("
+                   << ray.dir.x << "," << ray.dir.y << "," << ray.dir.z << ")");
     // Spans and gaps thinner than the isolation's tolerance (a ray through or within rounding
     // of a vertex) may be kept by one and not the other: drop such spans, close such gaps.
     const auto normalised = [](const SpanList& in) {
@@ -83,7 +85,8 @@ void requireSameSpans(const SpanList& exact, const SpanList& isolated, const Ray
 
 }  // namespace
 
-TEST_CASE("prism: a polygon's straight extrusion has the implicit's spans, without root isolation") {
+TEST_CASE(
+    "prism: a polygon's straight extrusion has the implicit's spans, without root isolation") {
     ExtrudeOptions o;
     o.height = 2.0;
     const NodePtr prism = makeExtrude(notchedPlate(), o);
@@ -96,8 +99,9 @@ TEST_CASE("prism: a polygon's straight extrusion has the implicit's spans, witho
         Ray ray;
         // Aimed at a vertex (rays through vertices), a random point, or along y.
         const int kind = i % 3;
-        const Vec3 target = kind == 0 ? Vec3(vx[pick(rng)], 1.0 + unit(rng), vz[pick(rng) % 1 ? 0 : pick(rng)])
-                                      : Vec3(2 + 2.5 * unit(rng), 1 + 1.5 * unit(rng), 1.5 + 2 * unit(rng));
+        const Vec3 target =
+            kind == 0 ? Vec3(vx[pick(rng)], 1.0 + unit(rng), vz[pick(rng) % 1 ? 0 : pick(rng)])
+                      : Vec3(2 + 2.5 * unit(rng), 1 + 1.5 * unit(rng), 1.5 + 2 * unit(rng));
         if (kind == 0) {
             const int v = pick(rng);
             ray.origin = Vec3(vx[v], 1.0, vz[v]) + 5.0 * Vec3(unit(rng), unit(rng), unit(rng));
@@ -167,7 +171,8 @@ TEST_CASE("prism: extruded circles and rectangles are cylinders and boxes, also 
     CHECK(p.a.x == Approx(1 + 2 * c));
     CHECK(p.a.z == Approx(2 * s));
     const double shear[6] = {1, 0.5, 0, 0, 1, 0};  // a circle sheared is an ellipse: implicit
-    CHECK(makeExtrude(profileTransform(profileCircle({0, 0}, 1), shear), o)->kind() == NodeKind::Implicit);
+    CHECK(makeExtrude(profileTransform(profileCircle({0, 0}, 1), shear), o)->kind() ==
+          NodeKind::Implicit);
     // A rotated rectangle is a polygon prism, traced in closed form.
     const NodePtr rotated = makeExtrude(profileTransform(profileRect({0, 0}, {1, 2}), turn), o);
     const Ray ray{Vec3(1.2, 1.5, -10), Vec3(0, 0, 1)};
@@ -193,8 +198,9 @@ TEST_CASE("prism: an outline of Béziers (a glyph, a path) has the implicit's sp
     outer.segments.push_back(c);
     shape.loops.push_back(outer);
     PathLoop hole;
-    for (auto [a, b] : {std::pair{Vec2(1, 0.5), Vec2(2, 0.5)}, std::pair{Vec2(2, 0.5), Vec2(1.5, 1.2)},
-                        std::pair{Vec2(1.5, 1.2), Vec2(1, 0.5)}}) {
+    for (auto [a, b] :
+         {std::pair{Vec2(1, 0.5), Vec2(2, 0.5)}, std::pair{Vec2(2, 0.5), Vec2(1.5, 1.2)},
+          std::pair{Vec2(1.5, 1.2), Vec2(1, 0.5)}}) {
         PathSegment l;
         l.p[0] = a;
         l.p[1] = b;

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "csg/profile_field.h"
+#include "csg/profiles/profile_field.h"
 
 using namespace kerf;
 
@@ -31,7 +31,8 @@ PathSegment arc(Vec2 from, Vec2 to, Vec2 center, bool ccw) {
 
 PathLoop polygonLoop(const std::vector<Vec2>& points) {
     PathLoop loop;
-    for (size_t i = 0; i < points.size(); ++i) loop.segments.push_back(line(points[i], points[(i + 1) % points.size()]));
+    for (size_t i = 0; i < points.size(); ++i)
+        loop.segments.push_back(line(points[i], points[(i + 1) % points.size()]));
     return loop;
 }
 
@@ -45,7 +46,8 @@ double squareDistance(Vec2 p, double h) {  // the square [−h, h]², exact
 TEST_CASE("pathField::value of a square with a square hole against the closed form") {
     PathShape shape;
     shape.loops.push_back(polygonLoop({{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}));
-    shape.loops.push_back(polygonLoop({{-1, -1}, {-1, 1}, {1, 1}, {1, -1}}));  // orientation is free
+    shape.loops.push_back(
+        polygonLoop({{-1, -1}, {-1, 1}, {1, 1}, {1, -1}}));  // orientation is free
     const auto f = pathField(shape);
     std::mt19937_64 rng(1);
     std::uniform_real_distribution<double> coord(-3.0, 3.0);
@@ -92,8 +94,11 @@ TEST_CASE("pathField::value of a half-disc (arc and chord) against the closed fo
         double expected;
         const double dc = glm::length(p) - 1.0;
         const double dChord = glm::length(p - Vec2(std::clamp(p.x, -1.0, 1.0), 0.0));
-        if (p.y >= 0.0) expected = dc > 0.0 ? dc : -std::min(-dc, p.y);
-        else expected = std::abs(p.x) <= 1.0 ? dChord : glm::length(p - Vec2(p.x > 0 ? 1.0 : -1.0, 0.0));
+        if (p.y >= 0.0)
+            expected = dc > 0.0 ? dc : -std::min(-dc, p.y);
+        else
+            expected =
+                std::abs(p.x) <= 1.0 ? dChord : glm::length(p - Vec2(p.x > 0 ? 1.0 : -1.0, 0.0));
         INFO("p=(" << p.x << "," << p.y << ")");
         REQUIRE(f->value(Vec3(p, 0.0)) == Approx(expected).margin(1e-12));
     }
@@ -117,7 +122,8 @@ TEST_CASE("pathField::value of a Bézier outline against a dense-sampled referen
     // around the best sample; the sign from the sampled polygon's crossing parity.
     const auto cubicAt = [&](double t) {
         const double u = 1 - t;
-        return u * u * u * cubic.p[0] + 3 * u * u * t * cubic.p[1] + 3 * u * t * t * cubic.p[2] + t * t * t * cubic.p[3];
+        return u * u * u * cubic.p[0] + 3 * u * u * t * cubic.p[1] + 3 * u * t * t * cubic.p[2] +
+               t * t * t * cubic.p[3];
     };
     const auto quadAt = [&](double t) {
         const double u = 1 - t;
@@ -129,7 +135,8 @@ TEST_CASE("pathField::value of a Bézier outline against a dense-sampled referen
     for (int i = 0; i < kSamples; ++i) polyline.push_back(quadAt(double(i) / kSamples));
     const auto reference = [&](Vec2 p) {
         double best = 1e300;
-        for (const auto& curve : {std::function<Vec2(double)>(cubicAt), std::function<Vec2(double)>(quadAt)}) {
+        for (const auto& curve :
+             {std::function<Vec2(double)>(cubicAt), std::function<Vec2(double)>(quadAt)}) {
             int bi = 0;
             double bd = 1e300;
             for (int i = 0; i <= 2000; ++i) {
@@ -139,15 +146,18 @@ TEST_CASE("pathField::value of a Bézier outline against a dense-sampled referen
             double lo = std::max(0.0, (bi - 1) / 2000.0), hi = std::min(1.0, (bi + 1) / 2000.0);
             for (int k = 0; k < 200; ++k) {
                 const double m1 = lo + (hi - lo) * 0.382, m2 = lo + (hi - lo) * 0.618;
-                if (glm::length(curve(m1) - p) < glm::length(curve(m2) - p)) hi = m2;
-                else lo = m1;
+                if (glm::length(curve(m1) - p) < glm::length(curve(m2) - p))
+                    hi = m2;
+                else
+                    lo = m1;
             }
             best = std::min({best, bd, glm::length(curve(0.5 * (lo + hi)) - p)});
         }
         bool odd = false;
         for (size_t i = 0; i < polyline.size(); ++i) {
             const Vec2 a = polyline[i], b = polyline[(i + 1) % polyline.size()];
-            if ((a.y <= p.y) != (b.y <= p.y) && a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) > p.x) odd = !odd;
+            if ((a.y <= p.y) != (b.y <= p.y) && a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) > p.x)
+                odd = !odd;
         }
         return odd ? -best : best;
     };
@@ -179,8 +189,8 @@ TEST_CASE("pathField::range encloses the values sampled in the box") {
         for (int k = 0; k < 50; ++k) {
             const Vec2 p = lo + Vec2(unit(rng), unit(rng)) * (hi - lo);
             const double v = f->value(Vec3(p, 0.0));
-            INFO("box (" << lo.x << "," << lo.y << ")-(" << hi.x << "," << hi.y << ") p=(" << p.x << "," << p.y
-                         << ") v=" << v << " range [" << r.lo << "," << r.hi << "]");
+            INFO("box (" << lo.x << "," << lo.y << ")-(" << hi.x << "," << hi.y << ") p=(" << p.x
+                         << "," << p.y << ") v=" << v << " range [" << r.lo << "," << r.hi << "]");
             REQUIRE(r.contains(v));
         }
     }
@@ -221,7 +231,8 @@ TEST_CASE("pathField::valueGradient on the outline is the outward normal of the 
     }
 }
 
-TEST_CASE("pathField::value with hundreds of segments (through the BVH) equals the brute-force minimum") {
+TEST_CASE(
+    "pathField::value with hundreds of segments (through the BVH) equals the brute-force minimum") {
     // A star-shaped outline of 600 vertices at random radii, and a Bézier loop inside it.
     std::mt19937_64 rng(6);
     std::uniform_real_distribution<double> radius(1.0, 2.0), coord(-2.5, 2.5);
@@ -241,7 +252,8 @@ TEST_CASE("pathField::value with hundreds of segments (through the BVH) equals t
             const Vec2 a = points[k], b = points[(k + 1) % points.size()];
             const double s = std::clamp(glm::dot(p - a, b - a) / glm::dot(b - a, b - a), 0.0, 1.0);
             best = std::min(best, glm::length(p - (a + s * (b - a))));
-            if ((a.y <= p.y) != (b.y <= p.y) && a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) > p.x) odd = !odd;
+            if ((a.y <= p.y) != (b.y <= p.y) && a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) > p.x)
+                odd = !odd;
         }
         INFO("p=(" << p.x << "," << p.y << ")");
         REQUIRE(f->value(Vec3(p, 0.0)) == Approx(odd ? -best : best).margin(1e-12));
@@ -267,7 +279,8 @@ TEST_CASE("pathField::range encloses samples near Bézier curves") {
         for (int k = 0; k < 50; ++k) {
             const Vec2 p = lo + Vec2(unit(rng), unit(rng)) * (hi - lo);
             const double v = f->value(Vec3(p, 0.0));
-            INFO("p=(" << p.x << "," << p.y << ") v=" << v << " range [" << r.lo << "," << r.hi << "]");
+            INFO("p=(" << p.x << "," << p.y << ") v=" << v << " range [" << r.lo << "," << r.hi
+                       << "]");
             REQUIRE(r.contains(v));
         }
     }
@@ -287,7 +300,8 @@ TEST_CASE("pathField::rangeGradient encloses every difference quotient in the bo
         const Vec2 lo(coord(rng), coord(rng));
         const Vec2 hi = lo + Vec2(size(rng), size(rng)) * (unit(rng) < 0.5 ? 0.05 : 1.0);
         Interval g[3];
-        const Interval r = f->rangeGradient(Interval(lo.x, hi.x), Interval(lo.y, hi.y), Interval(0.0), g);
+        const Interval r =
+            f->rangeGradient(Interval(lo.x, hi.x), Interval(lo.y, hi.y), Interval(0.0), g);
         REQUIRE(g[2].lo == 0.0);
         REQUIRE(g[2].hi == 0.0);
         proven += g[0].width() < 1e-6;
@@ -297,11 +311,14 @@ TEST_CASE("pathField::rangeGradient encloses every difference quotient in the bo
             const double fp = f->value(Vec3(p, 0.0)), fq = f->value(Vec3(q, 0.0));
             REQUIRE(r.contains(fp));
             const Vec2 d = p - q;
-            const double dlo = std::min(g[0].lo * d.x, g[0].hi * d.x) + std::min(g[1].lo * d.y, g[1].hi * d.y);
-            const double dhi = std::max(g[0].lo * d.x, g[0].hi * d.x) + std::max(g[1].lo * d.y, g[1].hi * d.y);
+            const double dlo =
+                std::min(g[0].lo * d.x, g[0].hi * d.x) + std::min(g[1].lo * d.y, g[1].hi * d.y);
+            const double dhi =
+                std::max(g[0].lo * d.x, g[0].hi * d.x) + std::max(g[1].lo * d.y, g[1].hi * d.y);
             const double slack = 1e-14;  // rounding in the two distances
-            INFO("box (" << lo.x << "," << lo.y << ")-(" << hi.x << "," << hi.y << ") g=[" << g[0].lo << ","
-                         << g[0].hi << "]x[" << g[1].lo << "," << g[1].hi << "] diff " << fp - fq);
+            INFO("box (" << lo.x << "," << lo.y << ")-(" << hi.x << "," << hi.y << ") g=["
+                         << g[0].lo << "," << g[0].hi << "]x[" << g[1].lo << "," << g[1].hi
+                         << "] diff " << fp - fq);
             REQUIRE(fp - fq >= dlo - slack);
             REQUIRE(fp - fq <= dhi + slack);
         }

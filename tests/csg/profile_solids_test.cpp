@@ -1,12 +1,13 @@
-// Profiles (csg/profile.h) as 2-D distances, and extrude / revolve traced against closed forms.
+// Profiles (csg/profiles/profile.h) as 2-D distances, and extrude / revolve traced against closed
+// forms.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
-#include "csg/profile.h"
-#include "csg/span.h"
-#include "csg/tape.h"
+#include "csg/profiles/profile.h"
+#include "csg/tape/tape.h"
 #include "csg/trace_context.h"
+#include "csg/tree/span.h"
 
 using namespace kerf;
 
@@ -35,13 +36,15 @@ SpanList traced(const NodePtr& node, const Ray& ray, double tolerance = 1e-10) {
 TEST_CASE("Profile::offset of a square has exactly rounded corners") {
     const Profile square = profileRect({-1, -1}, {1, 1});
     const Profile grown = profileOffset(square, 0.5);
-    const Profile shrunk = profileOffset(profilePolygon({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}, {}), -0.25);
+    const Profile shrunk =
+        profileOffset(profilePolygon({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}, {}), -0.25);
     std::mt19937_64 rng(1);
     std::uniform_real_distribution<double> coord(-2.5, 2.5);
     for (int i = 0; i < 3000; ++i) {
         const Vec2 p(coord(rng), coord(rng));
         const Vec2 q = glm::abs(p) - Vec2(1.0);
-        const double exact = glm::length(glm::max(q, Vec2(0.0))) + std::min(std::max(q.x, q.y), 0.0);
+        const double exact =
+            glm::length(glm::max(q, Vec2(0.0))) + std::min(std::max(q.x, q.y), 0.0);
         INFO("p=(" << p.x << "," << p.y << ")");
         REQUIRE(profileAt(square, p) == Approx(exact).margin(1e-12));
         // Grown by 0.5: the corner at (1, 1) becomes a quarter circle of radius 0.5 around it.
@@ -52,12 +55,14 @@ TEST_CASE("Profile::offset of a square has exactly rounded corners") {
 
 TEST_CASE("Profile::Booleans are min and max of their operands") {
     const Profile a = profileCircle({-0.5, 0}, 1.0), b = profileCircle({0.5, 0}, 1.0);
-    const Profile u = profileUnion({a, b}), n = profileIntersection({a, b}), d = profileDifference({a, b});
+    const Profile u = profileUnion({a, b}), n = profileIntersection({a, b}),
+                  d = profileDifference({a, b});
     std::mt19937_64 rng(2);
     std::uniform_real_distribution<double> coord(-2.0, 2.0);
     for (int i = 0; i < 2000; ++i) {
         const Vec2 p(coord(rng), coord(rng));
-        const double da = glm::length(p - Vec2(-0.5, 0)) - 1.0, db = glm::length(p - Vec2(0.5, 0)) - 1.0;
+        const double da = glm::length(p - Vec2(-0.5, 0)) - 1.0,
+                     db = glm::length(p - Vec2(0.5, 0)) - 1.0;
         REQUIRE(profileAt(u, p) == Approx(std::min(da, db)).margin(1e-12));
         REQUIRE(profileAt(n, p) == Approx(std::max(da, db)).margin(1e-12));
         REQUIRE(profileAt(d, p) == Approx(std::max(da, -db)).margin(1e-12));
@@ -119,7 +124,8 @@ TEST_CASE("makeExtrude with twist turns a square within its bounding cylinder") 
         const SpanList s = traced(twisted, {Vec3(0.0, y, 0.0) - 4.0 * dir, dir});
         REQUIRE(!s.empty());
         const double theta = 0.5 * kPi * y / 3.0;
-        const double entry = 1.0 / std::max(std::abs(std::cos(phi + theta)), std::abs(std::sin(phi + theta)));
+        const double entry =
+            1.0 / std::max(std::abs(std::cos(phi + theta)), std::abs(std::sin(phi + theta)));
         INFO("y=" << y << " phi=" << phi);
         REQUIRE(s[0].in.t == Approx(4.0 - entry).epsilon(1e-9));
         REQUIRE(4.0 - s[0].in.t <= std::sqrt(2.0) * (1 + 1e-12));
@@ -163,7 +169,8 @@ TEST_CASE("makeRevolve by a partial angle keeps the wedge from +x toward +z") {
 
 TEST_CASE("makeExtrude of a polygon with a hole against the 2-D crossings") {
     // A 4×4 square with a 2×2 hole: a ray along x at z = 0 crosses [−2, −1] and [1, 2].
-    const Profile frame = profilePolygon({{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}, {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}});
+    const Profile frame = profilePolygon({{-2, -2}, {2, -2}, {2, 2}, {-2, 2}},
+                                         {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}});
     const NodePtr solid = makeExtrude(frame, {1.0});
     for (double z : {-1.5, 0.0, 0.3}) {
         const SpanList s = traced(solid, {Vec3(-3.0, 0.5, z), Vec3(1.0, 0.0, 0.0)});

@@ -3,9 +3,9 @@
 // never bigger than the original.
 #include <catch2/catch.hpp>
 
-#include "csg/expr.h"
-#include "csg/prune.h"
-#include "csg/solids.h"
+#include "csg/tape/expr.h"
+#include "csg/tree/prune.h"
+#include "csg/tree/solids.h"
 #include "util/oracles.h"
 #include "util/prune_checks.h"
 
@@ -57,30 +57,22 @@ ExprId randomExpr(ExprGraph& g, Random& rng, int depth) {
     }
     const ExprId a = randomExpr(g, rng, depth - 1), b = randomExpr(g, rng, depth - 1);
     switch (static_cast<int>(rng.uniform(0, 3))) {
-        case 0:
-            return g.binary(Op::Min, a, b);
-        case 1:
-            return g.binary(Op::Max, a, b);
-        default:
-            return g.binary(Op::Max, a, g.unary(Op::Neg, b));
+        case 0: return g.binary(Op::Min, a, b);
+        case 1: return g.binary(Op::Max, a, b);
+        default: return g.binary(Op::Max, a, g.unary(Op::Neg, b));
     }
 }
 
 NodePtr randomLeaf(Random& rng) {
     const Vec3 c = randomPoint(rng, 1.0);
     switch (static_cast<int>(rng.uniform(0, 7))) {
-        case 0:
-            return makeSphere(c, rng.uniform(0.3, 1.2));
-        case 1:
-            return makeBox(c - Vec3(rng.uniform(0.2, 1.0)), c + Vec3(rng.uniform(0.2, 1.0)));
-        case 2:
-            return makeCylinder(c, randomPoint(rng, 1.0), rng.uniform(0.2, 0.8));
+        case 0: return makeSphere(c, rng.uniform(0.3, 1.2));
+        case 1: return makeBox(c - Vec3(rng.uniform(0.2, 1.0)), c + Vec3(rng.uniform(0.2, 1.0)));
+        case 2: return makeCylinder(c, randomPoint(rng, 1.0), rng.uniform(0.2, 0.8));
         case 3:
             return makeCone(c, randomPoint(rng, 1.0), rng.uniform(0.2, 0.8), rng.uniform(0.0, 0.5));
-        case 4:
-            return makeTorus(rng.uniform(0.6, 1.2), rng.uniform(0.1, 0.5));
-        case 5:
-            return makeHalfSpace(rng.unitVector(), rng.uniform(-0.5, 0.5));
+        case 4: return makeTorus(rng.uniform(0.6, 1.2), rng.uniform(0.1, 0.5));
+        case 5: return makeHalfSpace(rng.unitVector(), rng.uniform(-0.5, 0.5));
         default: {
             ExprGraph g;
             const ExprId root = randomExpr(g, rng, static_cast<int>(rng.uniform(1, 4)));
@@ -278,8 +270,9 @@ TEST_CASE("prunedMany equals pruned box by box") {
                            .after(Affine::scale(Vec3(0.9)));
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> u(-1.6, 1.6), w(0.001, 0.6);
-    for (const NodePtr& node : {gyroid, makeMaterial(makeTransform(gyroid, map), 2), withMin,
-                                makeTransform(makeBoolean(BoolOp::Union, {gyroid, withMin}), map)}) {
+    for (const NodePtr& node :
+         {gyroid, makeMaterial(makeTransform(gyroid, map), 2), withMin,
+          makeTransform(makeBoolean(BoolOp::Union, {gyroid, withMin}), map)}) {
         int states[3] = {0, 0, 0};
         for (int trial = 0; trial < 400; ++trial) {
             Bounds3 boxes[kPrunedManyMax];
@@ -295,7 +288,8 @@ TEST_CASE("prunedMany equals pruned box by box") {
                 INFO("trial " << trial << " box " << b);
                 REQUIRE(many[b].state == one.state);
                 ++states[int(one.state)];
-                if (one.state == PruneState::Partial && one.node == node) CHECK(many[b].node == node);
+                if (one.state == PruneState::Partial && one.node == node)
+                    CHECK(many[b].node == node);
                 if (one.state == PruneState::Partial && one.node != node) {
                     // Rebuilt nodes are new objects: compare what they compute.
                     for (const Vec3& p : {boxes[b].lo, boxes[b].center(), boxes[b].hi})

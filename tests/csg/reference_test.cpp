@@ -1,7 +1,7 @@
 // referenceNearestHit against first hits computed independently in long double (closed forms
 // for the sphere and the box, dense sampling plus bisection of the quartic for the torus), and
 // its verdicts on tangent rays and coincident CSG faces.
-#include "csg/reference.h"
+#include "csg/primitives/reference.h"
 #include "util/oracles.h"
 
 #include <catch2/catch.hpp>
@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 
 using namespace kerf;
 using namespace kerf::test;
@@ -21,7 +21,8 @@ Random gRnd;
 Ray randomRay(const Vec3& centre, double spread) {
     Ray r;
     r.origin = centre + 5.0 * gRnd.gaussianUnitVector();
-    const Vec3 target = centre + spread * Vec3(gRnd.uniform(-1, 1), gRnd.uniform(-1, 1), gRnd.uniform(-1, 1));
+    const Vec3 target =
+        centre + spread * Vec3(gRnd.uniform(-1, 1), gRnd.uniform(-1, 1), gRnd.uniform(-1, 1));
     r.dir = (target - r.origin) * gRnd.uniform(0.1, 3.0);
     return r;
 }
@@ -116,8 +117,8 @@ TEST_CASE("referenceNearestHit: sphere against the long-double closed form") {
         CHECK(ref.object == 0);
     }
     CHECK(hits > 200);
-    INFO("worst relative error " << (double)worst << ", worst normal error "
-                                  << (double)worstNormal << " over " << compared << " hits");
+    INFO("worst relative error " << (double)worst << ", worst normal error " << (double)worstNormal
+                                 << " over " << compared << " hits");
     CHECK(worst <= 1e-17L);
     CHECK(worstNormal <= 1e-14L);
 }
@@ -189,15 +190,17 @@ TEST_CASE("referenceNearestHit: tangent rays are never a wrong hit") {
             // 5 − √(1 − y²) with 1 − y² = (1 − y)(1 + y) exact in long double.
             const LD exact = 5.0L - std::sqrt((1.0L - y) * (1.0L + y));
             CHECK(ref.kind != ReferenceHit::Kind::Miss);
-            if (ref.kind == ReferenceHit::Kind::Hit) CHECK(std::fabs(ref.t - exact) <= 1e-17L * exact);
+            if (ref.kind == ReferenceHit::Kind::Hit)
+                CHECK(std::fabs(ref.t - exact) <= 1e-17L * exact);
         }
     }
 }
 
 TEST_CASE("referenceNearestHit: a difference whose cutter shares faces with the body") {
     // [−1, 1]³ minus [0, 1] × [−1, 1]²: the cutter shares four faces with the body.
-    const NodePtr solid = makeBoolean(
-        BoolOp::Difference, {makeBox(Vec3(-1.0), Vec3(1.0)), makeBox(Vec3(0.0, -1.0, -1.0), Vec3(1.0))});
+    const NodePtr solid =
+        makeBoolean(BoolOp::Difference,
+                    {makeBox(Vec3(-1.0), Vec3(1.0)), makeBox(Vec3(0.0, -1.0, -1.0), Vec3(1.0))});
     SECTION("through the cut: the new face at x = 0") {
         const ReferenceHit ref = reference(solid, {Vec3(5.0, 0.3, 0.2), Vec3(-1.0, 0.0, 0.0)});
         REQUIRE(ref.kind == ReferenceHit::Kind::Hit);

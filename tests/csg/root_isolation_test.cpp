@@ -1,6 +1,6 @@
 // Root isolation along a parameter: polynomials with known roots (simple, close, double,
 // triple, near the start, many), checking every sign change is found and polished.
-#include "csg/root_isolation.h"
+#include "csg/primitives/root_isolation.h"
 
 #include <catch2/catch.hpp>
 #include <vector>

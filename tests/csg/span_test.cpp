@@ -1,5 +1,5 @@
 // The span algebra against its definition: a point is inside a op b iff op(inside a, inside b).
-#include "csg/span.h"
+#include "csg/tree/span.h"
 
 #include <catch2/catch.hpp>
 
@@ -19,7 +19,8 @@ Boundary bd(double t, uint32_t prim, Vec3 n = Vec3(1, 0, 0)) {
 
 SpanList spansOf(std::initializer_list<std::pair<double, double>> ranges, uint32_t prim) {
     SpanList s;
-    for (auto [a, b] : ranges) s.push_back({bd(a, prim, Vec3(-1, 0, 0)), bd(b, prim, Vec3(1, 0, 0))});
+    for (auto [a, b] : ranges)
+        s.push_back({bd(a, prim, Vec3(-1, 0, 0)), bd(b, prim, Vec3(1, 0, 0))});
     return s;
 }
 
@@ -124,8 +125,7 @@ TEST_CASE("combineSpans: coincident boundaries leave neither sliver nor seam", "
     }
 }
 
-TEST_CASE("combineSpans: xor flips the normals of boundaries inside the other operand",
-          "[span]") {
+TEST_CASE("combineSpans: xor flips the normals of boundaries inside the other operand", "[span]") {
     SpanList r;
     combineSpans(BoolOp::Xor, spansOf({{0, 4}}, 1), spansOf({{2, 6}}, 2), 1e-12, r);
     REQUIRE(r.size() == 2);
@@ -145,7 +145,8 @@ TEST_CASE("dropThinSpans: a span vanishes only within its boundaries' own error"
     for (double scale : {1e-6, 1.0, 1e6}) {
         // Root-found boundaries: thinner than the tolerance they carry (capped by the
         // caller's) vanishes, relative to |t| at every scale.
-        SpanList s = rootFound(spansOf({{1 * scale, 1.000001 * scale}, {2 * scale, 3 * scale}}, 1), 1e-5f);
+        SpanList s =
+            rootFound(spansOf({{1 * scale, 1.000001 * scale}, {2 * scale, 3 * scale}}, 1), 1e-5f);
         dropThinSpans(s, 1e-5);
         REQUIRE(s.size() == 1);
         CHECK(s[0].in.t == 2 * scale);

@@ -1,10 +1,10 @@
-// Open surfaces (csg/surfaces.h) against closed forms: disc, triangle, open cylinder, the
-// boundary of a sphere, a clipped disc, and the back-side marks the interior modifier fills.
+// Open surfaces (csg/primitives/surfaces.h) against closed forms: disc, triangle, open cylinder,
+// the boundary of a sphere, a clipped disc, and the back-side marks the interior modifier fills.
 #include <catch2/catch.hpp>
 
-#include "csg/solids.h"
-#include "csg/surfaces.h"
-#include "csg/tree_tape.h"
+#include "csg/primitives/surfaces.h"
+#include "csg/tape/tree_tape.h"
+#include "csg/tree/solids.h"
 
 #include <cmath>
 #include <random>
@@ -68,7 +68,8 @@ TEST_CASE("surfaces: a disc is hit from both sides where the plane meets the rin
     CHECK(misses > 500);
 }
 
-TEST_CASE("surfaces: a triangle is hit iff the barycentric coordinates are in range, from both sides") {
+TEST_CASE(
+    "surfaces: a triangle is hit iff the barycentric coordinates are in range, from both sides") {
     const Vec3 a(0, 0, 0), b(2, 0, 0), c(0, 1, 1);
     const NodePtr tri = makeTriangle(a, b, c);
     const Vec3 geometric = glm::cross(b - a, c - a);
@@ -80,7 +81,8 @@ TEST_CASE("surfaces: a triangle is hit iff the barycentric coordinates are in ra
         const double s = u(rng), t = u(rng);
         const Vec3 p = a + s * (b - a) + t * (c - a);
         const double side = i % 2 == 0 ? 1.0 : -1.0;
-        const Vec3 o = p + side * 2.0 * glm::normalize(geometric) + Vec3(0.1 * u(rng), 0.2 * u(rng), 0.0);
+        const Vec3 o =
+            p + side * 2.0 * glm::normalize(geometric) + Vec3(0.1 * u(rng), 0.2 * u(rng), 0.0);
         const Ray ray{o, p - o};
         const Crossing got = first(tri, ray);
         const double margin = 1e-9;
@@ -159,7 +161,7 @@ TEST_CASE("surfaces: surface sphere is crossed at the sphere's depth twice along
     REQUIRE(far.found);
     CHECK(far.entering);  // a surface is met, never entered or left
     CHECK(far.b.t == 5.0 + r);
-    CHECK(far.b.normal.z < 0.0);  // turned to face the ray
+    CHECK(far.b.normal.z < 0.0);                         // turned to face the ray
     CHECK(far.b.material == Boundary::kNoMaterialBack);  // the inside of the sphere
     CHECK_FALSE(first(sheet, ray, far.b.t).found);
     // The spans list both crossings as zero-width spans.
@@ -184,7 +186,8 @@ TEST_CASE("surfaces: clip of a disc by a box keeps the hits inside both") {
         const Vec3 o = target + Vec3(0.3 * u(rng), i % 2 ? 2.0 : -2.0, 0.3 * u(rng));
         const Ray ray{o, target - o};
         const double rho = std::hypot(target.x, target.z);
-        const double edge = std::min({std::fabs(rho - 1.0), std::fabs(target.x - 0.3), std::fabs(std::fabs(target.z) - 0.6)});
+        const double edge = std::min({std::fabs(rho - 1.0), std::fabs(target.x - 0.3),
+                                      std::fabs(std::fabs(target.z) - 0.6)});
         if (edge < 1e-9) continue;
         const bool expected = rho < 1.0 && target.x < 0.3 && std::fabs(target.z) < 0.6;
         const Crossing got = first(clipped, ray);
@@ -210,8 +213,8 @@ TEST_CASE("surfaces: clip of a disc by a box keeps the hits inside both") {
 TEST_CASE("surfaces: clip skips crossings outside the solid to find a later one inside") {
     // surface of a sphere of radius 1 clipped by the half-space z ≥ 0.5: along +z through the
     // centre the near crossing (z = −1) is outside, the far one (z = 1) inside.
-    const NodePtr clipped = makeClip(makeSurfaceOf(makeSphere(Vec3(0.0), 1.0)),
-                                     makeHalfSpace(Vec3(0, 0, -1), -0.5));
+    const NodePtr clipped =
+        makeClip(makeSurfaceOf(makeSphere(Vec3(0.0), 1.0)), makeHalfSpace(Vec3(0, 0, -1), -0.5));
     const Crossing got = first(clipped, Ray{Vec3(0, 0, -3), Vec3(0, 0, 1)});
     REQUIRE(got.found);
     CHECK(got.b.t == 4.0);
@@ -221,7 +224,8 @@ TEST_CASE("surfaces: clip skips crossings outside the solid to find a later one 
 TEST_CASE("surfaces: interior fills back sides and the boundaries where a ray leaves a solid") {
     constexpr int32_t kFront = 3, kBack = 5;
     // A disc seen from above and from below, under material(interior(disc)).
-    const NodePtr disc = makeMaterial(makeInterior(makeDisc(Vec3(0.0), Vec3(0, 1, 0), 1.0), kBack), kFront);
+    const NodePtr disc =
+        makeMaterial(makeInterior(makeDisc(Vec3(0.0), Vec3(0, 1, 0), 1.0), kBack), kFront);
     CHECK(first(disc, Ray{Vec3(0, 1, 0), Vec3(0, -1, 0)}).b.material == kFront);
     CHECK(first(disc, Ray{Vec3(0, -1, 0), Vec3(0, 1, 0)}).b.material == kBack);
     // A sphere: entering shows the material, leaving (a ray from inside) the interior.
@@ -251,7 +255,9 @@ TEST_CASE("surfaces: isSurfaceTree sees through transforms, materials and interi
     CHECK_FALSE(isLeaf(NodeKind::SurfaceOf));
 }
 
-TEST_CASE("surfaces: the tree's implicit form has no inside for a surface, and interior keeps its solid's") {
+TEST_CASE(
+    "surfaces: the tree's implicit form has no inside for a surface, and interior keeps its "
+    "solid's") {
     // treeTape is what mesh export and slicing compile; `surface sphere` must not mesh as a ball.
     const auto sheet = treeTape(*makeSurfaceOf(makeSphere(Vec3(0.0), 1.0)));
     CHECK(sheet->eval(Vec3(0.0)) > 0.0);

@@ -5,7 +5,7 @@
 //   build/tests/kerf_csg_tests "[.bench]"
 // KERF_BENCH_BOXES=n changes the count; KERF_BENCH_ONLY=ref|scalar|avx2 runs one variant once
 // (for callgrind: --toggle-collect='kerf::Tape::evalInterval*').
-#include "csg/tape.h"
+#include "csg/tape/tape.h"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -29,7 +29,8 @@ std::shared_ptr<const Tape> gyroid() {
     auto term = [&](ExprId a, ExprId b) {
         return g.binary(Op::Mul, g.unary(Op::Sin, a), g.unary(Op::Cos, b));
     };
-    return Tape::compile(g, g.binary(Op::Add, g.binary(Op::Add, term(u, v), term(v, w)), term(w, u)));
+    return Tape::compile(g,
+                         g.binary(Op::Add, g.binary(Op::Add, term(u, v), term(v, w)), term(w, u)));
 }
 
 struct Boxes {
@@ -92,7 +93,10 @@ TEST_CASE("bench: Tape::evalInterval4 on the gyroid over octree children", "[.be
     std::vector<Interval> reference, out;
     if (only) {
         const std::string o = only;
-        run(*f, boxes, o == "ref" ? Variant::Reference : o == "scalar" ? Variant::Scalar : Variant::Avx2,
+        run(*f, boxes,
+            o == "ref"      ? Variant::Reference
+            : o == "scalar" ? Variant::Scalar
+                            : Variant::Avx2,
             out);
         std::cout << "ran " << o << " over " << count << " boxes\n";
         return;
@@ -106,15 +110,20 @@ TEST_CASE("bench: Tape::evalInterval4 on the gyroid over octree children", "[.be
         for (int rep = 0; rep < 5; ++rep) {
             const auto t0 = std::chrono::steady_clock::now();
             run(*f, boxes, v, out);
-            ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+            ms.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                    .count());
         }
         std::sort(ms.begin(), ms.end());
         if (v == Variant::Reference) referenceMedian = ms[2];
-        const char* name = v == Variant::Reference ? "evalInterval x4" : v == Variant::Scalar ? "evalInterval4 scalar" : "evalInterval4 avx2";
+        const char* name = v == Variant::Reference ? "evalInterval x4"
+                           : v == Variant::Scalar  ? "evalInterval4 scalar"
+                                                   : "evalInterval4 avx2";
         std::cout << name << ": median " << ms[2] << " ms (min " << ms[0] << ", max " << ms[4]
                   << "), " << 1e6 * ms[2] / double(count) << " ns/box, speed-up "
-                  << referenceMedian / ms[2] << ", results differing from evalInterval: "
-                  << mismatches(reference, out) << "\n";
+                  << referenceMedian / ms[2]
+                  << ", results differing from evalInterval: " << mismatches(reference, out)
+                  << "\n";
         CHECK(mismatches(reference, out) == 0);
     }
 }

@@ -2,8 +2,8 @@
 // and the AVX2 path must be the same bits (lo, hi, maybeNan) as evalInterval over that lane's
 // box, on random tapes and on each vectorised op alone, over boxes of every awkward kind.
 // The AVX2 path runs only where the CPU has AVX2 (a WARN says when it does not).
+#include "csg/tape/tape.h"
 #include "util/interval_checks.h"
-#include "csg/tape.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -19,10 +19,10 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kHalfPi = 1.5707963267948966;
 
 const char* opName(Op op) {
-    static const char* names[] = {"const", "x",    "y",    "z",     "neg",   "square", "sqrt",
-                                  "abs",   "sin",  "cos",  "tan",   "asin",  "acos",   "atan",
-                                  "exp",   "log",  "floor", "ceil", "+",     "-",      "*",
-                                  "/",     "pow",  "atan2", "min",  "max",   "powInt"};
+    static const char* names[] = {"const", "x",   "y",     "z",    "neg",  "square", "sqrt",
+                                  "abs",   "sin", "cos",   "tan",  "asin", "acos",   "atan",
+                                  "exp",   "log", "floor", "ceil", "+",    "-",      "*",
+                                  "/",     "pow", "atan2", "min",  "max",  "powInt"};
     return names[static_cast<int>(op)];
 }
 
@@ -36,7 +36,8 @@ using kerf::test::sameBits;
 
 /// j·π/2 moved by `ulps` steps of one ulp (the ends where the quadrant test is decided).
 double nearHalfPiMultiple(std::mt19937_64& rng, double maxMultiple) {
-    const double j = std::round(std::uniform_real_distribution<double>(-maxMultiple, maxMultiple)(rng));
+    const double j =
+        std::round(std::uniform_real_distribution<double>(-maxMultiple, maxMultiple)(rng));
     double v = j * kHalfPi;
     for (int u = std::uniform_int_distribution<int>(-3, 3)(rng); u != 0; u += u > 0 ? -1 : 1)
         v = std::nextafter(v, u > 0 ? kInfinity : -kInfinity);
@@ -54,7 +55,9 @@ Interval randomSide(std::mt19937_64& rng) {
         case 0: v = {a, a}; break;
         case 1: v = {-0.0, 0.0}; break;
         case 2: v = {a, std::nextafter(a, kInfinity)}; break;
-        case 3: v = {a, a + std::pow(10.0, std::uniform_real_distribution<double>(-15, 0)(rng))}; break;
+        case 3:
+            v = {a, a + std::pow(10.0, std::uniform_real_distribution<double>(-15, 0)(rng))};
+            break;
         case 4: v = {-std::fabs(a), std::fabs(b)}; break;
         case 5: v = {std::min(a, b) * 1e150, std::max(a, b) * 1e150}; break;
         case 6: v = {a, kInfinity}; break;
@@ -71,7 +74,8 @@ Interval randomSide(std::mt19937_64& rng) {
             break;
         }
         case 11: {  // at the fast range's edge, 6.5e5 ≈ 413802·π/2
-            const double p = nearHalfPiMultiple(rng, 1.0) + (a < 0 ? -1.0 : 1.0) * 413802.0 * kHalfPi;
+            const double p =
+                nearHalfPiMultiple(rng, 1.0) + (a < 0 ? -1.0 : 1.0) * 413802.0 * kHalfPi;
             v = {p, p + std::fabs(b) * 1e-3};
             break;
         }
@@ -99,7 +103,8 @@ void randomGraph(std::mt19937_64& rng, const std::vector<Op>& ops, int size, Exp
         const Op op = ops[std::uniform_int_distribution<size_t>(0, ops.size() - 1)(rng)];
         auto pick = [&] {  // favour recent nodes: deep tapes rather than flat fans
             const size_t n = nodes.size();
-            const size_t back = std::min<size_t>(n - 1, std::geometric_distribution<size_t>(0.3)(rng));
+            const size_t back =
+                std::min<size_t>(n - 1, std::geometric_distribution<size_t>(0.3)(rng));
             return nodes[n - 1 - back];
         };
         nodes.push_back(isBinary(op) ? g.binary(op, pick(), pick()) : g.unary(op, pick()));
@@ -153,7 +158,8 @@ void checkRandomTapes(const std::vector<Op>& ops, uint64_t seed, int tapes) {
         const auto f = Tape::compile(g, nodes.back());
         for (int trial = 0; trial < 25; ++trial) {
             Interval x[4], y[4], z[4], out[4];
-            for (int k = 0; k < 4; ++k) x[k] = randomSide(rng), y[k] = randomSide(rng), z[k] = randomSide(rng);
+            for (int k = 0; k < 4; ++k)
+                x[k] = randomSide(rng), y[k] = randomSide(rng), z[k] = randomSide(rng);
             for (Tape::Lanes4 p : lanes) {
                 f->evalInterval4(x, y, z, out, p);
                 for (int k = 0; k < 4; ++k) {
@@ -183,7 +189,8 @@ TEST_CASE("Tape::evalInterval4: each vectorised op alone gives evalInterval's bi
     for (Op op : {Op::Add, Op::Sub, Op::Mul, Op::Neg, Op::Square, Op::Sin, Op::Cos, Op::Min,
                   Op::Max, Op::Abs}) {
         ExprGraph g;
-        const auto f = Tape::compile(g, isBinary(op) ? g.binary(op, g.x(), g.y()) : g.unary(op, g.x()));
+        const auto f =
+            Tape::compile(g, isBinary(op) ? g.binary(op, g.x(), g.y()) : g.unary(op, g.x()));
         for (int trial = 0; trial < 20000 && failures < 10; ++trial) {
             Interval x[4], y[4], z[4], out[4];
             for (int k = 0; k < 4; ++k) x[k] = randomSide(rng), y[k] = randomSide(rng), z[k] = 0.0;
@@ -192,9 +199,11 @@ TEST_CASE("Tape::evalInterval4: each vectorised op alone gives evalInterval's bi
                 for (int k = 0; k < 4; ++k) {
                     const Interval ref = f->evalInterval(x[k], y[k], z[k]);
                     if (sameBits(out[k], ref)) continue;
-                    FAIL_CHECK(pathName(p) << " path, lane " << k << ": " << opName(op) << " of "
+                    FAIL_CHECK(pathName(p)
+                               << " path, lane " << k << ": " << opName(op) << " of "
                                << describe(x[k]) << (isBinary(op) ? " and " + describe(y[k]) : "")
-                               << " = " << describe(out[k]) << " vs evalInterval " << describe(ref));
+                               << " = " << describe(out[k]) << " vs evalInterval "
+                               << describe(ref));
                     ++failures;
                 }
             }
@@ -209,7 +218,8 @@ TEST_CASE("Tape::evalInterval4: random tapes of the vectorised ops give evalInte
                      7, 400);
 }
 
-TEST_CASE("Tape::evalInterval4: tapes with other ops (the scalar fallback) give evalInterval's bits") {
+TEST_CASE(
+    "Tape::evalInterval4: tapes with other ops (the scalar fallback) give evalInterval's bits") {
     checkRandomTapes({Op::Add, Op::Mul, Op::Sin, Op::Sqrt, Op::Div, Op::Exp, Op::Min}, 13, 150);
 }
 
@@ -222,7 +232,8 @@ TEST_CASE("Tape::evalInterval4: the gyroid over octree-like boxes gives evalInte
     auto term = [&](ExprId a, ExprId b) {
         return g.binary(Op::Mul, g.unary(Op::Sin, a), g.unary(Op::Cos, b));
     };
-    const auto f = Tape::compile(g, g.binary(Op::Add, g.binary(Op::Add, term(u, v), term(v, w)), term(w, u)));
+    const auto f =
+        Tape::compile(g, g.binary(Op::Add, g.binary(Op::Add, term(u, v), term(v, w)), term(w, u)));
     std::mt19937_64 rng(17);
     std::uniform_real_distribution<double> corner(-3.0, 3.0);
     int failures = 0;
@@ -238,9 +249,10 @@ TEST_CASE("Tape::evalInterval4: the gyroid over octree-like boxes gives evalInte
             for (int c = 0; c < 4; ++c) {
                 const Interval ref = f->evalInterval(x[c], y[c], z[c]);
                 if (sameBits(out[c], ref)) continue;
-                FAIL_CHECK(pathName(p) << " path, lane " << c << ": gyroid over " << describe(x[c])
-                           << " × " << describe(y[c]) << " × " << describe(z[c]) << " = "
-                           << describe(out[c]) << " vs evalInterval " << describe(ref));
+                FAIL_CHECK(pathName(p)
+                           << " path, lane " << c << ": gyroid over " << describe(x[c]) << " × "
+                           << describe(y[c]) << " × " << describe(z[c]) << " = " << describe(out[c])
+                           << " vs evalInterval " << describe(ref));
                 ++failures;
             }
         }

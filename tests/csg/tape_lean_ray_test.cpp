@@ -2,8 +2,8 @@
 // negation, square, sin, cos over constants and axes) against the general evaluator: the same
 // bits on random tapes, rays and t-intervals of every awkward kind; tapes with other ops keep
 // the general path.
+#include "csg/tape/tape.h"
 #include "util/interval_checks.h"
-#include "csg/tape.h"
 
 #include <catch2/catch.hpp>
 #include <cstring>
@@ -18,8 +18,7 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 /// A random expression DAG of `size` nodes over x, y, z and constants, its ops drawn from
 /// `ops` (unary ones take one earlier node, binary ones two).
-std::shared_ptr<const Tape> randomTape(std::mt19937_64& rng, const std::vector<Op>& ops,
-                                       int size) {
+std::shared_ptr<const Tape> randomTape(std::mt19937_64& rng, const std::vector<Op>& ops, int size) {
     ExprGraph g;
     std::vector<ExprId> nodes = {g.x(), g.y(), g.z()};
     std::uniform_real_distribution<double> constant(-4.0, 4.0);
@@ -30,7 +29,8 @@ std::shared_ptr<const Tape> randomTape(std::mt19937_64& rng, const std::vector<O
         auto pick = [&] {
             // Favour recent nodes, so the tape is deep rather than a flat fan.
             const size_t n = nodes.size();
-            const size_t back = std::min<size_t>(n - 1, std::geometric_distribution<size_t>(0.3)(rng));
+            const size_t back =
+                std::min<size_t>(n - 1, std::geometric_distribution<size_t>(0.3)(rng));
             return nodes[n - 1 - back];
         };
         const bool binary = op == Op::Add || op == Op::Sub || op == Op::Mul || op == Op::Div ||
@@ -44,20 +44,15 @@ Interval randomT(std::mt19937_64& rng) {
     std::uniform_real_distribution<double> u(-20.0, 20.0);
     const double a = u(rng), b = u(rng);
     switch (std::uniform_int_distribution<int>(0, 5)(rng)) {
-        case 0:
-            return {a, a};
-        case 1:
-            return {a, kInfinity};
-        case 2:
-            return {-kInfinity, a};
+        case 0: return {a, a};
+        case 1: return {a, kInfinity};
+        case 2: return {-kInfinity, a};
         case 3: {
             const double w = std::pow(10.0, std::uniform_real_distribution<double>(-15, 0)(rng));
             return {a, a + w};
         }
-        case 4:
-            return {std::min(a, b) * 1e150, std::max(a, b) * 1e150};
-        default:
-            return {std::min(a, b), std::max(a, b)};
+        case 4: return {std::min(a, b) * 1e150, std::max(a, b) * 1e150};
+        default: return {std::min(a, b), std::max(a, b)};
     }
 }
 
@@ -85,9 +80,9 @@ void checkSameAsReference(const std::vector<Op>& ops, uint64_t seed) {
             f->evalIntervalAlongRayReference(ray, t, vr, dr);
             if (sameBits(v, vr) && sameBits(d, dr)) continue;
             std::ostringstream msg;
-            msg << "tape of " << f->size() << " instructions, t = " << describe(t)
-                << ": f " << describe(v) << " vs reference " << describe(vr) << ", df/dt "
-                << describe(d) << " vs " << describe(dr);
+            msg << "tape of " << f->size() << " instructions, t = " << describe(t) << ": f "
+                << describe(v) << " vs reference " << describe(vr) << ", df/dt " << describe(d)
+                << " vs " << describe(dr);
             FAIL_CHECK(msg.str());
             ++failures;
         }

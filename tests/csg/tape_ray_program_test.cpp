@@ -1,16 +1,16 @@
-// TapeRayProgram (csg/tape_ray_program.h), the comparison interval method's evaluator: on
+// TapeRayProgram (csg/tape/tape_ray_program.h), the comparison interval method's evaluator: on
 // random tapes (sqrt, squares, products, min/max, sin, abs, affine forms), random rays and
 // random t-intervals, every value sampled along the ray lies in its enclosure of f, every
 // difference quotient in its enclosure of df/dt; and it is never looser than
 // Tape::evalIntervalAlongRay on sums of squares of affine forms.
-#include "csg/tape_ray_program.h"
+#include "csg/tape/tape_ray_program.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "csg/expr.h"
-#include "csg/node.h"
-#include "csg/tape.h"
+#include "csg/tape/expr.h"
+#include "csg/tape/tape.h"
+#include "csg/tree/node.h"
 #include "util/oracles.h"
 
 using namespace kerf;
@@ -37,29 +37,21 @@ ExprId randomExpr(ExprGraph& g, Random& rng, int depth) {
         case 0: {  // a sphere-like distance: sqrt of a sum of squares of affine forms, minus r
             ExprId s = g.unary(Op::Square, affine());
             s = g.binary(Op::Add, s, g.unary(Op::Square, affine()));
-            if (rng.uniform(0.0, 1.0) < 0.6) s = g.binary(Op::Add, s, g.unary(Op::Square, affine()));
+            if (rng.uniform(0.0, 1.0) < 0.6)
+                s = g.binary(Op::Add, s, g.unary(Op::Square, affine()));
             return g.binary(Op::Sub, g.unary(Op::Sqrt, s), g.constant(rng.uniform(0.1, 3.0)));
         }
-        case 1:
-            return g.unary(Op::Square, sub());
-        case 2:
-            return g.binary(Op::Min, sub(), sub());
-        case 3:
-            return g.binary(Op::Max, sub(), sub());
-        case 4:
-            return g.unary(Op::Sin, sub());
-        case 5:
-            return g.binary(Op::Mul, sub(), sub());
-        case 6:
-            return g.binary(Op::Add, sub(), sub());
-        case 7:
-            return g.binary(Op::Sub, sub(), g.binary(Op::Mul, sub(), g.constant(0.5)));
-        case 8:
-            return g.unary(Op::Abs, sub());
+        case 1: return g.unary(Op::Square, sub());
+        case 2: return g.binary(Op::Min, sub(), sub());
+        case 3: return g.binary(Op::Max, sub(), sub());
+        case 4: return g.unary(Op::Sin, sub());
+        case 5: return g.binary(Op::Mul, sub(), sub());
+        case 6: return g.binary(Op::Add, sub(), sub());
+        case 7: return g.binary(Op::Sub, sub(), g.binary(Op::Mul, sub(), g.constant(0.5)));
+        case 8: return g.unary(Op::Abs, sub());
         case 9:  // sqrt of something that can be negative: NaN flags must come through
             return g.unary(Op::Sqrt, sub());
-        default:
-            return g.binary(Op::Div, sub(), g.constant(rng.uniform(0.5, 2.0)));
+        default: return g.binary(Op::Div, sub(), g.constant(rng.uniform(0.5, 2.0)));
     }
 }
 
@@ -122,9 +114,9 @@ TEST_CASE("TapeRayProgram encloses f and df/dt along random rays (property)") {
                                                       : rng.uniform(a, b);
                 const long double v = along(*tape, ray, t);
                 const long double slack = 1e-15L * (std::fabs(v) + 1.0L);
-                INFO("tape " << k << " ray " << r << " t " << static_cast<double>(t) << " in ["
-                             << a << ", " << b << "] value " << static_cast<double>(v)
-                             << " enclosure [" << f.lo << ", " << f.hi << "]");
+                INFO("tape " << k << " ray " << r << " t " << static_cast<double>(t) << " in [" << a
+                             << ", " << b << "] value " << static_cast<double>(v) << " enclosure ["
+                             << f.lo << ", " << f.hi << "]");
                 CHECK(within(v, f, slack));  // no NaN either: f.maybeNan is not set
                 ++checked;
                 // Mean value: a difference quotient over a wide enough step lies in df/dt
@@ -163,11 +155,11 @@ TEST_CASE("TapeRayProgram: a sum of squares of affine forms has its exact range"
     // (x − 1)² + (y + 2)² + z² along a ray, over intervals holding the vertex or not: the
     // range is that of the quadratic in t, to rounding.
     ExprGraph g;
-    const ExprId e = g.binary(
-        Op::Add,
-        g.binary(Op::Add, g.unary(Op::Square, g.binary(Op::Sub, g.x(), g.constant(1.0))),
-                 g.unary(Op::Square, g.binary(Op::Add, g.y(), g.constant(2.0)))),
-        g.unary(Op::Square, g.z()));
+    const ExprId e =
+        g.binary(Op::Add,
+                 g.binary(Op::Add, g.unary(Op::Square, g.binary(Op::Sub, g.x(), g.constant(1.0))),
+                          g.unary(Op::Square, g.binary(Op::Add, g.y(), g.constant(2.0)))),
+                 g.unary(Op::Square, g.z()));
     const auto tape = Tape::compile(g, e);
     const TapeRayPlan plan(*tape);
     CHECK(plan.steps().size() == 1);  // one folded quadratic, nothing else to run

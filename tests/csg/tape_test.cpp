@@ -1,12 +1,12 @@
 // Expression graphs and tapes: evaluation against the same formula written in C++, interval
 // containment, gradients against analytic and finite-difference oracles, hash-consing.
-#include "csg/tape.h"
+#include "csg/tape/tape.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
-#include "csg/expr.h"
+#include "csg/tape/expr.h"
 
 using namespace kerf;
 

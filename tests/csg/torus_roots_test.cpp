@@ -1,8 +1,8 @@
-// The torus' closed method (csg/torus_roots.h: convex pieces of the distance form, tangents
-// decide, Newton locates) on the hard cases, against long-double references: closed-form
+// The torus' closed method (csg/primitives/torus_roots.h: convex pieces of the distance form,
+// tangents decide, Newton locates) on the hard cases, against long-double references: closed-form
 // chords where the geometry gives them, else tests/util/torus_reference.h (the quartic's sign
 // changes isolated by its derivatives' roots, refined on the distance form).
-#include "csg/torus_roots.h"
+#include "csg/primitives/torus_roots.h"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 #include "util/oracles.h"
 #include "util/torus_reference.h"
 

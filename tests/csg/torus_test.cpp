@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 #include "util/oracles.h"
 
 using namespace kerf;

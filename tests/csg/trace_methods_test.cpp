@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "csg/expr.h"
-#include "csg/solids.h"
-#include "csg/tape.h"
+#include "csg/tape/expr.h"
+#include "csg/tape/tape.h"
+#include "csg/tree/solids.h"
 #include "util/oracles.h"
 
 using namespace kerf;
@@ -57,7 +57,8 @@ Random gRnd;
 Ray randomRay(const Vec3& centre) {
     Ray r;
     r.origin = centre + 6.0 * gRnd.gaussianUnitVector();
-    const Vec3 target = centre + Vec3(gRnd.uniform(-1.8, 1.8), gRnd.uniform(-1.8, 1.8), gRnd.uniform(-1.8, 1.8));
+    const Vec3 target =
+        centre + Vec3(gRnd.uniform(-1.8, 1.8), gRnd.uniform(-1.8, 1.8), gRnd.uniform(-1.8, 1.8));
     r.dir = (target - r.origin) * gRnd.uniform(0.05, 3.0);
     return r;
 }
@@ -84,9 +85,9 @@ std::vector<Named> closedFormPrimitives() {
 
 std::shared_ptr<const Tape> sphereTape(double radius) {
     ExprGraph g;
-    const ExprId s = g.binary(
-        Op::Add, g.binary(Op::Add, g.unary(Op::Square, g.x()), g.unary(Op::Square, g.y())),
-        g.unary(Op::Square, g.z()));
+    const ExprId s =
+        g.binary(Op::Add, g.binary(Op::Add, g.unary(Op::Square, g.x()), g.unary(Op::Square, g.y())),
+                 g.unary(Op::Square, g.z()));
     return Tape::compile(g, g.binary(Op::Sub, s, g.constant(radius * radius)));
 }
 
@@ -104,12 +105,13 @@ TEST_CASE("TraceMethod::Interval agrees with the closed forms") {
                     // Thin spans (tangencies) may differ: the isolation drops what is thinner
                     // than its tolerance. 4× covers where the bisection stops.
                     const double thin = 4.0 * tolerance;
-                    const auto closed = crossings(*p.node, ray, TraceMethod::Closed, tolerance, thin);
+                    const auto closed =
+                        crossings(*p.node, ray, TraceMethod::Closed, tolerance, thin);
                     const auto interval =
                         crossings(*p.node, ray, TraceMethod::Interval, tolerance, thin);
                     INFO("ray " << i << " origin " << ray.origin.x << ' ' << ray.origin.y << ' '
-                                << ray.origin.z << " dir " << ray.dir.x << ' ' << ray.dir.y
-                                << ' ' << ray.dir.z);
+                                << ray.origin.z << " dir " << ray.dir.x << ' ' << ray.dir.y << ' '
+                                << ray.dir.z);
                     REQUIRE(interval.size() == closed.size());
                     hits += !closed.empty();
                     for (size_t k = 0; k < closed.size(); ++k) {
@@ -124,7 +126,7 @@ TEST_CASE("TraceMethod::Interval agrees with the closed forms") {
                         CHECK(glm::dot(a, b) > 1.0 - 1e-6);
                     }
                 }
-                CHECK(hits > 600);   // both hits and misses are exercised
+                CHECK(hits > 600);  // both hits and misses are exercised
                 CHECK(3000 - hits > 200);
                 INFO(p.name << " worst relative difference " << worst);
                 CHECK(worst <= tolerance + 1e-14);
@@ -146,8 +148,8 @@ TEST_CASE("TraceMethod::Interval is the closed method for the implicit") {
 }
 
 TEST_CASE("TraceMethod::Closed of the torus agrees with its interval isolation") {
-    // The torus' closed method (convex pieces of its distance form, csg/torus_roots.h) is a
-    // fast path for the interval isolation of its quartic: the same crossings within the
+    // The torus' closed method (convex pieces of its distance form, csg/primitives/torus_roots.h)
+    // is a fast path for the interval isolation of its quartic: the same crossings within the
     // tolerance, spans thinner than it (tangencies) aside.
     gRnd.seed(7);
     for (const double tolerance : {1e-6, 1e-9, 1e-12}) {
@@ -155,8 +157,10 @@ TEST_CASE("TraceMethod::Closed of the torus agrees with its interval isolation")
             const NodePtr torus = makeTorus(1.0, minor);
             for (int i = 0; i < 500; ++i) {
                 const Ray ray = randomRay(Vec3(0.0));
-                const auto a = crossings(*torus, ray, TraceMethod::Closed, tolerance, 4 * tolerance);
-                const auto b = crossings(*torus, ray, TraceMethod::Interval, tolerance, 4 * tolerance);
+                const auto a =
+                    crossings(*torus, ray, TraceMethod::Closed, tolerance, 4 * tolerance);
+                const auto b =
+                    crossings(*torus, ray, TraceMethod::Interval, tolerance, 4 * tolerance);
                 INFO("minor " << minor << " tolerance " << tolerance << " ray " << i);
                 REQUIRE(a.size() == b.size());
                 for (size_t k = 0; k < a.size(); ++k) {
@@ -190,8 +194,8 @@ TEST_CASE("TraceMethod::SphereTrace agrees with the closed forms on easy rays") 
         INFO("ray from " << ray.origin.x << ' ' << ray.origin.y << ' ' << ray.origin.z
                          << " tolerance " << tolerance);
         const auto closed = crossings(node, ray, TraceMethod::Closed, tolerance, 0.0);
-        const auto traced = crossings(node, ray, TraceMethod::SphereTrace, tolerance, 0.0, 0.0,
-                                      kInf, &stats);
+        const auto traced =
+            crossings(node, ray, TraceMethod::SphereTrace, tolerance, 0.0, 0.0, kInf, &stats);
         REQUIRE(closed.size() == 2);
         REQUIRE(traced.size() == closed.size());
         CHECK(stats.rootSteps > 0);
@@ -235,8 +239,8 @@ TEST_CASE("TraceMethod::SphereTrace misses a grazing thin shell that Interval an
         CHECK(closed[0].t == Approx(entry).epsilon(1e-12));
         CHECK(std::fabs(interval[0].t - entry) <= tolerance * entry + 1e-12);
         TraceStats stats;
-        const auto traced = crossings(*shell, ray, TraceMethod::SphereTrace, tolerance, 0.0, 0.0,
-                                      kInf, &stats);
+        const auto traced =
+            crossings(*shell, ray, TraceMethod::SphereTrace, tolerance, 0.0, 0.0, kInf, &stats);
         CHECK(traced.empty());  // gave up after kSphereTraceMaxSteps steps creeping closer
         CHECK(stats.rootSteps >= 512);
     }

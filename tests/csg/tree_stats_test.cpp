@@ -1,6 +1,6 @@
 // Counts over shared subtrees: one visit per distinct node, 64-bit instance counts.
-#include "csg/solids.h"
-#include "csg/tree_stats.h"
+#include "csg/tree/tree_stats.h"
+#include "csg/tree/solids.h"
 
 #include <catch2/catch.hpp>
 
@@ -15,7 +15,8 @@ namespace {
 NodePtr doubled(int levels) {
     NodePtr s = makeSphere(Vec3(0.0), 0.4);
     for (int i = 0; i < levels; ++i)
-        s = makeBoolean(BoolOp::Union, {s, makeTransform(s, Affine::translate(Vec3(std::ldexp(1.0, i), 0, 0)))});
+        s = makeBoolean(BoolOp::Union,
+                        {s, makeTransform(s, Affine::translate(Vec3(std::ldexp(1.0, i), 0, 0)))});
     return s;
 }
 

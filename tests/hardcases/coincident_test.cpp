@@ -45,10 +45,10 @@ TEST_CASE("Union of abutting boxes: one span across the shared face") {
     for (double s : kScales) {
         // The cube [0, 1]³ cut at x = 0.5 and at y = 0.375 into three boxes sharing faces.
         const NodePtr whole = makeBox(Vec3(0.0), s * Vec3(1.0));
-        const NodePtr parts = makeBoolean(
-            BoolOp::Union, {makeBox(Vec3(0.0), s * Vec3(0.5, 1.0, 1.0)),
-                            makeBox(s * Vec3(0.5, 0.0, 0.0), s * Vec3(1.0, 0.375, 1.0)),
-                            makeBox(s * Vec3(0.5, 0.375, 0.0), s * Vec3(1.0))});
+        const NodePtr parts =
+            makeBoolean(BoolOp::Union, {makeBox(Vec3(0.0), s * Vec3(0.5, 1.0, 1.0)),
+                                        makeBox(s * Vec3(0.5, 0.0, 0.0), s * Vec3(1.0, 0.375, 1.0)),
+                                        makeBox(s * Vec3(0.5, 0.375, 0.0), s * Vec3(1.0))});
         TraceContext ctx;
         int crossing = 0;
         for (int i = 0; i < 2000; ++i) {
@@ -97,10 +97,10 @@ TEST_CASE("render: a glass union of abutting boxes renders like the single box")
             return scene;
         };
         const Scene single = sceneWith(makeBox(Vec3(0.0), s * Vec3(1.0)));
-        const Scene split = sceneWith(makeBoolean(
-            BoolOp::Union, {makeBox(Vec3(0.0), s * Vec3(0.5, 1.0, 1.0)),
-                            makeBox(s * Vec3(0.5, 0.0, 0.0), s * Vec3(1.0, 0.5, 1.0)),
-                            makeBox(s * Vec3(0.5, 0.5, 0.0), s * Vec3(1.0))}));
+        const Scene split = sceneWith(
+            makeBoolean(BoolOp::Union, {makeBox(Vec3(0.0), s * Vec3(0.5, 1.0, 1.0)),
+                                        makeBox(s * Vec3(0.5, 0.0, 0.0), s * Vec3(1.0, 0.5, 1.0)),
+                                        makeBox(s * Vec3(0.5, 0.5, 0.0), s * Vec3(1.0))}));
         RenderOptions options = smallImage(48, 36);
         options.tolerance = 1e-9;
         const RenderResult a = render(single, options), b = render(split, options);
@@ -151,10 +151,12 @@ TEST_CASE("render: a cutter sharing faces with the body leaves no speckle") {
                     else
                         ++throughHole;
                 }
-                const float expected = std::isinf(t) ? INFINITY : float(t * glm::length(ld(ray.dir)));
+                const float expected =
+                    std::isinf(t) ? INFINITY : float(t * glm::length(ld(ray.dir)));
                 const float depth = r.depth.at(i, j, 0);
-                const bool same = depth == expected ||
-                                  std::fabs(depth - expected) <= std::nextafter(expected, INFINITY) - expected;
+                const bool same =
+                    depth == expected ||
+                    std::fabs(depth - expected) <= std::nextafter(expected, INFINITY) - expected;
                 if (!same) {
                     ++mismatches;
                     FAIL_CHECK("scale " << s << " pixel " << i << "," << j << " depth " << depth
@@ -173,7 +175,9 @@ TEST_CASE("Intersection and union of identical solids equal the solid") {
             [s] { return makeSphere(s * Vec3(0.5, 0.4, 0.6), s * 0.45); },
             [s] { return makeBox(s * Vec3(0.1, 0.2, 0.0), s * Vec3(0.9, 0.7, 1.0)); },
             [s] { return makeCylinder(s * Vec3(0.2, 0.1, 0.3), s * Vec3(0.8, 0.9, 0.6), s * 0.3); },
-            [s] { return makeCone(s * Vec3(0.2, 0.1, 0.3), s * Vec3(0.8, 0.9, 0.6), s * 0.4, s * 0.1); },
+            [s] {
+                return makeCone(s * Vec3(0.2, 0.1, 0.3), s * Vec3(0.8, 0.9, 0.6), s * 0.4, s * 0.1);
+            },
         };
         TraceContext ctx;
         for (const auto& make : makers) {

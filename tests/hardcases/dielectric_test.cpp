@@ -34,10 +34,13 @@ Scene dielectricScene(int kind, int maxDepth) {
     scene.camera.lookAt = Vec3(0.0);
     scene.settings.maxDepth = maxDepth;
     const int outer = addMaterial(scene, glass(1.5, Vec3(0.1, 0.0, 0.2)));
-    const NodePtr box = makeTransform(makeBox(Vec3(-1.0), Vec3(1.0)), Affine::rotateDegrees(Vec3(25, 35, 10)));
+    const NodePtr box =
+        makeTransform(makeBox(Vec3(-1.0), Vec3(1.0)), Affine::rotateDegrees(Vec3(25, 35, 10)));
     if (kind == 0) addObject(scene, makeSphere(Vec3(0.0), 1.2), outer);
     if (kind >= 1) addObject(scene, box, outer);
-    if (kind == 2) addObject(scene, makeSphere(Vec3(0.1, -0.1, 0.0), 0.6), addMaterial(scene, glass(2.4, Vec3(0.0))));
+    if (kind == 2)
+        addObject(scene, makeSphere(Vec3(0.1, -0.1, 0.0), 0.6),
+                  addMaterial(scene, glass(2.4, Vec3(0.0))));
     return scene;
 }
 
@@ -68,9 +71,10 @@ TEST_CASE("render: dielectrics end within maxDepth and never add energy") {
             CHECK(worst <= brightest * (1 + 1e-6));
             CHECK(lit > 0);
             if (maxDepth == 12)
-                std::printf("dielectric scene %d, maxDepth 12: %.0f secondary rays (%.2f per pixel), "
-                            "brightest channel %.4f\n",
-                            kind, secondary, secondary / pixels, worst);
+                std::printf(
+                    "dielectric scene %d, maxDepth 12: %.0f secondary rays (%.2f per pixel), "
+                    "brightest channel %.4f\n",
+                    kind, secondary, secondary / pixels, worst);
         }
 }
 

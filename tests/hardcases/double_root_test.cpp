@@ -18,9 +18,13 @@ namespace {
 
 /// (|p − c|² − r²) as an expression.
 ExprId offsetSphere(ExprGraph& g, const Vec3& c, double r) {
-    auto sq = [&](ExprId v, double k) { return g.unary(Op::Square, g.binary(Op::Sub, v, g.constant(k))); };
-    return g.binary(Op::Sub, g.binary(Op::Add, g.binary(Op::Add, sq(g.x(), c.x), sq(g.y(), c.y)), sq(g.z(), c.z)),
-                    g.constant(r * r));
+    auto sq = [&](ExprId v, double k) {
+        return g.unary(Op::Square, g.binary(Op::Sub, v, g.constant(k)));
+    };
+    return g.binary(
+        Op::Sub,
+        g.binary(Op::Add, g.binary(Op::Add, sq(g.x(), c.x), sq(g.y(), c.y)), sq(g.z(), c.z)),
+        g.constant(r * r));
 }
 
 }  // namespace
@@ -72,7 +76,7 @@ TEST_CASE("Two spheres touching at a point: one span through it") {
         for (int i = 0; i < 300; ++i) {
             Vec3 u = rng.unitVector();
             if (std::fabs(u.x) < 0.2) continue;  // too near the tangent plane x = 0
-            const Ray ray{-5.0 * u, u};  // through the origin at t = 5
+            const Ray ray{-5.0 * u, u};          // through the origin at t = 5
             // Enters one sphere, leaves the other: |o + t u − c|² = 1 with the origin on both.
             const LV3 lu = ld(u);
             auto far = [&](const Vec3& c) { return 5 + 2 * glm::dot(ld(c), lu); };  // second root
@@ -104,7 +108,8 @@ TEST_CASE("Two spheres touching at a point: one span through it") {
             }
         }
     }
-    SECTION("along the line of centres offset by δ: a gap of δ² where it is wider than the tolerance") {
+    SECTION(
+        "along the line of centres offset by δ: a gap of δ² where it is wider than the tolerance") {
         for (double delta : {1e-2, 1e-3, 1e-4}) {
             const Ray ray{Vec3(-5, delta, 0), Vec3(1, 0, 0)};
             // Gap |x| ≤ 1 − √(1 − δ²) on each side of the origin.
@@ -124,13 +129,15 @@ TEST_CASE("Two spheres touching at a point: one span through it") {
     }
 }
 
-TEST_CASE("Implicit::spans of (|p|² − 1)² − ε: a thin shell found when thicker than the tolerance") {
+TEST_CASE(
+    "Implicit::spans of (|p|² − 1)² − ε: a thin shell found when thicker than the tolerance") {
     // {f ≤ 0} = {1 − √ε ≤ |p|² ≤ 1 + √ε}: radii √(1 ± √ε), thickness ≈ √ε. Near-double roots:
     // f's two sign changes across each wall are √ε apart and f is O(ε) between them.
     Random rng(403);
     for (double eps : {1e-3, 1e-5, 1e-7, 1e-9}) {
         ExprGraph g;
-        const ExprId f = g.binary(Op::Sub, g.unary(Op::Square, sphereExpr(g, 1.0)), g.constant(eps));
+        const ExprId f =
+            g.binary(Op::Sub, g.unary(Op::Square, sphereExpr(g, 1.0)), g.constant(eps));
         const NodePtr shell = makeImplicit(Tape::compile(g, f), Bounds3{Vec3(-2), Vec3(2)});
         const LD root = std::sqrt(LD(eps)), Ro = std::sqrt(1 + root), Ri = std::sqrt(1 - root);
         const double tolerance = double(root) / 1000;
@@ -140,18 +147,21 @@ TEST_CASE("Implicit::spans of (|p|² − 1)² − ε: a thin shell found when th
         for (int i = 0; i < 200; ++i) {
             const Vec3 u = rng.unitVector(), v = rng.perpendicular(u);
             // Half through the middle, half grazing the inner radius.
-            const double b = i % 2 ? rng.uniform(0, 0.9) : double(Ri) * (1 + rng.uniform(-1, 1) * double(root) / 4);
+            const double b = i % 2 ? rng.uniform(0, 0.9)
+                                   : double(Ri) * (1 + rng.uniform(-1, 1) * double(root) / 4);
             const Ray ray{b * v - 5.0 * u, u};
-            const SphereOracle oo = sphereOracle(ray, LV3(0), Ro), oi = sphereOracle(ray, LV3(0), Ri);
-            const RefSpan outer = chord(oo, Ro, 6, 1, 2 * tolerance), inner = chord(oi, Ri, 6, 1, 2 * tolerance);
+            const SphereOracle oo = sphereOracle(ray, LV3(0), Ro),
+                               oi = sphereOracle(ray, LV3(0), Ri);
+            const RefSpan outer = chord(oo, Ro, 6, 1, 2 * tolerance),
+                          inner = chord(oi, Ri, 6, 1, 2 * tolerance);
             SpanList got;
             shell->spans(ray, 0.0, kInf, ctx, got);
             ++tally.rays;
             CAPTURE(eps, i, b);
             compare(got, shellSpans(outer, oi, inner), tolerance, tally);
         }
-        std::printf("(|p|^2-1)^2 - %.0e: %d rays, %d walls, %d thin skipped, worst %.3g of bound\n", eps,
-                    tally.rays, tally.walls, tally.thinSkipped, double(tally.worst));
+        std::printf("(|p|^2-1)^2 - %.0e: %d rays, %d walls, %d thin skipped, worst %.3g of bound\n",
+                    eps, tally.rays, tally.walls, tally.thinSkipped, double(tally.worst));
         CHECK(tally.walls > 200);
     }
 }

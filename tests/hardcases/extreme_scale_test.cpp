@@ -1,10 +1,11 @@
 // Scale invariance over the double range, through the language and the renderer: a primitive
-// (sphere, box, cylinder, cone, torus, halfspace) written with `scale s` renders as the same primitive
-// written with parameters scaled by s, and as the unit scene, for s = 1e±50 … 1e±300 (camera scaled too); every pixel is finite.
-// The depths are compared in double (nearestHit on each pixel's centre ray): the float film
-// cannot hold 5e300. docs/robustness.md ("Values") states the bound.
+// (sphere, box, cylinder, cone, torus, halfspace) written with `scale s` renders as the same
+// primitive written with parameters scaled by s, and as the unit scene, for s = 1e±50 … 1e±300
+// (camera scaled too); every pixel is finite. The depths are compared in double (nearestHit on each
+// pixel's centre ray): the float film cannot hold 5e300. docs/robustness.md ("Values") states the
+// bound.
+#include "csg/bvh/scene_geometry.h"
 #include "lang/compile.h"
-#include "csg/scene_geometry.h"
 #include "render/camera.h"
 #include "render/render.h"
 #include "render/render_test_util.h"
@@ -27,31 +28,41 @@ constexpr double kTolerance = 1e-12;
 constexpr double kDepthBound = 1e-12;
 
 std::string camera(const std::string& s) {
-    return "camera { eye <1.5 * " + s + ", 2 * " + s + ", -5 * " + s + "> look_at <0, 0, 0> fov 40 }\n"
+    return "camera { eye <1.5 * " + s + ", 2 * " + s + ", -5 * " + s +
+           "> look_at <0, 0, 0> fov 40 }\n"
            "light directional { direction <-1, -2, 1> }\n";
 }
 
 /// Each closed-form primitive written two ways at scale s.
 std::string byScale(const std::string& solid, const std::string& s) {
     if (solid == "sphere") return "object sphere { radius 1 } scale " + s + ";\n";
-    if (solid == "box") return "object box { min <-1, -0.5, -1> max <1, 0.5, 0.8> } rotate <0, 20, 0> scale " + s + ";\n";
-    if (solid == "cone") return "object cone { from <0, -1, 0> to <0.3, 1, 0> radius1 1 radius2 0.2 } scale " + s + ";\n";
-    if (solid == "torus") return "object torus { major 1 minor 0.4 } rotate <60, 0, 0> scale " + s + ";\n";
-    if (solid == "halfspace") return "object halfspace { normal <0.1, 1, 0.3> offset -0.3 } scale " + s + ";\n";
+    if (solid == "box")
+        return "object box { min <-1, -0.5, -1> max <1, 0.5, 0.8> } rotate <0, 20, 0> scale " + s +
+               ";\n";
+    if (solid == "cone")
+        return "object cone { from <0, -1, 0> to <0.3, 1, 0> radius1 1 radius2 0.2 } scale " + s +
+               ";\n";
+    if (solid == "torus")
+        return "object torus { major 1 minor 0.4 } rotate <60, 0, 0> scale " + s + ";\n";
+    if (solid == "halfspace")
+        return "object halfspace { normal <0.1, 1, 0.3> offset -0.3 } scale " + s + ";\n";
     return "object cylinder { from <0, -1, 0> to <0.3, 1, 0> radius 0.6 } scale " + s + ";\n";
 }
 
 std::string byParameters(const std::string& solid, const std::string& s) {
     if (solid == "sphere") return "object sphere { radius " + s + " };\n";
     if (solid == "box")
-        return "object box { min <-1 * " + s + ", -0.5 * " + s + ", -1 * " + s + "> max <" + s + ", 0.5 * " + s +
-               ", 0.8 * " + s + "> } rotate <0, 20, 0>;\n";
+        return "object box { min <-1 * " + s + ", -0.5 * " + s + ", -1 * " + s + "> max <" + s +
+               ", 0.5 * " + s + ", 0.8 * " + s + "> } rotate <0, 20, 0>;\n";
     if (solid == "cone")
-        return "object cone { from <0, -" + s + ", 0> to <0.3 * " + s + ", " + s + ", 0> radius1 " + s +
-               " radius2 0.2 * " + s + " };\n";
-    if (solid == "torus") return "object torus { major " + s + " minor 0.4 * " + s + " } rotate <60, 0, 0>;\n";
-    if (solid == "halfspace") return "object halfspace { normal <0.1, 1, 0.3> offset -0.3 * " + s + " };\n";
-    return "object cylinder { from <0, -" + s + ", 0> to <0.3 * " + s + ", " + s + ", 0> radius 0.6 * " + s + " };\n";
+        return "object cone { from <0, -" + s + ", 0> to <0.3 * " + s + ", " + s + ", 0> radius1 " +
+               s + " radius2 0.2 * " + s + " };\n";
+    if (solid == "torus")
+        return "object torus { major " + s + " minor 0.4 * " + s + " } rotate <60, 0, 0>;\n";
+    if (solid == "halfspace")
+        return "object halfspace { normal <0.1, 1, 0.3> offset -0.3 * " + s + " };\n";
+    return "object cylinder { from <0, -" + s + ", 0> to <0.3 * " + s + ", " + s +
+           ", 0> radius 0.6 * " + s + " };\n";
 }
 
 Scene compileModel(const std::string& text) {
@@ -92,11 +103,13 @@ int nonFinitePixels(const Scene& scene) {
 
 TEST_CASE("render: scale s and parameters scaled by s agree from 1e-300 to 1e300") {
     for (const std::string solid : {"sphere", "box", "cylinder", "cone", "torus", "halfspace"}) {
-        const std::vector<double> unit = depths(compileModel(camera("1") + byParameters(solid, "1")));
+        const std::vector<double> unit =
+            depths(compileModel(camera("1") + byParameters(solid, "1")));
         int unitHits = 0;
         for (double t : unit) unitHits += t > 0;
         REQUIRE(unitHits > 40);
-        for (const std::string s : {"1e50", "1e-50", "1e100", "1e-100", "1e150", "1e-150", "1e300", "1e-300"}) {
+        for (const std::string s :
+             {"1e50", "1e-50", "1e100", "1e-100", "1e150", "1e-150", "1e300", "1e-300"}) {
             INFO(solid << " at scale " << s);
             const double scale = std::stod(s);
             const Scene a = compileModel(camera(s) + byScale(solid, s));
@@ -133,8 +146,9 @@ TEST_CASE("render: a sphere of radius 1e308 centred at 1e308 gives finite pixels
 
 TEST_CASE("render: scaling up to the edge of the double range matches the parameters") {
     // World radius 1e308 reached by a transform, against the same sphere written directly.
-    const std::string view = "camera { eye <0, 0, -1.7e308> look_at <0, 0, 0> fov 60 }\n"
-                             "light directional { direction <-1, -2, 1> }\n";
+    const std::string view =
+        "camera { eye <0, 0, -1.7e308> look_at <0, 0, 0> fov 60 }\n"
+        "light directional { direction <-1, -2, 1> }\n";
     const Scene a = compileModel(view + "object sphere { radius 1e298 } scale 1e10;\n");
     const Scene b = compileModel(view + "object sphere { radius 1e308 };\n");
     const std::vector<double> da = depths(a), db = depths(b);

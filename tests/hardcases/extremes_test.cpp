@@ -76,7 +76,8 @@ TEST_CASE("Cone with both radii 0") {
     for (int i = 0; i < 2000; ++i) {
         const Vec3 o = rng.unitVector() * 5.0;
         Ray ray{o, rng.inBall() - o};
-        if (i % 4 == 0) ray.dir = Vec3(0.0, i % 8 ? 1.0 : -1.0, 0.0);  // parallel to the axis, off it
+        if (i % 4 == 0)
+            ray.dir = Vec3(0.0, i % 8 ? 1.0 : -1.0, 0.0);  // parallel to the axis, off it
         if (i % 4 == 0 && ray.origin.x == 0 && ray.origin.z == 0) continue;
         SpanList s;
         needle->spans(ray, 0.0, kInf, ctx, s);

@@ -44,10 +44,11 @@ struct Tally {
     int hits = 0, misses = 0, inBand = 0;
     LD worstMid = 0, worstEntry = 0, worstMismatch = 0;
     void report(const char* what) const {
-        std::printf("grazing %s: %d hits, %d misses, %d disagree within the band (worst at "
-                    "%.3g ulps); mid error %.3g, entry error %.3g (relative to their bounds)\n",
-                    what, hits, misses, inBand, double(worstMismatch), double(worstMid),
-                    double(worstEntry));
+        std::printf(
+            "grazing %s: %d hits, %d misses, %d disagree within the band (worst at "
+            "%.3g ulps); mid error %.3g, entry error %.3g (relative to their bounds)\n",
+            what, hits, misses, inBand, double(worstMismatch), double(worstMid),
+            double(worstEntry));
     }
 };
 
@@ -93,7 +94,8 @@ void checkGrazing(const SceneGeometry& scene, const Ray& ray, const SphereOracle
 
 /// A rotation with no special angles, and one about the origin of an off-centre point.
 Affine oddRotation() {
-    return Affine::translate(Vec3(0.25, -0.5, 0.75)).after(Affine::rotateDegrees(Vec3(31, -47, 73)));
+    return Affine::translate(Vec3(0.25, -0.5, 0.75))
+        .after(Affine::rotateDegrees(Vec3(31, -47, 73)));
 }
 
 LV3 applyLD(const Affine& m, const Vec3& p) {
@@ -246,10 +248,15 @@ TEST_CASE("render: depth of rotated sphere, cylinder, cone and torus against lon
     Scene scene;
     const Affine spin = Affine::rotateDegrees(Vec3(23, 41, -17));
     addObject(scene, makeTransform(makeSphere(Vec3(-1.6, 0.8, 0), 0.7), spin), 0);
-    addObject(scene, makeTransform(makeCylinder(Vec3(1.2, -0.2, 0), Vec3(1.7, 1.3, 0.4), 0.45), spin), 0);
-    addObject(scene, makeTransform(makeCone(Vec3(-1.4, -1.3, 0.2), Vec3(-0.6, -0.2, 0), 0.6, 0.1), spin), 0);
-    addObject(scene, makeTransform(makeTorus(0.8, 0.25),
-                                   Affine::translate(Vec3(0.7, -0.9, 0.3)).after(spin)), 0);
+    addObject(scene,
+              makeTransform(makeCylinder(Vec3(1.2, -0.2, 0), Vec3(1.7, 1.3, 0.4), 0.45), spin), 0);
+    addObject(scene,
+              makeTransform(makeCone(Vec3(-1.4, -1.3, 0.2), Vec3(-0.6, -0.2, 0), 0.6, 0.1), spin),
+              0);
+    addObject(
+        scene,
+        makeTransform(makeTorus(0.8, 0.25), Affine::translate(Vec3(0.7, -0.9, 0.3)).after(spin)),
+        0);
     scene.camera.eye = Vec3(0.3, 0.6, -7.0);
     scene.camera.lookAt = Vec3(0.0, 0.0, 0.0);
     const int W = 48, H = 36;
@@ -266,7 +273,8 @@ TEST_CASE("render: depth of rotated sphere, cylinder, cone and torus against lon
             for (const NodePtr& object : scene.objects) {
                 LD t0, t1, t;
                 if (!boundsRange(*object, ray, t0, t1)) continue;
-                if (sampledReference(*object, ray, t0, t1, 4000).firstHit(t)) best = std::min(best, t);
+                if (sampledReference(*object, ray, t0, t1, 4000).firstHit(t))
+                    best = std::min(best, t);
             }
             const float depth = result.depth.at(i, j, 0);
             INFO("pixel " << i << "," << j << " depth " << depth << " reference " << double(best));
@@ -280,8 +288,7 @@ TEST_CASE("render: depth of rotated sphere, cylinder, cone and torus against lon
             // The film is float: the stored depth is the float of the reference, within one
             // float ulp (the double distance itself is within 1e-12).
             const float expected = float(best);
-            CHECK(std::fabs(depth - expected) <=
-                  std::nextafter(expected, INFINITY) - expected);
+            CHECK(std::fabs(depth - expected) <= std::nextafter(expected, INFINITY) - expected);
         }
     CHECK(mismatches == 0);
     CHECK(hits > 200);

@@ -22,11 +22,16 @@ constexpr double kPhi = 1.6180339887498948482;
 /// the sign that makes the solid the bounded part near the unit sphere (with the usual sign,
 /// ≤ 0 holds almost everywhere in the box and the test would mostly hit its faces).
 ExprId barthSextic(ExprGraph& g) {
-    const ExprId x2 = g.unary(Op::Square, g.x()), y2 = g.unary(Op::Square, g.y()), z2 = g.unary(Op::Square, g.z());
+    const ExprId x2 = g.unary(Op::Square, g.x()), y2 = g.unary(Op::Square, g.y()),
+                 z2 = g.unary(Op::Square, g.z());
     const ExprId p2 = g.constant(kPhi * kPhi);
-    auto factor = [&](ExprId a, ExprId b) { return g.binary(Op::Sub, g.binary(Op::Mul, p2, a), b); };
-    const ExprId product = g.binary(Op::Mul, g.binary(Op::Mul, factor(x2, y2), factor(y2, z2)), factor(z2, x2));
-    const ExprId s = g.binary(Op::Sub, g.binary(Op::Add, g.binary(Op::Add, x2, y2), z2), g.constant(1.0));
+    auto factor = [&](ExprId a, ExprId b) {
+        return g.binary(Op::Sub, g.binary(Op::Mul, p2, a), b);
+    };
+    const ExprId product =
+        g.binary(Op::Mul, g.binary(Op::Mul, factor(x2, y2), factor(y2, z2)), factor(z2, x2));
+    const ExprId s =
+        g.binary(Op::Sub, g.binary(Op::Add, g.binary(Op::Add, x2, y2), z2), g.constant(1.0));
     return g.binary(Op::Sub, g.binary(Op::Mul, g.constant(1 + 2 * kPhi), g.unary(Op::Square, s)),
                     g.binary(Op::Mul, g.constant(4.0), product));
 }
@@ -34,9 +39,11 @@ ExprId barthSextic(ExprGraph& g) {
 /// x⁴ − 5x² + y⁴ − 5y² + z⁴ − 5z² + 11.8
 ExprId tangleCube(ExprGraph& g) {
     auto term = [&](ExprId v) {
-        return g.binary(Op::Sub, g.powInt(v, 4), g.binary(Op::Mul, g.constant(5.0), g.unary(Op::Square, v)));
+        return g.binary(Op::Sub, g.powInt(v, 4),
+                        g.binary(Op::Mul, g.constant(5.0), g.unary(Op::Square, v)));
     };
-    return g.binary(Op::Add, g.binary(Op::Add, g.binary(Op::Add, term(g.x()), term(g.y())), term(g.z())),
+    return g.binary(Op::Add,
+                    g.binary(Op::Add, g.binary(Op::Add, term(g.x()), term(g.y())), term(g.z())),
                     g.constant(11.8));
 }
 
@@ -60,8 +67,10 @@ TEST_CASE("SceneGeometry::nearestHit on rotated and scaled tori, R/r from 1.01 t
                 const double S = R + r;
                 const Vec3 lo = rng.unitVector() * (S * rng.uniform(1.5, 3.0));
                 const double phi = rng.uniform(0, 6.283185307179586);
-                const Vec3 target = i % 2 ? Vec3(R * std::cos(phi), 0.0, R * std::sin(phi)) + rng.inBall() * (1.2 * r)
-                                          : Vec3(rng.uniform(-S, S), rng.uniform(-r, r), rng.uniform(-S, S));
+                const Vec3 target =
+                    i % 2
+                        ? Vec3(R * std::cos(phi), 0.0, R * std::sin(phi)) + rng.inBall() * (1.2 * r)
+                        : Vec3(rng.uniform(-S, S), rng.uniform(-r, r), rng.uniform(-S, S));
                 const Ray world{map.point(lo), map.vector(target - lo)};
                 // The reference sees the world ray mapped back in long double.
                 const glm::tmat3x3<LD> back = glm::inverse(glm::tmat3x3<LD>(map.linear));
@@ -81,15 +90,17 @@ TEST_CASE("SceneGeometry::nearestHit on rotated and scaled tori, R/r from 1.01 t
                 // Root-found: the requested tolerance, plus rounding of the mapped ray.
                 CHECK(e <= tolerance + 64 * kUlp * ratio);
             }
-            std::printf("torus R/r %g tol %.0e: %d hits, %d tangent, worst error %.3g of the tolerance\n",
-                        ratio, tolerance, hits, tangent, double(worst));
+            std::printf(
+                "torus R/r %g tol %.0e: %d hits, %d tangent, worst error %.3g of the tolerance\n",
+                ratio, tolerance, hits, tangent, double(worst));
             CHECK(hits > 60);
             CHECK(tangent <= 3);
         }
     }
 }
 
-TEST_CASE("Implicit quartic and sextic: hits on the surface, hit/miss as dense long-double sampling") {
+TEST_CASE(
+    "Implicit quartic and sextic: hits on the surface, hit/miss as dense long-double sampling") {
     Random rng(502);
     struct Shape {
         const char* name;
@@ -113,7 +124,8 @@ TEST_CASE("Implicit quartic and sextic: hits on the surface, hit/miss as dense l
                 const Ray ray{o, (rng.inBall() * size - o) * rng.logUniform(0.3, 3)};
                 LD t0, t1, tRef = 0;
                 const bool inBounds = boundsRange(*solid, ray, t0, t1);
-                const SampledReference ref = inBounds ? sampledReference(*solid, ray, t0, t1, 4000) : SampledReference{};
+                const SampledReference ref =
+                    inBounds ? sampledReference(*solid, ray, t0, t1, 4000) : SampledReference{};
                 const bool refHit = ref.firstHit(tRef);
                 const auto hit = scene.nearestHit(ray, 0.0, kInf, ctx);
                 CAPTURE(shape.name, tolerance, i);
@@ -141,10 +153,12 @@ TEST_CASE("Implicit quartic and sextic: hits on the surface, hit/miss as dense l
                 Vec3 grad;
                 const double f = tape->evalGradient(p, grad);
                 const double slope = std::fabs(glm::dot(grad, ray.dir));
-                CHECK(std::fabs(f) <= 2 * tolerance * hit->t * slope + 1e-13 * glm::length(grad) * size);
+                CHECK(std::fabs(f) <=
+                      2 * tolerance * hit->t * slope + 1e-13 * glm::length(grad) * size);
             }
-            std::printf("%s tol %.0e: %d hits (%d on the bounding box), %d unresolved by sampling\n",
-                        shape.name, tolerance, hits, onBox, unresolved);
+            std::printf(
+                "%s tol %.0e: %d hits (%d on the bounding box), %d unresolved by sampling\n",
+                shape.name, tolerance, hits, onBox, unresolved);
             CHECK(hits > 60);
             CHECK(unresolved <= 2);
         }

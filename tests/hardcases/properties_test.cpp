@@ -28,9 +28,10 @@ Affine randomRigid(Random& rng) {
     }
     for (double& x : q) x /= std::sqrt(len);
     const double w = q[0], x = q[1], y = q[2], z = q[3];
-    const double m[12] = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), rng.uniform(-10, 10),
-                          2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x), rng.uniform(-10, 10),
-                          2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y), rng.uniform(-10, 10)};
+    const double m[12] = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z),     2 * (x * z + w * y),
+                          rng.uniform(-10, 10),    2 * (x * y + w * z),     1 - 2 * (x * x + z * z),
+                          2 * (y * z - w * x),     rng.uniform(-10, 10),    2 * (x * z - w * y),
+                          2 * (y * z + w * x),     1 - 2 * (x * x + y * y), rng.uniform(-10, 10)};
     return Affine::fromRowMajor(m);
 }
 
@@ -38,8 +39,9 @@ Affine randomRigid(Random& rng) {
 NodePtr sceneSolid() {
     return makeBoolean(
         BoolOp::Union,
-        {makeBoolean(BoolOp::Difference, {makeBox(Vec3(-1.2, -0.5, -0.6), Vec3(0.2, 0.7, 0.6)),
-                                          makeCylinder(Vec3(-0.5, 0.1, -1.0), Vec3(-0.5, 0.1, 1.0), 0.35)}),
+        {makeBoolean(BoolOp::Difference,
+                     {makeBox(Vec3(-1.2, -0.5, -0.6), Vec3(0.2, 0.7, 0.6)),
+                      makeCylinder(Vec3(-0.5, 0.1, -1.0), Vec3(-0.5, 0.1, 1.0), 0.35)}),
          makeSphere(Vec3(0.9, 0.4, 0.2), 0.6),
          makeTransform(makeTorus(0.5, 0.15), Affine::translate(Vec3(0.3, -0.6, -0.5))),
          makeCone(Vec3(-0.2, -1.0, 0.8), Vec3(0.4, 0.3, 1.1), 0.4, 0.05)});
@@ -62,7 +64,8 @@ bool nearSilhouette(const SceneGeometry& geometry, const Ray& ray, double band) 
     const bool centre = bool(geometry.nearestHit(ray, 0.0, kInf, ctx));
     const Vec3 a = unit(glm::cross(ray.dir, Vec3(0.3, 1.0, 0.1))), b = glm::cross(unit(ray.dir), a);
     for (const Vec3& e : {a, -a, b, -b})
-        if (bool(geometry.nearestHit(Ray{ray.origin, ray.dir + band * e}, 0.0, kInf, ctx)) != centre)
+        if (bool(geometry.nearestHit(Ray{ray.origin, ray.dir + band * e}, 0.0, kInf, ctx)) !=
+            centre)
             return true;
     return false;
 }
@@ -74,7 +77,8 @@ bool nearSilhouette(const SceneGeometry& geometry, const Ray& ray, double band) 
 TEST_CASE("SceneGeometry::nearestHit keeps the nearest object", "[properties]") {
     TraceContext ctx;
     for (bool swap : {false, true}) {
-        std::vector<NodePtr> objects{makeSphere(Vec3(0, 0, 0), 1.0), makeSphere(Vec3(0, 0, 3), 1.0)};
+        std::vector<NodePtr> objects{makeSphere(Vec3(0, 0, 0), 1.0),
+                                     makeSphere(Vec3(0, 0, 3), 1.0)};
         if (swap) std::swap(objects[0], objects[1]);
         const SceneGeometry scene(objects);
         const auto hit = scene.nearestHit(Ray{Vec3(0, 0, -5), Vec3(0, 0, 1)}, 0.0, kInf, ctx);
@@ -86,7 +90,8 @@ TEST_CASE("SceneGeometry::nearestHit keeps the nearest object", "[properties]") 
     // Many objects: every ray's hit is the minimum over the objects' own first hits.
     Random rng(801);
     std::vector<NodePtr> spheres;
-    for (int i = 0; i < 40; ++i) spheres.push_back(makeSphere(rng.inBall() * 3.0, rng.uniform(0.2, 0.6)));
+    for (int i = 0; i < 40; ++i)
+        spheres.push_back(makeSphere(rng.inBall() * 3.0, rng.uniform(0.2, 0.6)));
     const SceneGeometry scene(spheres);
     int wrong = 0;
     for (int i = 0; i < 500; ++i) {
@@ -134,7 +139,8 @@ TEST_CASE("render: a scene under 20 random rigid motions gives the same image") 
                 INFO("motion " << k << " pixel " << i << "," << j << " depth " << a << " vs " << b);
                 if (std::isinf(a) != std::isinf(b)) {
                     // Allowed only within 1e-9 (in direction) of a silhouette.
-                    CHECK(nearSilhouette(baseGeometry, baseCamera.rayThrough(i + 0.5, j + 0.5), 1e-9));
+                    CHECK(nearSilhouette(baseGeometry, baseCamera.rayThrough(i + 0.5, j + 0.5),
+                                         1e-9));
                     ++banded;
                     continue;
                 }
@@ -143,8 +149,10 @@ TEST_CASE("render: a scene under 20 random rigid motions gives the same image") 
                 const double e = std::fabs(double(b) - a) / a;
                 worst = std::max(worst, e);
                 CHECK(e <= 2 * tolerance + 0x1p-23);  // plus the float film's rounding
-                const auto ha = baseGeometry.nearestHit(baseCamera.rayThrough(i + 0.5, j + 0.5), 0.0, kInf, ctx);
-                const auto hb = movedGeometry.nearestHit(movedCamera.rayThrough(i + 0.5, j + 0.5), 0.0, kInf, ctx);
+                const auto ha = baseGeometry.nearestHit(baseCamera.rayThrough(i + 0.5, j + 0.5),
+                                                        0.0, kInf, ctx);
+                const auto hb = movedGeometry.nearestHit(movedCamera.rayThrough(i + 0.5, j + 0.5),
+                                                         0.0, kInf, ctx);
                 REQUIRE(ha);
                 REQUIRE(hb);
                 const double ed = std::fabs(hb->t - ha->t) / ha->t;
@@ -152,8 +160,10 @@ TEST_CASE("render: a scene under 20 random rigid motions gives the same image") 
                 CHECK(ed <= 2 * tolerance + 1e-12);
             }
     }
-    std::printf("rigid motions: %d hits compared, %d in tangency bands, worst relative depth "
-                "difference %.3g (film), %.3g (double)\n", hits, banded, worst, worstDouble);
+    std::printf(
+        "rigid motions: %d hits compared, %d in tangency bands, worst relative depth "
+        "difference %.3g (film), %.3g (double)\n",
+        hits, banded, worst, worstDouble);
     CHECK(hits > 20 * W * H / 6);
     CHECK(banded <= 2);
 }

@@ -33,9 +33,11 @@ Scene makeScene(double s, const Vec3& shift) {
                                      makeBox(Vec3(-1.2, 0.0, -0.6), Vec3(0.2, 0.8, 0.6))}),
          makeCylinder(Vec3(-0.4, 0.4, -1.0), Vec3(-0.4, 0.4, 1.0), 0.3)});
     addObject(scene, makeTransform(csg, place), 0);
-    addObject(scene, makeTransform(makeTransform(makeTorus(0.6, 0.2), Affine::translate(Vec3(1.4, 0.2, 0.3))),
-                                   place),
-              0);
+    addObject(
+        scene,
+        makeTransform(makeTransform(makeTorus(0.6, 0.2), Affine::translate(Vec3(1.4, 0.2, 0.3))),
+                      place),
+        0);
     // The floor y ≤ 0 moved: n·p ≤ n·shift.
     addObject(scene, makeHalfSpace(Vec3(0, 1, 0), shift.y), 0);
     Light light;
@@ -75,8 +77,10 @@ Comparison compareScenes(const Scene& a, const Scene& b, double scale) {
             if (std::isinf(da)) continue;
             ++c.compared;
             c.worstFilm = std::max(c.worstFilm, std::fabs(double(db) / scale - da) / da);
-            const Ray rayA = ca.rayThrough(i + 0.5, j + 0.5), rayB = cb.rayThrough(i + 0.5, j + 0.5);
-            const auto ha = ga.nearestHit(rayA, 0.0, kInf, ctx), hb = gb.nearestHit(rayB, 0.0, kInf, ctx);
+            const Ray rayA = ca.rayThrough(i + 0.5, j + 0.5),
+                      rayB = cb.rayThrough(i + 0.5, j + 0.5);
+            const auto ha = ga.nearestHit(rayA, 0.0, kInf, ctx),
+                       hb = gb.nearestHit(rayB, 0.0, kInf, ctx);
             REQUIRE(ha);
             REQUIRE(hb);
             c.worstDouble = std::max(c.worstDouble, std::fabs(hb->t / scale - ha->t) / ha->t);
@@ -90,9 +94,10 @@ TEST_CASE("render: one scene at scales 1e-6, 1 and 1e6, camera included") {
     const Scene unit = makeScene(1.0, Vec3(0.0));
     for (double s : {1e-6, 1e6}) {
         const Comparison c = compareScenes(unit, makeScene(s, Vec3(0.0)), s);
-        std::printf("scale %.0e: %d hits compared, hit/miss differs at %d, relative depth "
-                    "difference %.3g (double), %.3g (film)\n",
-                    s, c.compared, c.hitMissDiffers, c.worstDouble, c.worstFilm);
+        std::printf(
+            "scale %.0e: %d hits compared, hit/miss differs at %d, relative depth "
+            "difference %.3g (double), %.3g (film)\n",
+            s, c.compared, c.hitMissDiffers, c.worstDouble, c.worstFilm);
         INFO("scale " << s);
         CHECK(c.hitMissDiffers == 0);
         CHECK(c.compared > kW * kH / 2);
@@ -114,9 +119,10 @@ TEST_CASE("render: the same scene moved 1e6 away from the origin") {
     const Scene unit = makeScene(1.0, Vec3(0.0));
     for (const Vec3& shift : {Vec3(1e6, 0.0, 0.0), Vec3(-7e5, 4e5, 6e5)}) {
         const Comparison c = compareScenes(unit, makeScene(1.0, shift), 1.0);
-        std::printf("shift (%g, %g, %g): %d hits compared, hit/miss differs at %d, relative depth "
-                    "difference %.3g (double), %.3g (film)\n",
-                    shift.x, shift.y, shift.z, c.compared, c.hitMissDiffers, c.worstDouble, c.worstFilm);
+        std::printf(
+            "shift (%g, %g, %g): %d hits compared, hit/miss differs at %d, relative depth "
+            "difference %.3g (double), %.3g (film)\n",
+            shift.x, shift.y, shift.z, c.compared, c.hitMissDiffers, c.worstDouble, c.worstFilm);
         CHECK(c.hitMissDiffers == 0);
         CHECK(c.compared > kW * kH / 2);
         CHECK(c.worstDouble <= 1e-9);

@@ -32,8 +32,11 @@ NodePtr gyroidBall(double s) {
     // The gyroid of period 2π·s inside a box of half-size 2.5·s.
     ExprGraph h;
     auto v = [&](ExprId x) { return h.binary(Op::Mul, x, h.constant(1.0 / s)); };
-    auto term = [&](ExprId a, ExprId b) { return h.binary(Op::Mul, h.unary(Op::Sin, v(a)), h.unary(Op::Cos, v(b))); };
-    const ExprId f = h.binary(Op::Add, h.binary(Op::Add, term(h.x(), h.y()), term(h.y(), h.z())), term(h.z(), h.x()));
+    auto term = [&](ExprId a, ExprId b) {
+        return h.binary(Op::Mul, h.unary(Op::Sin, v(a)), h.unary(Op::Cos, v(b)));
+    };
+    const ExprId f = h.binary(Op::Add, h.binary(Op::Add, term(h.x(), h.y()), term(h.y(), h.z())),
+                              term(h.z(), h.x()));
     return makeImplicit(Tape::compile(h, f), Bounds3{Vec3(-2.5 * s), Vec3(2.5 * s)});
 }
 
@@ -44,7 +47,8 @@ TEST_CASE("Secondary rays from a hit never re-hit their own surface nearby, at e
     for (double s : {1e-6, 1.0, 1e6}) {
         const std::vector<std::pair<const char*, NodePtr>> solids{
             {"sphere", makeSphere(s * Vec3(0.3, -0.2, 0.1), s * 1.3)},
-            {"torus", makeTransform(makeTorus(s * 1.2, s * 0.4), Affine::rotateDegrees(Vec3(30, 10, -20)))},
+            {"torus",
+             makeTransform(makeTorus(s * 1.2, s * 0.4), Affine::rotateDegrees(Vec3(30, 10, -20)))},
             {"box", makeBox(s * Vec3(-1.1, -0.7, -0.9), s * Vec3(0.8, 1.2, 0.6))},
             {"gyroid", gyroidBall(s)},
         };
@@ -72,7 +76,8 @@ TEST_CASE("Secondary rays from a hit never re-hit their own surface nearby, at e
                         again->t * glm::length(next.dir) < 1e-4 * size) {
                         ++rehits;
                         FAIL_CHECK(name << " scale " << s << ": re-hit at distance "
-                                        << again->t * glm::length(next.dir) << " (error bound " << err << ")");
+                                        << again->t * glm::length(next.dir) << " (error bound "
+                                        << err << ")");
                     }
                 }
             }
@@ -96,14 +101,15 @@ TEST_CASE("render: a mirror sphere and a mirror torus over a floor look the same
         floor.color = Vec3(0.7, 0.6, 0.4);
         const int m = addMaterial(scene, mirror), f = addMaterial(scene, floor);
         // One object, so that only the spawn rule is under test.
-        addObject(scene,
-                  makeBoolean(BoolOp::Union,
-                              {makeMaterial(makeSphere(s * Vec3(-0.8, 1.0, 0.0), s * 1.0), m),
-                               makeMaterial(makeTransform(makeTorus(s * 0.8, s * 0.3),
-                                                          Affine::translate(s * Vec3(1.3, 0.3, -0.2))),
-                                            m),
-                               makeMaterial(makeHalfSpace(Vec3(0, 1, 0), 0.0), f)}),
-                  0);
+        addObject(
+            scene,
+            makeBoolean(BoolOp::Union,
+                        {makeMaterial(makeSphere(s * Vec3(-0.8, 1.0, 0.0), s * 1.0), m),
+                         makeMaterial(makeTransform(makeTorus(s * 0.8, s * 0.3),
+                                                    Affine::translate(s * Vec3(1.3, 0.3, -0.2))),
+                                      m),
+                         makeMaterial(makeHalfSpace(Vec3(0, 1, 0), 0.0), f)}),
+            0);
         Light light;
         light.position = s * Vec3(2.0, 5.0, -3.0);
         light.power = 300.0 * s * s;
@@ -119,7 +125,8 @@ TEST_CASE("render: a mirror sphere and a mirror torus over a floor look the same
         const RenderResult other = render(sceneAt(s), smallImage(48, 36));
         double worst = 0;
         for (size_t k = 0; k < unit.color.pixels.size(); ++k)
-            worst = std::max(worst, double(std::fabs(unit.color.pixels[k] - other.color.pixels[k])));
+            worst =
+                std::max(worst, double(std::fabs(unit.color.pixels[k] - other.color.pixels[k])));
         std::printf("mirror scene at scale %.0e: worst pixel difference %.3g\n", s, worst);
         INFO("scale " << s);
         CHECK(worst <= 1e-5);

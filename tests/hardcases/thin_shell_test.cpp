@@ -32,7 +32,6 @@ std::vector<RefSpan> belowPlane(const std::vector<RefSpan>& spans, const Ray& ra
 
 }  // namespace
 
-
 TEST_CASE("Thin spherical shells cut open, on grazing rays") {
     Random rng(301);
     const Vec3 c(0.3, -0.2, 0.1);
@@ -41,7 +40,8 @@ TEST_CASE("Thin spherical shells cut open, on grazing rays") {
         const double Rin = R * (1 - eps), tolerance = eps / 100;
         // The shell, cut open by removing the half y > c.y.
         const NodePtr shell = makeBoolean(
-            BoolOp::Difference, {makeSphere(c, R), makeSphere(c, Rin), makeHalfSpace(Vec3(0, -1, 0), -c.y)});
+            BoolOp::Difference,
+            {makeSphere(c, R), makeSphere(c, Rin), makeHalfSpace(Vec3(0, -1, 0), -c.y)});
         TraceContext ctx;
         ctx.relTolerance = tolerance;
         ShellTally tally;
@@ -55,7 +55,8 @@ TEST_CASE("Thin spherical shells cut open, on grazing rays") {
             const LD a = glm::dot(ld(ray.dir), ld(ray.dir)), far = 11 * R;
             const SphereOracle oo = sphereOracle(ray, ld(c), R), oi = sphereOracle(ray, ld(c), Rin);
             if (!oo.hit()) continue;
-            const RefSpan outer = chord(oo, R, far, a, tolerance), inner = chord(oi, Rin, far, a, tolerance);
+            const RefSpan outer = chord(oo, R, far, a, tolerance),
+                          inner = chord(oi, Rin, far, a, tolerance);
             // Clip to y ≤ c.y: the ray's parameter range on that side.
             const LD ty = (LD(c.y) - ray.origin.y) / ray.dir.y;
             const std::vector<RefSpan> ref = belowPlane(shellSpans(outer, oi, inner), ray, ty);
@@ -65,10 +66,10 @@ TEST_CASE("Thin spherical shells cut open, on grazing rays") {
             CAPTURE(eps, i, b);
             compare(got, ref, tolerance, tally);
         }
-        std::printf("sphere shell eps %.0e: %d rays, %d walls found, %d thinner than the tolerance "
-                    "skipped, worst end error %.3g of its bound\n",
-                    eps, tally.rays, tally.walls, tally.thinSkipped,
-                    double(tally.worst));
+        std::printf(
+            "sphere shell eps %.0e: %d rays, %d walls found, %d thinner than the tolerance "
+            "skipped, worst end error %.3g of its bound\n",
+            eps, tally.rays, tally.walls, tally.thinSkipped, double(tally.worst));
         CHECK(tally.walls > 600);
         CHECK(tally.thinSkipped * 20 < tally.walls);
     }
@@ -80,8 +81,9 @@ TEST_CASE("Thin cylindrical tubes, on grazing rays across the axis") {
     for (double eps : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7}) {
         const double Rin = R * (1 - eps), tolerance = eps / 100;
         // A tube along y, open at both ends (the bore is longer than the tube).
-        const NodePtr tube = makeBoolean(BoolOp::Difference, {makeCylinder(Vec3(0, -1, 0), Vec3(0, 1, 0), R),
-                                                              makeCylinder(Vec3(0, -2, 0), Vec3(0, 2, 0), Rin)});
+        const NodePtr tube =
+            makeBoolean(BoolOp::Difference, {makeCylinder(Vec3(0, -1, 0), Vec3(0, 1, 0), R),
+                                             makeCylinder(Vec3(0, -2, 0), Vec3(0, 2, 0), Rin)});
         TraceContext ctx;
         ctx.relTolerance = tolerance;
         ShellTally tally;
@@ -89,22 +91,25 @@ TEST_CASE("Thin cylindrical tubes, on grazing rays across the axis") {
             const double phi = rng.uniform(0, 6.283185307179586);
             const Vec3 u(std::cos(phi), 0.0, std::sin(phi)), v(-u.z, 0.0, u.x);
             const double b = R * (1 - 2 * eps * rng.uniform(0, 1));
-            const Ray ray{b * v - 10 * R * u + Vec3(0, rng.uniform(-0.9, 0.9), 0), u * rng.logUniform(0.5, 2)};
+            const Ray ray{b * v - 10 * R * u + Vec3(0, rng.uniform(-0.9, 0.9), 0),
+                          u * rng.logUniform(0.5, 2)};
             // Across the axis (d.y = 0): the cross-section is a circle, the sphere oracle in xz.
             const LV3 f(ray.origin.x, 0, ray.origin.z), d = ld(ray.dir);
             const LD a = glm::dot(d, d), far = 11 * R;
             const SphereOracle oo = sphereOracleLD(f, d, R), oi = sphereOracleLD(f, d, Rin);
             if (!oo.hit()) continue;
-            const RefSpan outer = chord(oo, R, far, a, tolerance), inner = chord(oi, Rin, far, a, tolerance);
+            const RefSpan outer = chord(oo, R, far, a, tolerance),
+                          inner = chord(oi, Rin, far, a, tolerance);
             SpanList got;
             tube->spans(ray, 0.0, kInf, ctx, got);
             ++tally.rays;
             CAPTURE(eps, i, b);
             compare(got, shellSpans(outer, oi, inner), tolerance, tally);
         }
-        std::printf("tube eps %.0e: %d rays, %d walls found, %d thinner than the tolerance skipped, "
-                    "worst end error %.3g of its bound\n",
-                    eps, tally.rays, tally.walls, tally.thinSkipped, double(tally.worst));
+        std::printf(
+            "tube eps %.0e: %d rays, %d walls found, %d thinner than the tolerance skipped, "
+            "worst end error %.3g of its bound\n",
+            eps, tally.rays, tally.walls, tally.thinSkipped, double(tally.worst));
         CHECK(tally.walls > 1000);
         CHECK(tally.thinSkipped * 20 < tally.walls);
     }
@@ -129,9 +134,11 @@ TEST_CASE("Thin implicit shells found by interval root isolation") {
             const double b = 1 - 2 * eps * rng.uniform(0, 1);
             const Ray ray{b * v - 10.0 * u, u};
             const LD far = 11;
-            const SphereOracle oo = sphereOracle(ray, LV3(0), 1), oi = sphereOracle(ray, LV3(0), Rin);
+            const SphereOracle oo = sphereOracle(ray, LV3(0), 1),
+                               oi = sphereOracle(ray, LV3(0), Rin);
             if (!oo.hit()) continue;
-            const RefSpan o = chord(oo, 1, far, 1, 2 * tolerance), in = chord(oi, Rin, far, 1, 2 * tolerance);
+            const RefSpan o = chord(oo, 1, far, 1, 2 * tolerance),
+                          in = chord(oi, Rin, far, 1, 2 * tolerance);
             const LD ty = -LD(ray.origin.y) / ray.dir.y;  // the box's top face y = 0
             const std::vector<RefSpan> ref = belowPlane(shellSpans(o, oi, in), ray, ty);
             SpanList got;
@@ -140,8 +147,9 @@ TEST_CASE("Thin implicit shells found by interval root isolation") {
             CAPTURE(eps, i, b);
             compare(got, ref, tolerance, tally);
         }
-        std::printf("implicit shell eps %.0e: %d rays, %d walls, %d thin skipped, worst %.3g of bound\n",
-                    eps, tally.rays, tally.walls, tally.thinSkipped, double(tally.worst));
+        std::printf(
+            "implicit shell eps %.0e: %d rays, %d walls, %d thin skipped, worst %.3g of bound\n",
+            eps, tally.rays, tally.walls, tally.thinSkipped, double(tally.worst));
         CHECK(tally.walls > 100);
     }
 }

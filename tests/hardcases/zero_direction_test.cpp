@@ -95,8 +95,10 @@ TEST_CASE("SceneGeometry::nearestHit on boxes along the 26 directions with signe
         {"box", box},
         {"difference touching a face",
          makeBoolean(BoolOp::Difference, {box, makeBox(Vec3(1.0, -2.0, -2.0), Vec3(3.0))})},
-        {"intersection", makeBoolean(BoolOp::Intersection, {box, makeBox(Vec3(-1.0, -1.0, -1.0), Vec3(4.0))})},
-        {"translated", makeTransform(makeBox(lo - Vec3(8.0), hi - Vec3(8.0)), Affine::translate(Vec3(8.0)))},
+        {"intersection",
+         makeBoolean(BoolOp::Intersection, {box, makeBox(Vec3(-1.0, -1.0, -1.0), Vec3(4.0))})},
+        {"translated",
+         makeTransform(makeBox(lo - Vec3(8.0), hi - Vec3(8.0)), Affine::translate(Vec3(8.0)))},
     };
     for (const auto& [name, solid] : solids) {
         const SceneGeometry scene({solid});
@@ -118,8 +120,8 @@ TEST_CASE("SceneGeometry::nearestHit on boxes along the 26 directions with signe
 TEST_CASE("SceneGeometry::nearestHit on a union of abutting boxes along the 26 directions",
           "[zero-direction]") {
     const Vec3 lo(-1.0), hi(1.0);
-    const SceneGeometry scene({makeBoolean(BoolOp::Union, {makeBox(lo, Vec3(0.0, 1.0, 1.0)),
-                                                           makeBox(Vec3(0.0, -1.0, -1.0), hi)})});
+    const SceneGeometry scene({makeBoolean(
+        BoolOp::Union, {makeBox(lo, Vec3(0.0, 1.0, 1.0)), makeBox(Vec3(0.0, -1.0, -1.0), hi)})});
     for (const Vec3& d : signedZeroDirections()) {
         checkEntry(scene, Ray{Vec3(0.25, -0.125, 0.375) - 2.5 * d, d}, lo, hi);
         checkEntry(scene, Ray{Vec3(1.5, -0.5, 0.5) - 2.5 * d, d}, lo, hi);
@@ -128,20 +130,21 @@ TEST_CASE("SceneGeometry::nearestHit on a union of abutting boxes along the 26 d
 
 TEST_CASE("SceneGeometry::nearestHit from cameras in a face plane and along edges") {
     const Vec3 lo(-1.0), hi(1.0);
-    const SceneGeometry scene({makeBoolean(BoolOp::Union, {makeBox(lo, Vec3(1.0, 0.0, 1.0)),
-                                                           makeBox(Vec3(-1.0, 0.0, -1.0), hi)})});
+    const SceneGeometry scene({makeBoolean(
+        BoolOp::Union, {makeBox(lo, Vec3(1.0, 0.0, 1.0)), makeBox(Vec3(-1.0, 0.0, -1.0), hi)})});
     TraceContext ctx;
     SECTION("a ray lying in the top face plane enters the closed box") {
         for (double zx : {0.0, -0.0})
             for (double zy : {0.0, -0.0}) {
-                const auto hit = scene.nearestHit(Ray{Vec3(zx, 1.0, -5.0), Vec3(zx, zy, 1.0)}, 0.0, kInf, ctx);
+                const auto hit =
+                    scene.nearestHit(Ray{Vec3(zx, 1.0, -5.0), Vec3(zx, zy, 1.0)}, 0.0, kInf, ctx);
                 REQUIRE(hit);
                 CHECK(hit->t == 4.0);
                 CHECK(hit->normal == Vec3(0, 0, -1));
             }
         // One ulp above the plane: a miss.
-        CHECK_FALSE(scene.nearestHit(Ray{Vec3(0.0, std::nextafter(1.0, 2.0), -5.0), Vec3(-0.0, 0.0, 1.0)},
-                                     0.0, kInf, ctx));
+        CHECK_FALSE(scene.nearestHit(
+            Ray{Vec3(0.0, std::nextafter(1.0, 2.0), -5.0), Vec3(-0.0, 0.0, 1.0)}, 0.0, kInf, ctx));
     }
     SECTION("along an edge of the box, and along the shared face's edge") {
         for (const Vec3& o : {Vec3(1.0, 1.0, -5.0), Vec3(-1.0, -1.0, -5.0), Vec3(1.0, 0.0, -5.0)}) {
@@ -154,7 +157,8 @@ TEST_CASE("SceneGeometry::nearestHit from cameras in a face plane and along edge
     }
     SECTION("from a point on a face, looking in: the hit is the way out, exactly") {
         for (double zx : {0.0, -0.0}) {
-            const auto hit = scene.nearestHit(Ray{Vec3(0.5, -1.0, 0.25), Vec3(zx, 1.0, -0.0)}, 0.0, kInf, ctx);
+            const auto hit =
+                scene.nearestHit(Ray{Vec3(0.5, -1.0, 0.25), Vec3(zx, 1.0, -0.0)}, 0.0, kInf, ctx);
             REQUIRE(hit);
             CHECK_FALSE(hit->entering);
             CHECK(hit->t == 2.0);
@@ -172,11 +176,15 @@ TEST_CASE("render: depth of an axis-aligned box seen straight on has no speckle"
         Vec3 lookAt;
     };
     const Vec3 lo(-1.0, -1.0, -1.0), hi(1.0, 1.0, 1.0);
-    for (const View& view : {View{64, Vec3(0, 0, -5), Vec3(0, 0, 0)}, View{63, Vec3(0, 0, -5), Vec3(0, 0, 0)},
-                             View{63, Vec3(0, 1, -5), Vec3(0, 1, 0)}, View{64, Vec3(0, 1, -5), Vec3(0, 1, 0)}}) {
+    for (const View& view :
+         {View{64, Vec3(0, 0, -5), Vec3(0, 0, 0)}, View{63, Vec3(0, 0, -5), Vec3(0, 0, 0)},
+          View{63, Vec3(0, 1, -5), Vec3(0, 1, 0)}, View{64, Vec3(0, 1, -5), Vec3(0, 1, 0)}}) {
         Scene scene;
         // Two boxes abutting at z = 0 as one union: the seam faces the camera edge-on.
-        addObject(scene, makeBoolean(BoolOp::Union, {makeBox(lo, Vec3(1, 1, 0)), makeBox(Vec3(-1, -1, 0), hi)}), 0);
+        addObject(
+            scene,
+            makeBoolean(BoolOp::Union, {makeBox(lo, Vec3(1, 1, 0)), makeBox(Vec3(-1, -1, 0), hi)}),
+            0);
         scene.camera.eye = view.eye;
         scene.camera.lookAt = view.lookAt;
         scene.camera.fovDegrees = 40;
@@ -201,7 +209,8 @@ TEST_CASE("render: depth of an axis-aligned box seen straight on has no speckle"
                 hits += e.hit;
                 if (!nanFree || !same || (e.hit && !e.admits(pixel(r.normal, i, j)))) {
                     ++mismatches;
-                    FAIL_CHECK("pixel " << i << "," << j << " depth " << depth << " expected " << expected);
+                    FAIL_CHECK("pixel " << i << "," << j << " depth " << depth << " expected "
+                                        << expected);
                 }
             }
         INFO("view size " << view.size << " eye y " << view.eye.y);

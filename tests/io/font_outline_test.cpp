@@ -23,15 +23,13 @@ namespace {
 Vec2 pointAt(const PathSegment& s, double t) {
     double u = 1.0 - t;
     switch (s.kind) {
-        case PathSegment::Kind::Line:
-            return u * s.p[0] + t * s.p[1];
+        case PathSegment::Kind::Line: return u * s.p[0] + t * s.p[1];
         case PathSegment::Kind::Quadratic:
             return u * u * s.p[0] + 2 * u * t * s.p[1] + t * t * s.p[2];
         case PathSegment::Kind::Cubic:
             return u * u * u * s.p[0] + 3 * u * u * t * s.p[1] + 3 * u * t * t * s.p[2] +
                    t * t * t * s.p[3];
-        case PathSegment::Kind::Arc:
-            break;
+        case PathSegment::Kind::Arc: break;
     }
     FAIL("glyph outlines have no arcs");
     return {};

@@ -84,7 +84,8 @@ TEST_CASE("writeImage / readImage round trips") {
             const Image back = readImage(dir.file(name));
             REQUIRE(back.channels == 1);
             REQUIRE(back.pixels.size() == depth.pixels.size());
-            for (size_t k = 0; k < depth.pixels.size(); ++k) CHECK(back.pixels[k] == depth.pixels[k]);
+            for (size_t k = 0; k < depth.pixels.size(); ++k)
+                CHECK(back.pixels[k] == depth.pixels[k]);
         }
     }
 

@@ -2,9 +2,9 @@
 /// @brief Image textures through the plug-in's TextureSystem, against the pixels written:
 /// texel centres under a tiny footprint give the texel (8-bit codes decoded from sRGB), a
 /// footprint over many texels gives the image's mean, and bad files are errors naming them.
+#include "io/texture.h"
 #include "io/image.h"
 #include "io/srgb.h"
-#include "io/texture.h"
 
 #include "util/scratch_folder.h"
 
@@ -55,8 +55,8 @@ TEST_CASE("Texture::lookup at texel centres with a tiny footprint gives the texe
     // A zero footprint is not a point sample: halfway between two texels is their mean
     // (the bilinear texel filter).
     const auto between = texture->lookup(2.0 / 16.0, 0.5 / 8.0, 0.0, 0.0, 0.0, 0.0);
-    CHECK(between[0] == Approx(0.5 * (quantised(texel(1, 0)[0]) + quantised(texel(2, 0)[0])))
-                            .margin(1e-5));
+    CHECK(between[0] ==
+          Approx(0.5 * (quantised(texel(1, 0)[0]) + quantised(texel(2, 0)[0]))).margin(1e-5));
     // Periodic: one image width further is the same texel.
     const auto again = texture->lookup(3.5 / 16.0 + 5.0, 2.5 / 8.0 - 3.0, 1e-6, 0.0, 0.0, 1e-6);
     CHECK(again[1] == Approx(quantised(texel(3, 2)[1])).margin(1e-5));

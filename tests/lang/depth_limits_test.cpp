@@ -23,7 +23,8 @@ struct Chain {
     int lineOf(int i) const { return reversed ? n - i : i + 1; }
 };
 
-Chain chain(int n, bool reversed, const std::function<std::string(int)>& definition, const std::string& tail) {
+Chain chain(int n, bool reversed, const std::function<std::string(int)>& definition,
+            const std::string& tail) {
     std::vector<std::string> lines;
     for (int i = 0; i < n; ++i) lines.push_back(definition(i));
     if (reversed) std::reverse(lines.begin(), lines.end());
@@ -43,8 +44,8 @@ std::string differenceLink(int i) {
 /// Two nested differences per name: tree height 2i + 1, name level i + 1.
 std::string doubleDifferenceLink(int i) {
     if (i == 0) return "solid s0 = sphere {};";
-    return "solid s" + std::to_string(i) + " = difference { difference { s" + std::to_string(i - 1) +
-           " sphere { radius 0.1 } } sphere { radius 0.2 } };";
+    return "solid s" + std::to_string(i) + " = difference { difference { s" +
+           std::to_string(i - 1) + " sphere { radius 0.1 } } sphere { radius 0.2 } };";
 }
 
 std::string letLink(int i) {
@@ -66,7 +67,8 @@ TEST_CASE("a chain of named solids deeper than kMaxNameDepth is one error, in ei
         // 10,000 in file order used to pass `check` and overflow the stack when rendered.
         const Chain c = chain(10000, reversed, differenceLink, "object s9999;\n");
         const std::string prev = "s" + std::to_string(tooDeep - 1) + " ";
-        requireOneError(c.text, c.lineOf(tooDeep), columnOf(differenceLink(tooDeep), prev), "nested too deeply");
+        requireOneError(c.text, c.lineOf(tooDeep), columnOf(differenceLink(tooDeep), prev),
+                        "nested too deeply");
         // At the limit it compiles, and its tree is kMaxNameDepth levels deep.
         const Chain ok = chain(kMaxNameDepth, reversed, differenceLink,
                                "object s" + std::to_string(kMaxNameDepth - 1) + ";\n");
@@ -82,9 +84,11 @@ TEST_CASE("a chain of lets deeper than kMaxNameDepth is one error, in either ord
         INFO("reversed: " << reversed);
         const Chain c = chain(10000, reversed, letLink, "");
         const std::string prev = "a" + std::to_string(kMaxNameDepth - 1) + " ";
-        requireOneError(c.text, c.lineOf(kMaxNameDepth), columnOf(letLink(kMaxNameDepth), prev), "nested too deeply");
-        const Chain ok = chain(kMaxNameDepth, reversed, letLink,
-                               "object sphere { radius a" + std::to_string(kMaxNameDepth - 1) + " };\n");
+        requireOneError(c.text, c.lineOf(kMaxNameDepth), columnOf(letLink(kMaxNameDepth), prev),
+                        "nested too deeply");
+        const Chain ok =
+            chain(kMaxNameDepth, reversed, letLink,
+                  "object sphere { radius a" + std::to_string(kMaxNameDepth - 1) + " };\n");
         const Compiled compiled = compileText(ok.text);
         INFO(compiled.sink.format());
         CHECK(compiled.scene.has_value());
@@ -98,8 +102,10 @@ TEST_CASE("a compiled tree deeper than kMaxCsgDepth is one error at the solid th
         for (const bool reversed : {false, true}) {
             INFO("reversed: " << reversed);
             const Chain c = chain(3000, reversed, doubleDifferenceLink, "object s2999;\n");
-            requireOneError(c.text, c.lineOf(k), columnOf(doubleDifferenceLink(k), "difference"), "nested too deeply");
-            const Chain ok = chain(k, reversed, doubleDifferenceLink, "object s" + std::to_string(k - 1) + ";\n");
+            requireOneError(c.text, c.lineOf(k), columnOf(doubleDifferenceLink(k), "difference"),
+                            "nested too deeply");
+            const Chain ok = chain(k, reversed, doubleDifferenceLink,
+                                   "object s" + std::to_string(k - 1) + ";\n");
             const Compiled compiled = compileText(ok.text);
             INFO(compiled.sink.format());
             REQUIRE(compiled.scene.has_value());

@@ -27,7 +27,8 @@ std::vector<std::string> lines(const std::string& text) {
 /// The number of terminal cells before byte `bytes` of a UTF-8 string (a character is one).
 int cells(const std::string& s, size_t bytes) {
     int n = 0;
-    for (size_t i = 0; i < bytes && i < s.size(); ++i) n += (static_cast<unsigned char>(s[i]) & 0xC0) != 0x80;
+    for (size_t i = 0; i < bytes && i < s.size(); ++i)
+        n += (static_cast<unsigned char>(s[i]) & 0xC0) != 0x80;
     return n;
 }
 
@@ -58,7 +59,8 @@ TEST_CASE("a long source line is clipped around the column, the caret under the 
         requireCaretUnder(f, "wal ");
     }
     SECTION("the error near the start: only the end is clipped") {
-        const Compiled c = compileText("let a = wal + 1 /* " + std::string(10000, 'x') + " */;\nlet wall = 1;\n");
+        const Compiled c =
+            compileText("let a = wal + 1 /* " + std::string(10000, 'x') + " */;\nlet wall = 1;\n");
         const std::string f = c.sink.format();
         const auto l = lines(f);
         CHECK(l[1].rfind("let a = wal + 1", 0) == 0);

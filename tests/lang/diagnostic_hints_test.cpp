@@ -14,7 +14,8 @@ using kerf::test::compileText;
 namespace {
 
 const char* const kSolidList =
-    "The solids are: sphere, box, cylinder, cone, torus, halfspace, implicit, extrude, revolve, union, "
+    "The solids are: sphere, box, cylinder, cone, torus, halfspace, implicit, extrude, revolve, "
+    "union, "
     "intersection, difference, xor";
 
 /// The one error of `text`, checked for its message and place.
@@ -96,7 +97,8 @@ TEST_CASE("hints: an unknown solid used like a primitive") {
               std::string("did you mean 'union'? ") + kSolidList);
         CHECK(oneError("object  sph { };", 1, 9, "unknown solid 'sph'").hint ==
               "the solids are: sphere, box, "
-              "cylinder, cone, torus, halfspace, implicit, extrude, revolve, union, intersection, difference, xor");
+              "cylinder, cone, torus, halfspace, implicit, extrude, revolve, union, intersection, "
+              "difference, xor");
     }
     SECTION("as the bound of an implicit") {
         CHECK_THAT(
@@ -173,7 +175,9 @@ TEST_CASE("hints: POV-Ray's positional values") {
     SECTION("POV-Ray's open after the values") {
         const Diagnostic d = oneError("object cylinder { <0, 0, 0>, <0, 1, 0>, 1 open };", 1, 19,
                                       "expected a property name in cylinder, found '<'");
-        CHECK_THAT(d.hint, EndsWith("'; kerf writes it 'open true' (the side alone: a surface, not a solid)"));
+        CHECK_THAT(
+            d.hint,
+            EndsWith("'; kerf writes it 'open true' (the side alone: a surface, not a solid)"));
     }
     SECTION("a count POV-Ray does not take shows the form with placeholders") {
         CHECK(
@@ -229,14 +233,17 @@ TEST_CASE("hints: unknown and value-less properties in every block") {
              "material takes: color, ambient, diffuse, specular, shininess, reflect, transmit, "
              "ior, absorb, emit, glossy, translucent, pattern, bump, bump_depth"},
             {"camera { location <0, 0, -5> }", 10, "unknown property 'location' in camera",
-             "camera takes: eye, look_at, up, fov, aperture, focus_distance, shutter_open, shutter_close"},
+             "camera takes: eye, look_at, up, fov, aperture, focus_distance, shutter_open, "
+             "shutter_close"},
             {"light point { at <0,1,0> shadowless }", 26,
-             "unknown property 'shadowless' in point light", "point light takes: color, at, power, falloff, fade_distance, shadows"},
+             "unknown property 'shadowless' in point light",
+             "point light takes: color, at, power, falloff, fade_distance, shadows"},
             {"light directional { direction <0,-1,0> parallel }", 40,
              "unknown property 'parallel' in directional light",
              "directional light takes: color, direction, shadows"},
             {"mist { distance 1 fog }", 19, "unknown property 'fog' in mist",
-             "mist takes: color, distance, density, bounds, min, max, extinction, albedo, emission, g, "
+             "mist takes: color, distance, density, bounds, min, max, extinction, albedo, "
+             "emission, g, "
              "method, step, samples, bake"},
             {"render { width 10 antialias 0.3 }", 19, "unknown property 'antialias' in render",
              "render takes: width, height, spp, max_depth, sampler, filter, noise"},
@@ -247,8 +254,9 @@ TEST_CASE("hints: unknown and value-less properties in every block") {
         }
         CHECK(oneError("camera { location <0, 0, -5> }", 1, 10,
                        "unknown property 'location' in camera")
-                  .hint == "the camera's position is eye; camera takes: eye, look_at, up, fov, "
-                           "aperture, focus_distance, shutter_open, shutter_close");
+                  .hint ==
+              "the camera's position is eye; camera takes: eye, look_at, up, fov, "
+              "aperture, focus_distance, shutter_open, shutter_close");
     }
     SECTION("a known property without a value, required or not: one error") {
         CHECK(

@@ -2,7 +2,6 @@
 #include "lang/parser.h"
 #include "lang_test_util.h"
 
-
 using namespace kerf;
 using kerf::test::compileText;
 using kerf::test::requireOneError;
@@ -23,14 +22,16 @@ TEST_CASE("diagnostics: undefined names") {
               "did you mean 'cup'?");
     }
     SECTION("material") {
-        requireOneError("material clay {}\nobject sphere {} material clai;", 2, 27, "undefined material 'clai'");
+        requireOneError("material clay {}\nobject sphere {} material clai;", 2, 27,
+                        "undefined material 'clai'");
     }
     SECTION("x outside an implicit function") {
         requireOneError("let a = x + 1;", 1, 9, "undefined name 'x'");
     }
     SECTION("a solid used as a number") {
         // Solids are values (issue 9): the error is at the operator and names both types.
-        requireOneError("solid s = sphere {};\nlet a = s * 2;", 2, 11, "cannot apply '*' to a solid and a number");
+        requireOneError("solid s = sphere {};\nlet a = s * 2;", 2, 11,
+                        "cannot apply '*' to a solid and a number");
     }
     SECTION("unknown function") {
         requireOneError("let a = sinn(1);", 1, 9, "unknown function 'sinn'");
@@ -45,8 +46,9 @@ TEST_CASE("diagnostics: solids and properties") {
         const auto c = compileText("object spere { radius 1 };");
         REQUIRE(c.sink.errorCount() == 1);
         CHECK(c.sink.diagnostics()[0].message == "unknown solid 'spere'");
-        CHECK_THAT(c.sink.diagnostics()[0].hint,
-                   Catch::Matchers::StartsWith("did you mean 'sphere'? The solids are: sphere, box,"));
+        CHECK_THAT(
+            c.sink.diagnostics()[0].hint,
+            Catch::Matchers::StartsWith("did you mean 'sphere'? The solids are: sphere, box,"));
         CHECK(c.sink.diagnostics()[0].loc.col == 8);
     }
     SECTION("unknown property, with the valid ones as a hint") {
@@ -70,7 +72,8 @@ TEST_CASE("diagnostics: solids and properties") {
                         "property 'radius' of sphere expects a number, got a vector");
     }
     SECTION("property given twice") {
-        requireOneError("camera { fov 30 eye <0, 0, -1> fov 40 }", 1, 32, "property 'fov' given twice in camera");
+        requireOneError("camera { fov 30 eye <0, 0, -1> fov 40 }", 1, 32,
+                        "property 'fov' given twice in camera");
     }
     SECTION("a one-word solid kind without its block") {
         requireOneError("object sphere;", 1, 8, "'sphere' needs a block");
@@ -85,7 +88,8 @@ TEST_CASE("diagnostics: solids and properties") {
         requireOneError("let a = 1;\nlet a = 2;", 2, 5, "let 'a' is already defined");
     }
     SECTION("reserved word as a name") {
-        requireOneError("solid sphere = box { min <0,0,0> max <1,1,1> };", 1, 7, "'sphere' is a reserved word");
+        requireOneError("solid sphere = box { min <0,0,0> max <1,1,1> };", 1, 7,
+                        "'sphere' is a reserved word");
     }
 }
 
@@ -94,7 +98,8 @@ TEST_CASE("diagnostics: cycles") {
         requireOneError("solid a = union { sphere {} a };", 1, 29, "solid 'a' refers to itself");
     }
     SECTION("a solid that refers to itself through others") {
-        const auto c = compileText("solid a = union { b };\nsolid b = difference { sphere {} c };\nsolid c = a scale 2;");
+        const auto c = compileText(
+            "solid a = union { b };\nsolid b = difference { sphere {} c };\nsolid c = a scale 2;");
         REQUIRE(c.sink.errorCount() == 1);
         const Diagnostic& d = c.sink.diagnostics()[0];
         CHECK(d.message == "solid 'a' refers to itself through 'b' → 'c' → 'a'");
@@ -102,43 +107,55 @@ TEST_CASE("diagnostics: cycles") {
         CHECK(d.loc.col == 11);
     }
     SECTION("lets that refer to each other") {
-        requireOneError("let a = b + 1;\nlet b = 2 * a;", 2, 13, "let 'a' refers to itself through 'b' → 'a'");
+        requireOneError("let a = b + 1;\nlet b = 2 * a;", 2, 13,
+                        "let 'a' refers to itself through 'b' → 'a'");
     }
 }
 
 TEST_CASE("diagnostics: values that are not finite") {
     requireOneError("let a = 1 / 0;", 1, 11, "value is not finite: 1 / 0 = inf");
-    requireOneError("object sphere { radius 1e400 };", 1, 24, "value is not finite: 1e400 is too large");
+    requireOneError("object sphere { radius 1e400 };", 1, 24,
+                    "value is not finite: 1e400 is too large");
     requireOneError("let a = 2 + sqrt(-1);", 1, 13, "value is not finite: sqrt(-1) = ");
     requireOneError("let a = log(0);", 1, 9, "value is not finite: log(0) = -inf");
     requireOneError("let v = <1, 2, 3> / 0;", 1, 19, "value is not finite");
 }
 
 TEST_CASE("diagnostics: degenerate solids") {
-    requireOneError("object sphere { radius -1 };", 1, 24, "sphere radius must be positive, got -1");
+    requireOneError("object sphere { radius -1 };", 1, 24,
+                    "sphere radius must be positive, got -1");
     requireOneError("object cylinder { from <0,0,0> to <0,1,0> radius 0 };", 1, 50,
                     "cylinder radius must be positive, got 0");
-    requireOneError("object cylinder { from <1,2,3> to <1,2,3> };", 1, 8, "cylinder has zero length");
+    requireOneError("object cylinder { from <1,2,3> to <1,2,3> };", 1, 8,
+                    "cylinder has zero length");
     requireOneError("object cone { from <0,0,0> to <0,1,0> radius1 0 radius2 0 };", 1, 8,
                     "cone with both radii 0 has no volume");
-    requireOneError("object cone { from <0,0,0> to <0,1,0> radius1 -2 };", 1, 47, "cone radius1 must not be negative");
-    requireOneError("object torus { major 1 minor 0 };", 1, 30, "torus minor radius must be positive");
+    requireOneError("object cone { from <0,0,0> to <0,1,0> radius1 -2 };", 1, 47,
+                    "cone radius1 must not be negative");
+    requireOneError("object torus { major 1 minor 0 };", 1, 30,
+                    "torus minor radius must be positive");
     requireOneError("object box { min <0, 0, 0> max <1, 0, 1> };", 1, 8, "empty box");
-    requireOneError("object halfspace { normal <0, 0, 0> };", 1, 27, "halfspace normal must not be zero");
-    requireOneError("object implicit { f x bound box { min <0, 0, 0> max <-1, 1, 1> } };", 1, 29, "empty bound");
+    requireOneError("object halfspace { normal <0, 0, 0> };", 1, 27,
+                    "halfspace normal must not be zero");
+    requireOneError("object implicit { f x bound box { min <0, 0, 0> max <-1, 1, 1> } };", 1, 29,
+                    "empty bound");
     requireOneError("object sphere {} scale <1, 0, 1>;", 1, 24, "scale by zero");
-    requireOneError("object sphere {} matrix [1 0 0 0  2 0 0 0  0 0 1 0];", 1, 18, "matrix is singular");
-    requireOneError("object sphere {} translate 2;", 1, 28, "translate expects a vector, got a number");
+    requireOneError("object sphere {} matrix [1 0 0 0  2 0 0 0  0 0 1 0];", 1, 18,
+                    "matrix is singular");
+    requireOneError("object sphere {} translate 2;", 1, 28,
+                    "translate expects a vector, got a number");
     requireOneError("object implicit { f <x, 0, 0> bound box { min <0,0,0> max <1,1,1> } };", 1, 22,
                     "a vector component must be a number, got a function of x, y, z");
 }
 
 TEST_CASE("diagnostics: camera, lights, mist, render") {
     SECTION("up parallel to the view direction, with a hint") {
-        const auto c = compileText("camera {\n  eye <0, 5, 0>\n  look_at <0, 0, 0>\n  up <0, 2, 0>\n}");
+        const auto c =
+            compileText("camera {\n  eye <0, 5, 0>\n  look_at <0, 0, 0>\n  up <0, 2, 0>\n}");
         REQUIRE(c.sink.errorCount() == 1);
         const Diagnostic& d = c.sink.diagnostics()[0];
-        CHECK_THAT(d.message, Catch::Matchers::StartsWith("camera up <0, 2, 0> is parallel to the view direction"));
+        CHECK_THAT(d.message, Catch::Matchers::StartsWith(
+                                  "camera up <0, 2, 0> is parallel to the view direction"));
         CHECK_THAT(d.hint, Catch::Matchers::Contains("not parallel"));
         CHECK(d.loc.line == 4);
         CHECK(d.loc.col == 6);
@@ -147,7 +164,8 @@ TEST_CASE("diagnostics: camera, lights, mist, render") {
         requireOneError("camera { eye <0, -3, 0> }", 1, 1, "is parallel to the view direction");
     }
     SECTION("eye at look_at") {
-        requireOneError("camera { eye <1, 1, 1> look_at <1, 1, 1> }", 1, 32, "camera eye and look_at are the same point");
+        requireOneError("camera { eye <1, 1, 1> look_at <1, 1, 1> }", 1, 32,
+                        "camera eye and look_at are the same point");
     }
     SECTION("fov outside (0, 180)") {
         requireOneError("camera { fov 180 }", 1, 14, "camera fov must be between 0 and 180");
@@ -155,10 +173,12 @@ TEST_CASE("diagnostics: camera, lights, mist, render") {
         requireOneError("camera { fov -30 }", 1, 14, "camera fov must be between 0 and 180");
     }
     SECTION("mist distance") {
-        requireOneError("mist { color <1, 1, 1> distance 0 }", 1, 33, "mist distance must be positive");
+        requireOneError("mist { color <1, 1, 1> distance 0 }", 1, 33,
+                        "mist distance must be positive");
     }
     SECTION("render settings are positive integers") {
-        requireOneError("render { width 0 }", 1, 16, "render width must be an integer from 1 to 32768, got 0");
+        requireOneError("render { width 0 }", 1, 16,
+                        "render width must be an integer from 1 to 32768, got 0");
         requireOneError("render { spp 2.5 }", 1, 14, "render spp must be an integer");
     }
     SECTION("point light without a position") {
@@ -168,7 +188,8 @@ TEST_CASE("diagnostics: camera, lights, mist, render") {
         requireOneError("render { }\nrender { }", 2, 1, "render given twice");
     }
     SECTION("operand types in the message") {
-        requireOneError("background <1, 1, 1> + 0.5;", 1, 22, "cannot apply '+' to a vector and a number");
+        requireOneError("background <1, 1, 1> + 0.5;", 1, 22,
+                        "cannot apply '+' to a vector and a number");
     }
 }
 
@@ -184,7 +205,8 @@ TEST_CASE("diagnostics: lexical errors and binary garbage") {
 }
 
 TEST_CASE("diagnostics: syntax errors") {
-    requireOneError("let a = 1\nlet b = 2;", 1, 10, "expected ';' after the let statement, found 'let'");
+    requireOneError("let a = 1\nlet b = 2;", 1, 10,
+                    "expected ';' after the let statement, found 'let'");
     requireOneError("object sphere { radius * 2 };", 1, 24, "expected an expression, found '*'");
     requireOneError("sphere { radius 1 };", 1, 1, "expected a statement, found 'sphere'");
     requireOneError("let v = <1, 2>;", 1, 14, "expected ',' after the y component of the vector");
@@ -193,7 +215,8 @@ TEST_CASE("diagnostics: syntax errors") {
                     "expected '}' to close the block opened at line 1, found 'light'");
     requireOneError("object union { sphere {}\nobject sphere {};", 2, 1,
                     "expected '}' to close the union opened at line 1, found 'object'");
-    requireOneError("object sphere {} material ;", 1, 27, "expected a material name after 'material', found ';'");
+    requireOneError("object sphere {} material ;", 1, 27,
+                    "expected a material name after 'material', found ';'");
 }
 
 // Each section expects exactly one diagnostic: a parser that recursed per level would crash
@@ -201,11 +224,13 @@ TEST_CASE("diagnostics: syntax errors") {
 // a busy machine.)
 TEST_CASE("diagnostics: nesting 100,000 levels deep is one error") {
     SECTION("parentheses") {
-        const std::string text = "let a = " + std::string(100000, '(') + "1" + std::string(100000, ')') + ";";
+        const std::string text =
+            "let a = " + std::string(100000, '(') + "1" + std::string(100000, ')') + ";";
         requireOneError(text, 1, 9 + kMaxNesting, "nesting too deep");
     }
     SECTION("unary minus") {
-        requireOneError("let a = " + std::string(100000, '-') + "1;", 1, 9 + kMaxNesting, "nesting too deep");
+        requireOneError("let a = " + std::string(100000, '-') + "1;", 1, 9 + kMaxNesting,
+                        "nesting too deep");
     }
     SECTION("solids") {
         std::string text = "object ";
@@ -223,7 +248,8 @@ TEST_CASE("diagnostics: nesting 100,000 levels deep is one error") {
     }
     SECTION("a chain of 100,000 named solids") {
         std::string text;
-        for (int i = 0; i < 100000; ++i) text += "solid s" + std::to_string(i) + " = s" + std::to_string(i + 1) + ";\n";
+        for (int i = 0; i < 100000; ++i)
+            text += "solid s" + std::to_string(i) + " = s" + std::to_string(i + 1) + ";\n";
         text += "solid s100000 = sphere {};\n";
         const auto c = compileText(text);
         REQUIRE(c.sink.errorCount() == 1);
@@ -274,7 +300,8 @@ TEST_CASE("DiagnosticSink::format") {
     }
     SECTION("no line: just the file") {
         DiagnosticSink sink;
-        sink.error(SourceLoc{std::make_shared<const std::string>("gone.kerf"), 0, 0}, "cannot read 'gone.kerf'");
+        sink.error(SourceLoc{std::make_shared<const std::string>("gone.kerf"), 0, 0},
+                   "cannot read 'gone.kerf'");
         CHECK(sink.format() == "gone.kerf: error: cannot read 'gone.kerf'\n");
         CHECK(sink.errorCount() == 1);
     }

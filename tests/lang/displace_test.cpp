@@ -3,7 +3,7 @@
 // messages for what cannot be displaced.
 #include "lang_test_util.h"
 
-#include "csg/noise.h"
+#include "csg/tape/noise.h"
 #include "csg/trace_context.h"
 
 #include <random>
@@ -33,8 +33,10 @@ TEST_CASE("noise nearly constant over the solid displaces a sphere by D times it
     const double n0 = gradientNoise(Vec3(0.3, 0.6, 0.2), 0);
     REQUIRE(std::fabs(n0) > 0.05);
     for (double depth : {0.25, -0.25}) {
-        const Compiled c = compileText("object sphere { radius 1 } displace noise { } translate <-0.3, -0.6, "
-                                       "-0.2> scale 1e6 by " + std::to_string(depth) + ";");
+        const Compiled c = compileText(
+            "object sphere { radius 1 } displace noise { } translate <-0.3, -0.6, "
+            "-0.2> scale 1e6 by " +
+            std::to_string(depth) + ";");
         INFO(c.sink.format());
         REQUIRE(c.scene.has_value());
         REQUIRE(c.scene->objects.size() == 1);
@@ -80,15 +82,18 @@ object sphere { radius 1 } material rock displace noise { seed 4 } scale 0.3 by 
 }
 
 TEST_CASE("displace: what cannot be displaced is an error at its place") {
-    requireOneError("object sphere { radius 1 } displace 0.1;", 1, 37, "expected a pattern after 'displace'");
-    requireOneError("object sphere { radius 1 } displace noise { } 0.1;", 1, 47, "expected 'by DEPTH'");
+    requireOneError("object sphere { radius 1 } displace 0.1;", 1, 37,
+                    "expected a pattern after 'displace'");
+    requireOneError("object sphere { radius 1 } displace noise { } 0.1;", 1, 47,
+                    "expected 'by DEPTH'");
     requireOneError("object sphere { radius 1 } displace noise { } by <1, 2, 3>;", 1, 50,
                     "depth must be a finite number");
     requireOneError("object sphere { radius 1 } move <1, 0, 0> displace noise { } by 0.1;", 1, 43,
                     "a moving solid cannot be displaced");
     requireOneError("object halfspace { normal <0, 1, 0> } displace noise { } by 0.1;", 1, 39,
                     "only a bounded solid can be displaced");
-    requireOneError("object sphere { radius 1 } displace marble { } by 0.1;", 1, 37, "unknown pattern 'marble'");
+    requireOneError("object sphere { radius 1 } displace marble { } by 0.1;", 1, 37,
+                    "unknown pattern 'marble'");
     requireOneError("object sphere { radius 1 } displace checker { } by 0.1;", 1, 37,
                     "displace takes a continuous pattern");
     requireOneError("object sphere { radius 1 } displace noise { } move <1, 0, 0> by 0.1;", 1, 47,

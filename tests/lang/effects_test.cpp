@@ -54,7 +54,7 @@ object sphere { radius 2 };
     CHECK(s.settings.sampler == SamplerKind::Lattice);
     CHECK(s.sky.gradient);
     CHECK(s.sky.horizon == Vec3(0.8, 0.8, 0.9));
-    CHECK(s.sky.nadir == s.sky.horizon);  // the horizon's colour below it, unless given
+    CHECK(s.sky.nadir == s.sky.horizon);     // the horizon's colour below it, unless given
     CHECK(s.sky.up == Vec3(0.0, 1.0, 0.0));  // normalised
     REQUIRE(s.objectFlags.size() == 3);
     CHECK(s.objectFlags[0].castsShadow);
@@ -79,7 +79,8 @@ TEST_CASE("issue 10's properties refuse bad values with the line and column") {
     requireOneError("material m { glossy 100 }\n", 1, 21,
                     "material glossy must be an angle from 0 to 90 degrees, got 100");
     requireOneError("camera { aperture -0.1 }\n", 1, 19, "camera aperture must not be negative");
-    requireOneError("camera { focus_distance 0 }\n", 1, 25, "camera focus_distance must be positive");
+    requireOneError("camera { focus_distance 0 }\n", 1, 25,
+                    "camera focus_distance must be positive");
     requireOneError("background gradient { horizon <1, 1, 1> }\n", 1, 1,
                     "background gradient needs the property 'zenith'");
     requireOneError("light spot { at <0, 1, 0> }\n", 1, 7, "unknown light kind 'spot'");
@@ -124,8 +125,10 @@ TEST_CASE("patterns refuse unknown kinds and bad values with the line and column
                     "turbulence pattern octaves must be an integer from 1 to 16, got 40");
     requireOneError("material m { pattern checker { octaves 2 } }\n", 1, 32,
                     "unknown property 'octaves' in checker pattern");
-    requireOneError("material m { pattern checker { } scale 0 }\n", 1, 40, "scale by zero flattens");
-    requireOneError("material m { pattern 3 }\n", 1, 22, "property 'pattern' of material expects a pattern");
+    requireOneError("material m { pattern checker { } scale 0 }\n", 1, 40,
+                    "scale by zero flattens");
+    requireOneError("material m { pattern 3 }\n", 1, 22,
+                    "property 'pattern' of material expects a pattern");
 }
 
 TEST_CASE("bump maps: a pattern and a depth") {
@@ -142,7 +145,8 @@ material gentle { bump checker { } }
     CHECK(rough.bumpDepth == 0.25);
     CHECK_FALSE(rough.pattern);
     CHECK(c.scene->materials[2].bumpDepth == 0.1);  // the default depth
-    requireOneError("material m { bump 0.3 }\n", 1, 19, "property 'bump' of material expects a pattern");
+    requireOneError("material m { bump 0.3 }\n", 1, 19,
+                    "property 'bump' of material expects a pattern");
 }
 
 TEST_CASE("render: the reconstruction filter and adaptive sampling's noise target") {
@@ -174,6 +178,7 @@ camera { shutter_open 0.25 shutter_close 0.75 }
     CHECK(c.scene->camera.shutterOpen == 0.25);
     CHECK(c.scene->camera.shutterClose == 0.75);
     requireOneError("object sphere { } move 3;\n", 1, 24, "move expects a vector, got a number");
-    requireOneError("camera { shutter_open 0.5 shutter_close 2 }\n", 1, 41,
-                    "camera shutter must open and close within the scene time 0 to 1, got 0.5 to 2");
+    requireOneError(
+        "camera { shutter_open 0.5 shutter_close 2 }\n", 1, 41,
+        "camera shutter must open and close within the scene time 0 to 1, got 0.5 to 2");
 }

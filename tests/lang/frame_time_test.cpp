@@ -48,7 +48,8 @@ TEST_CASE("frame/time reaches every kind of expression: lets, functions, loops, 
                                    "object sphere { radius r };",
                                    f)) == Approx(8.0).epsilon(1e-12));
     // A loop bound: frame 7 makes 7 shells of radius 0.5 … 3.5 whose union is hit at the outer.
-    CHECK(hitDistance(compileFrame("object union { for i in 1 .. frame { sphere { radius i / 2 } } };", f)) ==
+    CHECK(hitDistance(compileFrame(
+              "object union { for i in 1 .. frame { sphere { radius i / 2 } } };", f)) ==
           Approx(10.0 - 3.5).epsilon(1e-12));
     // Inside an implicit f, where x, y, z are free: the sphere of radius 1 + 2 · time = 1.5.
     CHECK(hitDistance(compileFrame("object implicit { f x*x + y*y + z*z - (1 + 2*time)^2\n"
@@ -66,7 +67,8 @@ TEST_CASE("frame/a definition of frame or time in the model hides the predefined
     // Older models that use the names keep their meaning.
     CHECK(hitDistance(compileFrame("let time = 3; object sphere { radius time };", f)) ==
           Approx(7.0).epsilon(1e-12));
-    CHECK(hitDistance(compileFrame("object union { for frame in 2 .. 2 { sphere { radius frame } } };", f)) ==
+    CHECK(hitDistance(compileFrame(
+              "object union { for frame in 2 .. 2 { sphere { radius frame } } };", f)) ==
           Approx(8.0).epsilon(1e-12));
     CHECK(hitDistance(compileFrame("fn r(frame) = frame + 1; object sphere { radius r(1) };", f)) ==
           Approx(8.0).epsilon(1e-12));
@@ -77,6 +79,7 @@ TEST_CASE("frame/a misspelt time is an undefined name with a suggestion") {
     INFO(c.sink.format());
     REQUIRE_FALSE(c.scene.has_value());
     REQUIRE(c.sink.errorCount() == 1);
-    CHECK_THAT(c.sink.diagnostics().front().message, Catch::Matchers::Contains("undefined name 'tme'"));
+    CHECK_THAT(c.sink.diagnostics().front().message,
+               Catch::Matchers::Contains("undefined name 'tme'"));
     CHECK_THAT(c.sink.diagnostics().front().hint, Catch::Matchers::Contains("time"));
 }

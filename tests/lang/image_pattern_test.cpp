@@ -58,7 +58,8 @@ object sphere { center <3, 0, 0> radius 1 } material b;
 
 TEST_CASE("image patterns: mistakes are errors at their positions") {
     ModelFolder folder;
-    const auto oneError = [&](const std::string& text, int line, int col, const std::string& message) {
+    const auto oneError = [&](const std::string& text, int line, int col,
+                              const std::string& message) {
         const Compiled c = compileText(text, folder.model());
         INFO(c.sink.format());
         REQUIRE_FALSE(c.scene);
@@ -71,7 +72,8 @@ TEST_CASE("image patterns: mistakes are errors at their positions") {
     oneError("material m { pattern image { file \"tex/none.png\" } }\n", 1, 35,
              "cannot read texture 'tex/none.png': no such file");
     oneError("material m { pattern image { file \"tex\" } }\n", 1, 35, "it is a folder");
-    oneError("material m { pattern image { file 3 } }\n", 1, 35, "expects a file name in quotes, got a number");
+    oneError("material m { pattern image { file 3 } }\n", 1, 35,
+             "expects a file name in quotes, got a number");
     oneError("material m { pattern image { file \"tex/grey.png\" mapping round } }\n", 1, 58,
              "unknown mapping 'round'");
     oneError("material m { pattern image { file \"tex/grey.png\" a <1, 0, 0> } }\n", 1, 50,

@@ -2,10 +2,10 @@
 // reported at the include statement.
 #include "lang_test_util.h"
 
+#include <unistd.h>
 #include <atomic>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 using namespace kerf;
 namespace fs = std::filesystem;
@@ -31,7 +31,9 @@ public:
         std::ofstream(p, std::ios::binary) << text;
         return p.string();
     }
-    std::string path(const std::string& relative) const { return (mPath / relative).lexically_normal().string(); }
+    std::string path(const std::string& relative) const {
+        return (mPath / relative).lexically_normal().string();
+    }
 
 private:
     fs::path mPath;
@@ -45,9 +47,11 @@ TEST_CASE("compileFile: includes") {
     SECTION("relative to the including file, each file read once") {
         dir.write("parts/common.kerf", "let R = 2;\n");
         dir.write("parts/cup.kerf", "include \"common.kerf\";\nsolid cup = sphere { radius R };\n");
-        dir.write("parts/lamp.kerf", "include \"common.kerf\";\nsolid lamp = sphere { radius R / 2 };\n");
-        const std::string main =
-            dir.write("main.kerf", "include \"parts/cup.kerf\";\ninclude \"parts/lamp.kerf\";\nobject cup;\nobject lamp;\n");
+        dir.write("parts/lamp.kerf",
+                  "include \"common.kerf\";\nsolid lamp = sphere { radius R / 2 };\n");
+        const std::string main = dir.write("main.kerf",
+                                           "include \"parts/cup.kerf\";\ninclude "
+                                           "\"parts/lamp.kerf\";\nobject cup;\nobject lamp;\n");
         DiagnosticSink sink;
         const auto scene = compileFile(main, sink);
         INFO(sink.format());
@@ -112,11 +116,14 @@ TEST_CASE("compileFile: includes") {
     }
 
     SECTION("binary garbage in a file") {
-        const std::string bin = dir.write("bin.kerf", std::string("\x7f" "ELF\x02\x01\x01\0\0\0", 10));
+        const std::string bin = dir.write("bin.kerf", std::string("\x7f"
+                                                                  "ELF\x02\x01\x01\0\0\0",
+                                                                  10));
         DiagnosticSink sink;
         REQUIRE_FALSE(compileFile(bin, sink).has_value());
         REQUIRE(sink.errorCount() == 1);
-        CHECK(sink.diagnostics()[0].message == "file contains the control character 0x7F; is it a binary file?");
+        CHECK(sink.diagnostics()[0].message ==
+              "file contains the control character 0x7F; is it a binary file?");
         CHECK(sink.diagnostics()[0].loc.line == 1);
         CHECK(sink.diagnostics()[0].loc.col == 1);
     }

@@ -5,11 +5,11 @@
 
 #include "lang/source.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
 #include <atomic>
 #include <filesystem>
 #include <fstream>
-#include <sys/stat.h>
-#include <unistd.h>
 
 using namespace kerf;
 using namespace kerf::test;
@@ -21,8 +21,8 @@ class TempDir {
 public:
     TempDir() {
         static std::atomic<int> counter{0};
-        mPath = fs::temp_directory_path() /
-                ("kerf_limits_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+        mPath = fs::temp_directory_path() / ("kerf_limits_test_" + std::to_string(::getpid()) +
+                                             "_" + std::to_string(counter++));
         fs::create_directories(mPath);
     }
     ~TempDir() {
@@ -42,7 +42,8 @@ private:
 
 /// Compiles `main` and requires exactly one error, whose message contains `message`, at
 /// `line` of the file named `file`.
-void requireOneFileError(const std::string& main, const std::string& file, int line, const std::string& message) {
+void requireOneFileError(const std::string& main, const std::string& file, int line,
+                         const std::string& message) {
     DiagnosticSink sink;
     const auto scene = compileFile(main, sink);
     INFO(sink.format());
@@ -61,7 +62,8 @@ TEST_CASE("includes and models that are not regular files are refused unread") {
     TempDir dir;
     SECTION("/dev/zero and /dev/urandom") {
         for (const char* device : {"/dev/zero", "/dev/urandom"}) {
-            const std::string main = dir.write("main.kerf", std::string("let a = 1;\ninclude \"") + device + "\";\n");
+            const std::string main =
+                dir.write("main.kerf", std::string("let a = 1;\ninclude \"") + device + "\";\n");
             requireOneFileError(main, main, 2, "not a regular file");
             DiagnosticSink sink;
             CHECK_FALSE(compileFile(device, sink).has_value());
@@ -131,6 +133,7 @@ TEST_CASE("an include chain deeper than kMaxIncludeDepth is one error at the inc
         }
         // kMaxIncludeDepth files are open when the last of them includes one more.
         const std::string deepest = dir.path("f" + std::to_string(kMaxIncludeDepth - 1) + ".kerf");
-        requireOneFileError(dir.path("f0.kerf"), deepest, includeFirst ? 1 : 2, "includes nested too deeply");
+        requireOneFileError(dir.path("f0.kerf"), deepest, includeFirst ? 1 : 2,
+                            "includes nested too deeply");
     }
 }

@@ -43,7 +43,8 @@ inline void requireOneError(const Compiled& c, int line, int col, const std::str
 }
 
 /// The text compiles with exactly one error, at line:col, whose message contains `message`.
-inline void requireOneError(const std::string& text, int line, int col, const std::string& message) {
+inline void requireOneError(const std::string& text, int line, int col,
+                            const std::string& message) {
     requireOneError(compileText(text), line, col, message);
 }
 

@@ -10,7 +10,8 @@ using namespace kerf;
 namespace {
 
 std::vector<Token> lex(const std::string& text, DiagnosticSink& sink) {
-    const SourceText source{std::make_shared<const std::string>("t.kerf"), std::make_shared<const std::string>(text)};
+    const SourceText source{std::make_shared<const std::string>("t.kerf"),
+                            std::make_shared<const std::string>(text)};
     return tokenize(source, sink);
 }
 
@@ -41,12 +42,13 @@ TEST_CASE("tokenize") {
 
     SECTION("punctuation, names and strings with positions") {
         const auto t = lex("let a_1 = <1, 2>;\n  include \"x.kerf\" { } ( ) [ ] + - * / ^", sink);
-        const TokenKind kinds[] = {TokenKind::Identifier, TokenKind::Identifier, TokenKind::Equals, TokenKind::Less,
-                                   TokenKind::Number, TokenKind::Comma, TokenKind::Number, TokenKind::Greater,
-                                   TokenKind::Semicolon, TokenKind::Identifier, TokenKind::String, TokenKind::LBrace,
-                                   TokenKind::RBrace, TokenKind::LParen, TokenKind::RParen, TokenKind::LBracket,
-                                   TokenKind::RBracket, TokenKind::Plus, TokenKind::Minus, TokenKind::Star,
-                                   TokenKind::Slash, TokenKind::Caret, TokenKind::End};
+        const TokenKind kinds[] = {
+            TokenKind::Identifier, TokenKind::Identifier, TokenKind::Equals, TokenKind::Less,
+            TokenKind::Number,     TokenKind::Comma,      TokenKind::Number, TokenKind::Greater,
+            TokenKind::Semicolon,  TokenKind::Identifier, TokenKind::String, TokenKind::LBrace,
+            TokenKind::RBrace,     TokenKind::LParen,     TokenKind::RParen, TokenKind::LBracket,
+            TokenKind::RBracket,   TokenKind::Plus,       TokenKind::Minus,  TokenKind::Star,
+            TokenKind::Slash,      TokenKind::Caret,      TokenKind::End};
         REQUIRE(t.size() == std::size(kinds));
         for (size_t i = 0; i < t.size(); ++i) CHECK(t[i].kind == kinds[i]);
         CHECK(t[1].text == "a_1");
@@ -90,8 +92,9 @@ TEST_CASE("tokenize") {
         CHECK(sink.diagnostics()[2].message == "unterminated comment");
         CHECK(sink.diagnostics()[2].loc.line == 2);
         CHECK(sink.diagnostics()[2].loc.col == 3);
-        const TokenKind kinds[] = {TokenKind::Identifier, TokenKind::Error, TokenKind::Identifier, TokenKind::Error,
-                                   TokenKind::Identifier, TokenKind::Error, TokenKind::End};
+        const TokenKind kinds[] = {
+            TokenKind::Identifier, TokenKind::Error, TokenKind::Identifier, TokenKind::Error,
+            TokenKind::Identifier, TokenKind::Error, TokenKind::End};
         REQUIRE(t.size() == std::size(kinds));
         for (size_t i = 0; i < t.size(); ++i) CHECK(t[i].kind == kinds[i]);
     }

@@ -86,7 +86,8 @@ TEST_CASE("Lowering::lower: the issue's example") {
     const Scene& s = *c.scene;
 
     REQUIRE(s.objects.size() == 5);
-    CHECK(s.objects[0]->primitiveCount() == 5);  // body: 2 cylinders, handle: 2 cylinders + halfspace
+    CHECK(s.objects[0]->primitiveCount() ==
+          5);  // body: 2 cylinders, handle: 2 cylinders + halfspace
     CHECK(s.objects[1]->primitiveCount() == 1);
     CHECK(s.objects[2]->primitiveCount() == 5);
     CHECK(s.objects[3]->primitiveCount() == 1);
@@ -166,8 +167,10 @@ TEST_CASE("Lowering::lower: the issue's example") {
 
 TEST_CASE("Lowering::solidNamed: one lowered tree per definition") {
     DiagnosticSink sink;
-    const SourceText src{std::make_shared<const std::string>("s.kerf"), std::make_shared<const std::string>(
-        "object a translate <1, 0, 0>;\nobject a;\nsolid a = union { sphere {} box { min <0,0,0> max <2,2,2> } };")};
+    const SourceText src{std::make_shared<const std::string>("s.kerf"),
+                         std::make_shared<const std::string>(
+                             "object a translate <1, 0, 0>;\nobject a;\nsolid a = union { sphere "
+                             "{} box { min <0,0,0> max <2,2,2> } };")};
     Program program = parse(tokenize(src, sink), sink);
     Lowering lowering(sink);
     const auto scene = lowering.lower(program);
@@ -182,9 +185,12 @@ TEST_CASE("Lowering::solidNamed: one lowered tree per definition") {
 
 TEST_CASE("Lowering::lower: the syntax tree of each solid and object is freed once lowered") {
     DiagnosticSink sink;
-    const SourceText src{std::make_shared<const std::string>("f.kerf"), std::make_shared<const std::string>(
-        "let r = 2;\nobject a translate <1, 0, 0>;\nsolid a = union { b sphere { radius r } };\n"
-        "solid b = box { min <0,0,0> max <1,1,1> };\nmaterial m { color <1, 0, 0> }\nobject b material m;")};
+    const SourceText src{
+        std::make_shared<const std::string>("f.kerf"),
+        std::make_shared<const std::string>("let r = 2;\nobject a translate <1, 0, 0>;\nsolid a = "
+                                            "union { b sphere { radius r } };\n"
+                                            "solid b = box { min <0,0,0> max <1,1,1> };\nmaterial "
+                                            "m { color <1, 0, 0> }\nobject b material m;")};
     Program program = parse(tokenize(src, sink), sink);
     REQUIRE(program.statements.size() == 6);
     for (const Statement& s : program.statements) CHECK(s.tree != nullptr);
@@ -222,7 +228,8 @@ TEST_CASE("Lowering: expressions fold to the right values") {
     CHECK(numberOf("floor(-1.5) + ceil(1.2) + abs(-3)") == 3);
     CHECK(numberOf("sqrt(16) + exp(0) + log(1)") == 5);
     CHECK(numberOf("sin(1) + cos(1) + tan(1)") == std::sin(1.0) + std::cos(1.0) + std::tan(1.0));
-    CHECK(numberOf("asin(0.5) + acos(0.5) + atan(2)") == std::asin(0.5) + std::acos(0.5) + std::atan(2.0));
+    CHECK(numberOf("asin(0.5) + acos(0.5) + atan(2)") ==
+          std::asin(0.5) + std::acos(0.5) + std::atan(2.0));
 
     checkVec(vectorOf("<1, 2, 3> * 2 - <1, 1, 1>"), {1, 3, 5});
     checkVec(vectorOf("2 * <1, 2, 3> / 4"), {0.5, 1, 1.5});
@@ -310,7 +317,8 @@ TEST_CASE("Lowering: materials") {
 
 TEST_CASE("Lowering: implicit functions") {
     const auto c = compileText(
-        "let k = 2;\nobject implicit { f x^2 + y^2 + z^2 - k^2 + 0*sin(x) bound box { min <-10, -10, -10> max <10, 10, 10> } };");
+        "let k = 2;\nobject implicit { f x^2 + y^2 + z^2 - k^2 + 0*sin(x) bound box { min <-10, "
+        "-10, -10> max <10, 10, 10> } };");
     INFO(c.sink.format());
     REQUIRE(c.scene.has_value());
     const NodePtr& node = c.scene->objects[0];

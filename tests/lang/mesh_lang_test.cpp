@@ -21,7 +21,8 @@ namespace {
 /// two triangles of the top face (z = 1), which leaves four boundary edges.
 std::string cubeObj(bool open = false) {
     std::ostringstream s;
-    for (int i = 0; i < 8; ++i) s << "v " << (i & 1) << ' ' << ((i >> 1) & 1) << ' ' << ((i >> 2) & 1) << '\n';
+    for (int i = 0; i < 8; ++i)
+        s << "v " << (i & 1) << ' ' << ((i >> 1) & 1) << ' ' << ((i >> 2) & 1) << '\n';
     // Vertex i + 1 (OBJ counts from 1) is at (i&1, i>>1&1, i>>2&1).
     const int faces[12][3] = {{1, 3, 4}, {1, 4, 2},   // z = 0, normal −z
                               {5, 6, 8}, {5, 8, 7},   // z = 1, normal +z
@@ -67,7 +68,7 @@ const MeshShape* shapeBelow(const NodePtr& node) {
 }
 
 void requireBounds(const Bounds3& b, const Vec3& lo, const Vec3& hi) {
-    // Transforms round outward by a few ulps at most (csg/transform.cpp).
+    // Transforms round outward by a few ulps at most (csg/tree/transform.cpp).
     for (int i = 0; i < 3; ++i) {
         CHECK(b.lo[i] == Approx(lo[i]).margin(1e-12));
         CHECK(b.hi[i] == Approx(hi[i]).margin(1e-12));
@@ -119,12 +120,15 @@ object mesh name smooth false;
 TEST_CASE("mesh: each file is loaded once and shared by every use, however it is spelt") {
     MeshFolder folder;
     const std::string absolute = (folder.root / "models" / "parts" / "cube.obj").string();
-    const Compiled c = compileText("object mesh \"parts/cube.obj\";\n"
-                                   "object mesh \"parts/../parts/cube.obj\" translate <3, 0, 0>;\n"
-                                   "object mesh \"" + absolute + "\" smooth false rotate <0, 90, 0>;\n"
-                                   "object mesh \"parts/octa.obj\";\n"
-                                   "object union { mesh \"parts/cube.obj\" sphere { radius 0.1 } };\n",
-                                   folder.model());
+    const Compiled c = compileText(
+        "object mesh \"parts/cube.obj\";\n"
+        "object mesh \"parts/../parts/cube.obj\" translate <3, 0, 0>;\n"
+        "object mesh \"" +
+            absolute +
+            "\" smooth false rotate <0, 90, 0>;\n"
+            "object mesh \"parts/octa.obj\";\n"
+            "object union { mesh \"parts/cube.obj\" sphere { radius 0.1 } };\n",
+        folder.model());
     INFO(c.sink.format());
     REQUIRE(c.scene);
     REQUIRE(c.scene->objects.size() == 5);
@@ -140,24 +144,28 @@ TEST_CASE("mesh: each file is loaded once and shared by every use, however it is
 TEST_CASE("mesh: paths are relative to the model file that names them, not the working folder") {
     MeshFolder folder;
     fs::create_directories(folder.root / "models" / "sub");
-    std::ofstream(folder.root / "models" / "sub" / "part.kerf") << "solid part = mesh \"../parts/octa.obj\";\n";
+    std::ofstream(folder.root / "models" / "sub" / "part.kerf")
+        << "solid part = mesh \"../parts/octa.obj\";\n";
     const Compiled c = compileText("include \"sub/part.kerf\";\nobject part;\n", folder.model());
     INFO(c.sink.format());
     REQUIRE(c.scene);
-    CHECK(shapeBelow(c.scene->objects[0])->source() == (folder.root / "models" / "parts" / "octa.obj").string());
+    CHECK(shapeBelow(c.scene->objects[0])->source() ==
+          (folder.root / "models" / "parts" / "octa.obj").string());
 }
 
 TEST_CASE("mesh: an open mesh renders alone, and is refused where a solid is needed") {
     MeshFolder folder;
     SECTION("alone, under transforms and materials: fine") {
-        const Compiled c = compileText("material m { color <1, 1, 1> }\n"
-                                       "object mesh \"parts/open.obj\" translate <1, 0, 0> material m spin <0, 10, 0>;\n",
-                                       folder.model());
+        const Compiled c = compileText(
+            "material m { color <1, 1, 1> }\n"
+            "object mesh \"parts/open.obj\" translate <1, 0, 0> material m spin <0, 10, 0>;\n",
+            folder.model());
         INFO(c.sink.format());
         REQUIRE(c.scene);
         CHECK_FALSE(shapeBelow(c.scene->objects[0])->isSolid());
     }
-    const auto requireOpenError = [&](const std::string& text, int line, int col, const std::string& use) {
+    const auto requireOpenError = [&](const std::string& text, int line, int col,
+                                      const std::string& use) {
         const Compiled c = compileText(text, folder.model());
         INFO(c.sink.format());
         REQUIRE_FALSE(c.scene);
@@ -165,22 +173,25 @@ TEST_CASE("mesh: an open mesh renders alone, and is refused where a solid is nee
         const Diagnostic& d = c.sink.diagnostics().front();
         // The first triangle of the cube with an open top that has a boundary edge: (1, 2, 6)
         // of the y = 0 face, whose edge from vertex 6 (1, 0, 1) to 5 (0, 0, 1) has no twin.
-        CHECK_THAT(d.message, Catch::Matchers::Contains("open.obj' is not a solid: boundary edge from vertex"));
+        CHECK_THAT(d.message, Catch::Matchers::Contains(
+                                  "open.obj' is not a solid: boundary edge from vertex"));
         CHECK(d.loc.line == line);
         CHECK(d.loc.col == col);
         CHECK_THAT(d.hint, Catch::Matchers::Contains(use));
         CHECK_THAT(d.hint, Catch::Matchers::Contains("renders as a surface"));
     };
     SECTION("difference") {
-        requireOpenError("object difference {\n  box { min <0, 0, 0> max <2, 2, 2> }\n  mesh \"parts/open.obj\" "
-                         "translate <0.5, 0.5, 0.5>\n};\n",
-                         3, 3, "an operand of difference at line 1, column 8");
+        requireOpenError(
+            "object difference {\n  box { min <0, 0, 0> max <2, 2, 2> }\n  mesh \"parts/open.obj\" "
+            "translate <0.5, 0.5, 0.5>\n};\n",
+            3, 3, "an operand of difference at line 1, column 8");
     }
     SECTION("a named solid under intersection") {
-        requireOpenError("solid lid = mesh \"parts/open.obj\" material none;\n"
-                         "material none { color <1, 1, 1> }\n"
-                         "object intersection { sphere { radius 2 } lid };\n",
-                         1, 13, "an operand of intersection");
+        requireOpenError(
+            "solid lid = mesh \"parts/open.obj\" material none;\n"
+            "material none { color <1, 1, 1> }\n"
+            "object intersection { sphere { radius 2 } lid };\n",
+            1, 13, "an operand of intersection");
     }
     SECTION("union and xor") {
         requireOpenError("object union { mesh \"parts/open.obj\" sphere { radius 2 } };\n", 1, 16,
@@ -189,26 +200,31 @@ TEST_CASE("mesh: an open mesh renders alone, and is refused where a solid is nee
                          "an operand of xor");
     }
     SECTION("a loop's union") {
-        requireOpenError("object union { for i in [0, 1] { mesh \"parts/open.obj\" translate <i * 2, 0, 0> } };\n",
-                         1, 34, "an operand of union");
+        requireOpenError(
+            "object union { for i in [0, 1] { mesh \"parts/open.obj\" translate <i * 2, 0, 0> } "
+            "};\n",
+            1, 34, "an operand of union");
     }
     SECTION("displaced") {
-        requireOpenError("object mesh \"parts/open.obj\" displace noise { } by 0.1;\n", 1, 8, "displaced");
+        requireOpenError("object mesh \"parts/open.obj\" displace noise { } by 0.1;\n", 1, 8,
+                         "displaced");
     }
     SECTION("cut by a section plane") {
-        requireOpenError("object mesh \"parts/open.obj\";\nsection { point <0, 0, 0.5> normal <0, 0, 1> }\n", 1, 8,
-                         "cut by the section plane at line 2, column 1");
+        requireOpenError(
+            "object mesh \"parts/open.obj\";\nsection { point <0, 0, 0.5> normal <0, 0, 1> }\n", 1,
+            8, "cut by the section plane at line 2, column 1");
     }
     SECTION("a section plane that misses it: fine") {
-        const Compiled c =
-            compileText("object mesh \"parts/open.obj\";\nsection { point <0, 0, 5> normal <0, 0, 1> }\n",
-                        folder.model());
+        const Compiled c = compileText(
+            "object mesh \"parts/open.obj\";\nsection { point <0, 0, 5> normal <0, 0, 1> }\n",
+            folder.model());
         INFO(c.sink.format());
         CHECK(c.scene);
     }
     SECTION("a closed mesh is an operand like any solid") {
-        const Compiled c = compileText("object difference { mesh \"parts/cube.obj\" sphere { radius 0.5 } };\n",
-                                       folder.model());
+        const Compiled c =
+            compileText("object difference { mesh \"parts/cube.obj\" sphere { radius 0.5 } };\n",
+                        folder.model());
         INFO(c.sink.format());
         REQUIRE(c.scene);
         CHECK(c.scene->objects[0]->kind() == NodeKind::Difference);
@@ -217,7 +233,8 @@ TEST_CASE("mesh: an open mesh renders alone, and is refused where a solid is nee
 
 TEST_CASE("mesh: bad files and bad values are one error each at the file name") {
     MeshFolder folder;
-    const auto requireError = [&](const std::string& text, int line, int col, const std::string& message) {
+    const auto requireError = [&](const std::string& text, int line, int col,
+                                  const std::string& message) {
         const Compiled c = compileText(text, folder.model());
         INFO(c.sink.format());
         REQUIRE_FALSE(c.scene);
@@ -229,9 +246,11 @@ TEST_CASE("mesh: bad files and bad values are one error each at the file name") 
         return d;
     };
     SECTION("missing, with where it was looked for") {
-        const Diagnostic d = requireError("object sphere { radius 1 };\nobject mesh \"parts/none.stl\";\n", 2, 13,
-                                          "cannot load mesh 'parts/none.stl': no such file");
-        CHECK_THAT(d.hint, Catch::Matchers::Contains((folder.root / "models" / "parts" / "none.stl").string()));
+        const Diagnostic d =
+            requireError("object sphere { radius 1 };\nobject mesh \"parts/none.stl\";\n", 2, 13,
+                         "cannot load mesh 'parts/none.stl': no such file");
+        CHECK_THAT(d.hint, Catch::Matchers::Contains(
+                               (folder.root / "models" / "parts" / "none.stl").string()));
     }
     SECTION("truncated binary STL") {
         requireError("object mesh \"parts/cut.stl\" translate <1, 0, 0>;\n", 1, 13,
@@ -241,36 +260,41 @@ TEST_CASE("mesh: bad files and bad values are one error each at the file name") 
     }
     SECTION("a non-finite coordinate") {
         std::string ply = plyHeader("binary_little_endian", 3, 1);
-        for (float x : {0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, std::numeric_limits<float>::quiet_NaN(), 0.0f})
+        for (float x : {0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f,
+                        std::numeric_limits<float>::quiet_NaN(), 0.0f})
             appendBytes(ply, x);
         appendBytes(ply, uint8_t(3));
         for (int32_t i : {0, 1, 2}) appendBytes(ply, i);
         folder.write("parts/nan.ply", ply);
-        requireError("object mesh \"parts/nan.ply\";\n", 1, 13, "cannot load mesh 'parts/nan.ply': vertex 2 has a non-finite coordinate");
+        requireError("object mesh \"parts/nan.ply\";\n", 1, 13,
+                     "cannot load mesh 'parts/nan.ply': vertex 2 has a non-finite coordinate");
     }
     SECTION("no triangles") {
         folder.write("parts/points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
         // Assimp's own validation refuses it before the loader counts triangles.
-        requireError("object mesh \"parts/points.obj\";\n", 1, 13, "cannot load mesh 'parts/points.obj': not a readable mesh");
+        requireError("object mesh \"parts/points.obj\";\n", 1, 13,
+                     "cannot load mesh 'parts/points.obj': not a readable mesh");
     }
     SECTION("not a mesh") {
         folder.write("parts/notes.txt", "these are not the triangles you are looking for\n");
-        requireError("object mesh \"parts/notes.txt\";\n", 1, 13, "cannot load mesh 'parts/notes.txt': not a readable mesh");
+        requireError("object mesh \"parts/notes.txt\";\n", 1, 13,
+                     "cannot load mesh 'parts/notes.txt': not a readable mesh");
     }
     SECTION("a bad file used twice is reported once") {
-        const Compiled c = compileText("object mesh \"parts/none.stl\";\nobject mesh \"parts/none.stl\";\n",
-                                       folder.model());
+        const Compiled c = compileText(
+            "object mesh \"parts/none.stl\";\nobject mesh \"parts/none.stl\";\n", folder.model());
         CHECK(c.sink.errorCount() == 1);
     }
     SECTION("not a string") {
-        requireError("object mesh (1 + 2);\n", 1, 13, "mesh expects a file name in quotes, got a number");
+        requireError("object mesh (1 + 2);\n", 1, 13,
+                     "mesh expects a file name in quotes, got a number");
     }
     SECTION("smooth must be a boolean") {
         requireError("object mesh \"parts/cube.obj\" smooth <1, 0, 0>;\n", 1, 37, "smooth");
     }
     SECTION("smooth after the modifiers") {
-        const Compiled c = compileText("object mesh \"parts/cube.obj\" translate <1, 0, 0> smooth false;\n",
-                                       folder.model());
+        const Compiled c = compileText(
+            "object mesh \"parts/cube.obj\" translate <1, 0, 0> smooth false;\n", folder.model());
         REQUIRE(c.sink.errorCount() == 1);
         const Diagnostic& d = c.sink.diagnostics().front();
         CHECK(d.message == "'smooth' after the modifiers of a mesh");

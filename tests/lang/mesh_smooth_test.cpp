@@ -29,11 +29,12 @@ TEST_CASE("mesh smooth: shading normals interpolate the file's vertex normals", 
         obj << "vn " << n.x << ' ' << n.y << ' ' << n.z << '\n';
     }
     for (const auto& t : octahedronTriangles())
-        obj << "f " << t[0] + 1 << "//" << t[0] + 1 << ' ' << t[1] + 1 << "//" << t[1] + 1 << ' ' << t[2] + 1
-            << "//" << t[2] + 1 << '\n';
+        obj << "f " << t[0] + 1 << "//" << t[0] + 1 << ' ' << t[1] + 1 << "//" << t[1] + 1 << ' '
+            << t[2] + 1 << "//" << t[2] + 1 << '\n';
     std::ofstream(root / "ball.obj") << obj.str();
-    const Compiled c = compileText("object mesh \"ball.obj\";\nobject mesh \"ball.obj\" smooth false;\n",
-                                   (root / "scene.kerf").string());
+    const Compiled c =
+        compileText("object mesh \"ball.obj\";\nobject mesh \"ball.obj\" smooth false;\n",
+                    (root / "scene.kerf").string());
     fs::remove_all(root);
     INFO(c.sink.format());
     REQUIRE(c.scene);

@@ -4,8 +4,8 @@
 #include "lang/openscad_csg.h"
 #include "openscad_test_util.h"
 
-#include "csg/span.h"
 #include "csg/trace_context.h"
+#include "csg/tree/span.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

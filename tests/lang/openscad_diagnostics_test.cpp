@@ -122,14 +122,14 @@ TEST_CASE("openscad/OpenSCAD's examples that use only the nodes read load") {
         int curves, fewest, most;
     };
     const std::map<std::string, Facets> expected = {
-        {"CSG.csg", {3, 30, 30}},         {"CSG-modules.csg", {19, 63, 72}},
-        {"assert.csg", {0, 0, 0}},        {"example001.csg", {4, 30, 30}},
-        {"example002.csg", {1, 30, 30}},  {"example003.csg", {0, 0, 0}},
-        {"example004.csg", {1, 30, 30}},  {"example005.csg", {9, 30, 30}},
-        {"example011.csg", {0, 0, 0}},    {"example014.csg", {0, 0, 0}},
-        {"example018.csg", {8, 30, 30}},  {"example019.csg", {41, 19, 19}},
-        {"example022.csg", {24, 16, 16}}, {"example024.csg", {0, 0, 0}},
-        {"functions.csg", {41, 5, 5}},    {"logo.csg", {4, 100, 100}},
+        {"CSG.csg", {3, 30, 30}},          {"CSG-modules.csg", {19, 63, 72}},
+        {"assert.csg", {0, 0, 0}},         {"example001.csg", {4, 30, 30}},
+        {"example002.csg", {1, 30, 30}},   {"example003.csg", {0, 0, 0}},
+        {"example004.csg", {1, 30, 30}},   {"example005.csg", {9, 30, 30}},
+        {"example011.csg", {0, 0, 0}},     {"example014.csg", {0, 0, 0}},
+        {"example018.csg", {8, 30, 30}},   {"example019.csg", {41, 19, 19}},
+        {"example022.csg", {24, 16, 16}},  {"example024.csg", {0, 0, 0}},
+        {"functions.csg", {41, 5, 5}},     {"logo.csg", {4, 100, 100}},
         {"candleStand.csg", {26, 7, 360}}, {"example017.csg", {19, 19, 30}},
         {"example020.csg", {3, 6, 30}}};
     int files = 0;
@@ -219,7 +219,8 @@ TEST_CASE("openscad/OpenSCAD's text and offset examples load, within OpenSCAD's 
         const Bounds3 b = scene->objects[0]->bounds();
         const Vec3 lo(m.x0, m.z0, -m.y1), hi(m.x1, m.z1, -m.y0);
         const double size = glm::length(hi - lo);
-        INFO("kerf " << b.lo.x << " " << b.lo.y << " " << b.lo.z << " – " << b.hi.x << " " << b.hi.y << " " << b.hi.z);
+        INFO("kerf " << b.lo.x << " " << b.lo.y << " " << b.lo.z << " – " << b.hi.x << " " << b.hi.y
+                     << " " << b.hi.z);
         for (int k = 0; k < 3; ++k) {
             CHECK(b.lo[k] <= lo[k] + 0.01 * size);
             CHECK(b.hi[k] >= hi[k] - 0.01 * size);

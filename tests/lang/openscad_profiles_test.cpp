@@ -7,10 +7,10 @@
 #include "lang/openscad_csg.h"
 #include "openscad_test_util.h"
 
-#include "csg/profile.h"
-#include "csg/span.h"
-#include "csg/tape.h"
+#include "csg/profiles/profile.h"
+#include "csg/tape/tape.h"
 #include "csg/trace_context.h"
+#include "csg/tree/span.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -74,10 +74,10 @@ TEST_CASE("openscad/square, centred or not") {
 
 TEST_CASE("openscad/polygon paths fill by the even-odd rule") {
     SECTION("an outline and a hole") {
-        const Read r = readCsg(extrude(
-            "height = 1",
-            "polygon(points = [[0, 0], [10, 0], [10, 10], [0, 10], [3, 3], [7, 3], [7, 7], "
-            "[3, 7]], paths = [[0, 1, 2, 3], [4, 5, 6, 7]], convexity = 1);"));
+        const Read r = readCsg(
+            extrude("height = 1",
+                    "polygon(points = [[0, 0], [10, 0], [10, 10], [0, 10], [3, 3], [7, 3], [7, 7], "
+                    "[3, 7]], paths = [[0, 1, 2, 3], [4, 5, 6, 7]], convexity = 1);"));
         requireEnds(spansOf(r, {-10, 0.5, -5}, {1, 0, 0}), {10, 13, 17, 20});
         requireEnds(spansOf(r, {-10, 0.5, -1}, {1, 0, 0}), {10, 20});
     }
@@ -90,7 +90,8 @@ TEST_CASE("openscad/polygon paths fill by the even-odd rule") {
         requireEnds(spansOf(r, {-10, 0.5, -3}, {1, 0, 0}), {10, 12, 14, 16});
     }
     SECTION("no paths: the points in order") {
-        const Read r = readCsg(extrude("height = 1", "polygon(points = [[0, 0], [4, 0], [0, 4]]);"));
+        const Read r =
+            readCsg(extrude("height = 1", "polygon(points = [[0, 0], [4, 0], [0, 4]]);"));
         // At OpenSCAD y = 1 the triangle spans x in [0, 3].
         requireEnds(spansOf(r, {-10, 0.5, -1}, {1, 0, 0}), {10, 13});
     }
@@ -152,7 +153,8 @@ TEST_CASE("openscad/rotate_extrude of a translated circle is a torus") {
         requireEnds(spansOf(across, {-10, 0.5, 0}, {1, 0, 0}), {8, 12});
         bool warned = false;
         for (const Diagnostic& d : across.sink.diagnostics())
-            warned |= d.severity == Severity::Warning && d.message.find("x < 0") != std::string::npos;
+            warned |=
+                d.severity == Severity::Warning && d.message.find("x < 0") != std::string::npos;
         CHECK(warned);
     }
 }
@@ -183,7 +185,8 @@ TEST_CASE("openscad/2-D multmatrix: scale, rotation, mirror") {
             "height = 1",
             "multmatrix([[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) circle(r = 1);"));
         // At OpenSCAD y = 0.5: x = ±2·√0.75.
-        requireEnds(spansOf(r, {-10, 0.5, -0.5}, {1, 0, 0}), {10 - std::sqrt(3.0), 10 + std::sqrt(3.0)});
+        requireEnds(spansOf(r, {-10, 0.5, -0.5}, {1, 0, 0}),
+                    {10 - std::sqrt(3.0), 10 + std::sqrt(3.0)});
     }
     SECTION("a centred square turned by 45° is a diamond") {
         const double c = std::sqrt(0.5);
@@ -195,18 +198,18 @@ TEST_CASE("openscad/2-D multmatrix: scale, rotation, mirror") {
         requireEnds(spansOf(r, {-10, 0.5, 0}, {1, 0, 0}), {10 - h, 10 + h});
     }
     SECTION("a mirror in x") {
-        const Read r = readCsg(extrude(
-            "height = 1",
-            "multmatrix([[-1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
-            "square(size = [2, 1]);"));
+        const Read r =
+            readCsg(extrude("height = 1",
+                            "multmatrix([[-1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+                            "square(size = [2, 1]);"));
         requireEnds(spansOf(r, {-10, 0.5, -0.5}, {1, 0, 0}), {8, 10});
     }
     SECTION("2-D Booleans") {
-        const Read r = readCsg(extrude(
-            "height = 1", "difference() { square(4, center = true); circle(r = 1); }"));
+        const Read r = readCsg(
+            extrude("height = 1", "difference() { square(4, center = true); circle(r = 1); }"));
         requireEnds(spansOf(r, {-10, 0.5, 0}, {1, 0, 0}), {8, 9, 11, 12});
-        const Read i = readCsg(extrude(
-            "height = 1", "intersection() { square(4, center = true); circle(r = 3); }"));
+        const Read i = readCsg(
+            extrude("height = 1", "intersection() { square(4, center = true); circle(r = 3); }"));
         requireEnds(spansOf(i, {-10, 0.5, 0}, {1, 0, 0}), {8, 12});
     }
 }
@@ -223,7 +226,8 @@ TEST_CASE("openscad/text is the font's exact outline at OpenSCAD's size") {
     // to its own rounding (within 1e-4 of the size): linear_extrude(1) text("H", size = 10) spans x
     // 1.36299 … 9.08009 and y 0 … 10.1248 in its STL. kerf takes the font's units exactly:
     // 201, 1339 and 1493 of 2048 per em, the em being size / 0.72. OpenSCAD's y is kerf's −z.
-    const Read r = readCsg(extrude("height = 1", "text(text = \"H\", size = 10, font = \"DejaVu Sans\");"));
+    const Read r =
+        readCsg(extrude("height = 1", "text(text = \"H\", size = 10, font = \"DejaVu Sans\");"));
     const double em = 10 / 0.72 / 2048;
     const SpanList across = spansOf(r, {-10, 0.5, -2}, {1, 0, 0});
     REQUIRE(across.size() == 2);  // the two stems
@@ -252,21 +256,25 @@ TEST_CASE("openscad/offset(r) rounds a square exactly") {
 
 TEST_CASE("openscad/2-D errors") {
     requireError(readCsg("circle(r = 1);\n"), 1, 1, "2-D shape outside linear_extrude");
-    requireError(readCsg(extrude("height = 1", "cube(1);")), 2, 3, "cube is a solid under an extrusion");
-    requireError(readCsg(extrude("height = 1", "offset(delta = 1, chamfer = false) square(1);")), 2, 3,
-                 "offset(delta) is not supported");
+    requireError(readCsg(extrude("height = 1", "cube(1);")), 2, 3,
+                 "cube is a solid under an extrusion");
+    requireError(readCsg(extrude("height = 1", "offset(delta = 1, chamfer = false) square(1);")), 2,
+                 3, "offset(delta) is not supported");
     requireError(readCsg(extrude("height = 1", "text(text = \"A\", direction = \"ttb\");")), 2, 3,
                  "text direction 'ttb' is not supported");
 
-    requireError(readCsg(extrude("height = 1", "polygon(points = [[0, 0], [1, 0], [0, 1]], paths = [[0, 1, 3]]);")),
-                 2, 55, "indices into points");
+    requireError(
+        readCsg(extrude("height = 1",
+                        "polygon(points = [[0, 0], [1, 0], [0, 1]], paths = [[0, 1, 3]]);")),
+        2, 55, "indices into points");
     requireError(readCsg(extrude("height = 1",
                                  "multmatrix([[1, 0, 0, 0], [0, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, "
                                  "1]]) square(1);")),
                  2, 14, "singular");
 }
 
-TEST_CASE("openscad/profileTransform: exact when rigid, a lower bound with the same sign when not") {
+TEST_CASE(
+    "openscad/profileTransform: exact when rigid, a lower bound with the same sign when not") {
     // Oracle: the image of the square [0, 1]² under each map is a rectangle whose exact
     // distance profileRect gives (the rotation's in the turned frame).
     auto field = [](const Profile& p) {
@@ -275,7 +283,7 @@ TEST_CASE("openscad/profileTransform: exact when rigid, a lower bound with the s
     };
     const Profile unit = profileRect(Vec2(0), Vec2(1));
     const double c = std::cos(0.5), s = std::sin(0.5);
-    const double turn[6] = {c, -s, 3, s, c, -1};     // rotate by 0.5 rad, then move
+    const double turn[6] = {c, -s, 3, s, c, -1};      // rotate by 0.5 rad, then move
     const double stretch[6] = {-4, 0, 1, 0, 0.5, 2};  // mirror and scale by 4 in x, 0.5 in y
     const auto turned = field(profileTransform(unit, turn));
     const auto stretched = field(profileTransform(unit, stretch));

@@ -2,8 +2,8 @@
 /// @brief What the .csg reader's tests share: reading a text, and the spans of its one object.
 #pragma once
 
-#include "csg/span.h"
 #include "csg/trace_context.h"
+#include "csg/tree/span.h"
 #include "lang/openscad_csg.h"
 
 #include <catch2/catch.hpp>

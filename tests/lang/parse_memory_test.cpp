@@ -12,8 +12,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <optional>
 #include <new>
+#include <optional>
 #include <string>
 
 #include <malloc.h>
@@ -31,14 +31,17 @@ namespace {
 std::atomic<long long> gLive{0};
 std::atomic<long long> gPeak{0};
 
-long long chunkBytes(void* p) { return static_cast<long long>(malloc_usable_size(p) + sizeof(size_t)); }
+long long chunkBytes(void* p) {
+    return static_cast<long long>(malloc_usable_size(p) + sizeof(size_t));
+}
 
 void* counted(size_t n) {
     void* p = std::malloc(n ? n : 1);
     if (!p) throw std::bad_alloc();
     const long long live = gLive += chunkBytes(p);
     long long peak = gPeak.load();
-    while (live > peak && !gPeak.compare_exchange_weak(peak, live)) {}
+    while (live > peak && !gPeak.compare_exchange_weak(peak, live)) {
+    }
     return p;
 }
 
@@ -71,7 +74,8 @@ std::string statement(int i, double& radius) {
     radius = 0.5 + (i % 7) / 10.0;
     char buf[320];
     std::snprintf(buf, sizeof buf,
-                  "solid s%d = difference { box { min <%.2f, %.2f, %.2f> max <%.2f, %.2f, %.2f> } sphere { center "
+                  "solid s%d = difference { box { min <%.2f, %.2f, %.2f> max <%.2f, %.2f, %.2f> } "
+                  "sphere { center "
                   "<%.1f, %.1f, %.1f> radius %.1f } } translate <%.1f, %.1f, %.1f> material m;\n",
                   i, a, b, c, a + 1.5, b + 1.5, c + 1.5, a, b + 1.5, c, radius, (i % 1000) * 0.5,
                   (i / 1000 % 1000) * 0.5, (i / 1000000) * 0.5);
@@ -84,7 +88,7 @@ TEST_CASE("parse memory: at most 10 bytes of heap per byte of model") {
 #if KERF_COUNTS_ALLOCATIONS
     const int count = 20000;  // about 3.4 MB
 #else
-    const int count = 2000;   // the parse is still checked, only smaller
+    const int count = 2000;  // the parse is still checked, only smaller
 #endif
     std::string text = "material m { color <0.8, 0.6, 0.4> }\n";
     std::vector<double> radii(count);
@@ -118,12 +122,15 @@ TEST_CASE("parse memory: at most 10 bytes of heap per byte of model") {
     CHECK(program.statements.back().name == "s" + std::to_string(count - 1));
 
 #if KERF_COUNTS_ALLOCATIONS
-    INFO("peak heap of the parse: " << perByte << " bytes per byte of a " << bytes << "-byte model");
+    INFO("peak heap of the parse: " << perByte << " bytes per byte of a " << bytes
+                                    << "-byte model");
     CHECK(perByte <= 10.0);
     WARN("parse memory: " << perByte << " bytes of heap per byte of model");
 #else
-    WARN("allocation count skipped under AddressSanitizer (its allocator replaces ours); parse checked on "
-         << bytes << " bytes");
+    WARN(
+        "allocation count skipped under AddressSanitizer (its allocator replaces ours); parse "
+        "checked on "
+        << bytes << " bytes");
 #endif
 }
 
@@ -160,7 +167,8 @@ TEST_CASE("parse memory: a model file named by KERF_PARSE_MEMORY_MODEL", "[.][pa
     REQUIRE(scene.has_value());
 #if KERF_COUNTS_ALLOCATIONS
     const double compilePeak = static_cast<double>(gPeak.load() - before) / size;
-    WARN(path << ": " << size << " bytes, " << program.statements.size() << " statements; peak heap per byte of "
+    WARN(path << ": " << size << " bytes, " << program.statements.size()
+              << " statements; peak heap per byte of "
               << "model: parse " << parsePeak << ", parse + lowering " << compilePeak);
     CHECK(parsePeak <= 10.0);
 #endif

@@ -8,7 +8,8 @@ using namespace kerf;
 namespace {
 
 Program parseText(const std::string& text, DiagnosticSink& sink) {
-    const SourceText source{std::make_shared<const std::string>("p.kerf"), std::make_shared<const std::string>(text)};
+    const SourceText source{std::make_shared<const std::string>("p.kerf"),
+                            std::make_shared<const std::string>(text)};
     return parse(tokenize(source, sink), sink);
 }
 
@@ -82,7 +83,8 @@ background <0, 0, 0>;
 include "other.kerf";
 object sphere {} matrix [1 0 0 -1  0 1 0 0  0 0 1 0];
 object sphere {} matrix [1, 0, 0, -1, 0, 1, 0, 0, 0, 0, 1, 0];
-)", sink);
+)",
+                                sink);
     INFO(sink.format());
     REQUIRE(sink.errorCount() == 0);
     REQUIRE(p.statements.size() == 10);
@@ -132,7 +134,8 @@ object sphere {} matrix [1, 0, 0, -1, 0, 1, 0, 0, 0, 0, 1, 0];
 
 TEST_CASE("parse: recovery reports several errors") {
     DiagnosticSink sink;
-    const Program p = parseText("let a = ;\nlet b = 2;\nobject sphere { radius * } ;\nlet c = (1;\nlet d = 4;", sink);
+    const Program p = parseText(
+        "let a = ;\nlet b = 2;\nobject sphere { radius * } ;\nlet c = (1;\nlet d = 4;", sink);
     REQUIRE(sink.errorCount() == 3);
     CHECK(sink.diagnostics()[0].loc.line == 1);
     CHECK(sink.diagnostics()[1].loc.line == 3);

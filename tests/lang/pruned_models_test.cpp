@@ -3,12 +3,12 @@
 // agrees with the original at random points and on random rays, and the test prints how much
 // pruning removes: tape instructions of the implicit leaves and primitives, before and after,
 // and (libfive's measure) the instructions of the whole object compiled into one tape
-// (csg/tree_tape.h) before and after Tape::simplified over the cell.
+// (csg/tape/tree_tape.h) before and after Tape::simplified over the cell.
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <string>
 
-#include "csg/tree_tape.h"
+#include "csg/tape/tree_tape.h"
 #include "lang/compile.h"
 #include "util/prune_checks.h"
 

@@ -36,13 +36,15 @@ TEST_CASE("sections: a model without one has none") {
 }
 
 TEST_CASE("sections: bad planes are errors at their place") {
-    requireOneError("section { point <0, 0, 0> normal <0, 0, 0> }\n", 1, 34, "section normal must not be zero");
+    requireOneError("section { point <0, 0, 0> normal <0, 0, 0> }\n", 1, 34,
+                    "section normal must not be zero");
     requireOneError("section { point <0, 0, 0> normal <0, 0, 1> color <1, -1, 0> }\n", 1, 50,
                     "section color must not have negative components");
     requireOneError("section { point <0, 0, 0> }\n", 1, 1, "section needs the property 'normal'");
     requireOneError("section { normal <0, 0, 1> }\n", 1, 1, "section needs the property 'point'");
     requireOneError("section { point <0, 0, 0> normal 1 }\n", 1, 34, "normal");
-    requireOneError("section { point <0, 0, 0> normal <0, 0, 1> offset 2 }\n", 1, 44, "unknown property 'offset'");
+    requireOneError("section { point <0, 0, 0> normal <0, 0, 1> offset 2 }\n", 1, 44,
+                    "unknown property 'offset'");
     requireOneError("let section = 1;\n", 1, 5, "reserved word");
 }
 
@@ -52,6 +54,7 @@ TEST_CASE("sections: more than the limit is one error") {
     INFO(c.sink.format());
     REQUIRE_FALSE(c.scene.has_value());
     REQUIRE(c.sink.errorCount() == 1);
-    CHECK_THAT(c.sink.diagnostics().front().message,
-               Catch::Matchers::Contains("more than " + std::to_string(kMaxSections) + " section planes"));
+    CHECK_THAT(
+        c.sink.diagnostics().front().message,
+        Catch::Matchers::Contains("more than " + std::to_string(kMaxSections) + " section planes"));
 }

@@ -10,7 +10,8 @@ namespace {
 
 void requireSamePlaces(const std::string& text) {
     DiagnosticSink sink;
-    const SourceText source{std::make_shared<const std::string>("p.kerf"), std::make_shared<const std::string>(text)};
+    const SourceText source{std::make_shared<const std::string>("p.kerf"),
+                            std::make_shared<const std::string>(text)};
     const std::vector<Token> tokens = tokenize(source, sink);
     for (const Token& t : tokens) {
         const SourceLoc at = sink.locate(t.pos);
@@ -25,7 +26,9 @@ void requireSamePlaces(const std::string& text) {
 
 TEST_CASE("SourcePos: locate gives the lexer's line and column") {
     SECTION("tabs, CRLF, comments, a byte order mark, UTF-8 in comments") {
-        requireSamePlaces("\xEF\xBB\xBF" "let a = 1;\r\n\tlet b =\t<1, 2, 3>; // caf\xC3\xA9\n/* x\n y */ let c = a;");
+        requireSamePlaces(
+            "\xEF\xBB\xBF"
+            "let a = 1;\r\n\tlet b =\t<1, 2, 3>; // caf\xC3\xA9\n/* x\n y */ let c = a;");
     }
     SECTION("the end of a file without a final newline, and of one with blank lines after") {
         requireSamePlaces("let a = 1");
@@ -39,7 +42,8 @@ TEST_CASE("SourcePos: locate gives the lexer's line and column") {
 
 TEST_CASE("SourcePos: positions of two files are told apart") {
     DiagnosticSink sink;
-    const SourceText a{std::make_shared<const std::string>("a.kerf"), std::make_shared<const std::string>("let a = 1;")};
+    const SourceText a{std::make_shared<const std::string>("a.kerf"),
+                       std::make_shared<const std::string>("let a = 1;")};
     const SourceText b{std::make_shared<const std::string>("b.kerf"),
                        std::make_shared<const std::string>("\n\nlet b = 2;")};
     const Token ta = tokenize(a, sink)[1];

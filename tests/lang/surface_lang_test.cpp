@@ -2,7 +2,7 @@
 // interior modifier's place under the material, and the errors where a solid is needed.
 #include "lang_test_util.h"
 
-#include "csg/surfaces.h"
+#include "csg/primitives/surfaces.h"
 
 using namespace kerf;
 using namespace kerf::test;
@@ -42,7 +42,8 @@ TEST_CASE("surfaces: each keyword builds its surface node") {
         "object cylinder { from <0, 0, 0> to <0, 1, 0> radius 1 open true };\n"
         "object cone { from <0, 0, 0> to <0, 1, 0> radius1 1 radius2 0.5 open true };\n"
         "object surface sphere { radius 1 };\n"
-        "object clip disc { radius 1 } by box { min <-1, -1, -1> max <0, 1, 1> } translate <0, 2, 0>;\n"
+        "object clip disc { radius 1 } by box { min <-1, -1, -1> max <0, 1, 1> } translate <0, 2, "
+        "0>;\n"
         "object cylinder { from <0, 0, 0> to <0, 1, 0> radius 1 open false };\n");
     REQUIRE(s.objects.size() == 7);
     CHECK(kinds(s.objects[0]) == "disc");
@@ -94,20 +95,30 @@ TEST_CASE("surfaces: interior gives the back its material, before or after mater
 }
 
 TEST_CASE("surfaces: a surface where a solid is needed is an error at the surface") {
-    requireOneError("object difference {\n  box { min <-1, -1, -1> max <1, 1, 1> }\n  disc { radius 2 }\n};", 3, 3,
-                    "this disc is a surface, not a solid: it has no inside and cannot be an operand of difference");
-    requireOneError("solid s = triangle { a <0, 0, 0> b <1, 0, 0> c <0, 1, 0> };\nobject union { s sphere { } };",
-                    1, 11, "is a surface, not a solid");
-    requireOneError("object intersection { sphere { } cylinder { from <0, 0, 0> to <0, 1, 0> open true } };", 1, 34,
-                    "open cylinder or cone is a surface");
-    requireOneError("object surface disc { radius 1 };", 1, 16, "cannot be the operand of 'surface'");
-    requireOneError("object clip disc { } by surface sphere { };", 1, 25, "cannot be what 'clip' cuts by");
+    requireOneError(
+        "object difference {\n  box { min <-1, -1, -1> max <1, 1, 1> }\n  disc { radius 2 }\n};", 3,
+        3,
+        "this disc is a surface, not a solid: it has no inside and cannot be an operand of "
+        "difference");
+    requireOneError(
+        "solid s = triangle { a <0, 0, 0> b <1, 0, 0> c <0, 1, 0> };\nobject union { s sphere { } "
+        "};",
+        1, 11, "is a surface, not a solid");
+    requireOneError(
+        "object intersection { sphere { } cylinder { from <0, 0, 0> to <0, 1, 0> open true } };", 1,
+        34, "open cylinder or cone is a surface");
+    requireOneError("object surface disc { radius 1 };", 1, 16,
+                    "cannot be the operand of 'surface'");
+    requireOneError("object clip disc { } by surface sphere { };", 1, 25,
+                    "cannot be what 'clip' cuts by");
     requireOneError("object clip sphere { } by box { min <0, 0, 0> max <1, 1, 1> };", 1, 13,
                     "clip cuts a surface, but this is a solid");
     // A section plane cuts solids only; one that crosses a surface is refused as for open meshes.
-    requireOneError("section { point <0, 0, 0> normal <0, 0, 1> }\nobject disc { normal <0, 0, 1> };", 2, 8,
-                    "cannot be cut by the section plane");
-    CHECK(compileText("section { point <0, 0, 5> normal <0, 0, 1> }\nobject disc { };").scene.has_value());
+    requireOneError(
+        "section { point <0, 0, 0> normal <0, 0, 1> }\nobject disc { normal <0, 0, 1> };", 2, 8,
+        "cannot be cut by the section plane");
+    CHECK(compileText("section { point <0, 0, 5> normal <0, 0, 1> }\nobject disc { };")
+              .scene.has_value());
     // The message names the use and says what to write instead.
     const Compiled c = compileText("object union {\n  disc { }\n  sphere { }\n};");
     REQUIRE(c.sink.errorCount() == 1);
@@ -118,9 +129,13 @@ TEST_CASE("surfaces: a surface where a solid is needed is an error at the surfac
 
 TEST_CASE("surfaces: bad surface values are errors at the value") {
     requireOneError("object disc { radius 0 };", 1, 22, "disc radius must be positive");
-    requireOneError("object disc { radius 1 inner 1 };", 1, 30, "disc inner radius must be at least 0 and less than");
-    requireOneError("object disc { normal <0, 0, 0> };", 1, 22, "disc normal must be a finite, non-zero vector");
-    requireOneError("object triangle { a <0, 0, 0> b <1, 1, 1> c <2, 2, 2> };", 1, 8, "triangle has no area");
+    requireOneError("object disc { radius 1 inner 1 };", 1, 30,
+                    "disc inner radius must be at least 0 and less than");
+    requireOneError("object disc { normal <0, 0, 0> };", 1, 22,
+                    "disc normal must be a finite, non-zero vector");
+    requireOneError("object triangle { a <0, 0, 0> b <1, 1, 1> c <2, 2, 2> };", 1, 8,
+                    "triangle has no area");
     requireOneError("object clip disc { } box { };", 1, 22, "expected 'by SOLID'");
-    requireOneError("object disc { } interior 3;", 1, 26, "expected a material name after 'interior'");
+    requireOneError("object disc { } interior 3;", 1, 26,
+                    "expected a material name after 'interior'");
 }

@@ -13,7 +13,6 @@ using kerf::test::compileText;
 using kerf::test::firstObject;
 using kerf::test::requireOneError;
 
-
 TEST_CASE("text: an extruded text is inside exactly where its outline is") {
     const NodePtr n = firstObject(
         "object extrude { profile text { string \"kerf é\" font \"DejaVu Sans\" size 2 halign "

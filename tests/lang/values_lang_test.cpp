@@ -45,8 +45,10 @@ double referenceRandom(uint64_t seed, uint64_t i) {
 
 TEST_CASE("values: booleans, comparisons and short-circuit logic") {
     CHECK(value("true") == "true");
-    CHECK(value("1 < 2, 2 <= 2, 3 > 4, 4 >= 4, 1 == 1, 1 != 1") == "true, true, false, true, true, false");
-    CHECK(value("<1, 2, 3> == <1, 2, 3>, \"a\" < \"b\", [1, [2]] == [1, [2]]") == "true, true, true");
+    CHECK(value("1 < 2, 2 <= 2, 3 > 4, 4 >= 4, 1 == 1, 1 != 1") ==
+          "true, true, false, true, true, false");
+    CHECK(value("<1, 2, 3> == <1, 2, 3>, \"a\" < \"b\", [1, [2]] == [1, [2]]") ==
+          "true, true, true");
     CHECK(value("true and false, true or false, not true") == "false, true, false");
     // Short circuit: the right side would be an error (an index out of range) if evaluated.
     CHECK(value("false and [1][5] == 1, true or [1][5] == 1") == "false, true");
@@ -58,7 +60,8 @@ TEST_CASE("values: booleans, comparisons and short-circuit logic") {
 
 TEST_CASE("values: strings, lists, indexing and members") {
     CHECK(value("\"ab\" + \"cd\"") == "abcd");
-    CHECK(value("[1, \"a\", true, <1, 2, 3>, [2, [3]]]") == "[1, \"a\", true, <1, 2, 3>, [2, [3]]]");
+    CHECK(value("[1, \"a\", true, <1, 2, 3>, [2, [3]]]") ==
+          "[1, \"a\", true, <1, 2, 3>, [2, [3]]]");
     CHECK(value("[1, 2] + [3]") == "[1, 2, 3]");
     CHECK(value("[10, 20, 30][2], <4, 5, 6>[1], \"xyz\"[0]") == "30, 5, x");
     CHECK(value("[[1, 2], [3, 4]][1][0]") == "3");
@@ -100,18 +103,22 @@ TEST_CASE("values: vector and angle functions") {
 }
 
 TEST_CASE("values: random(seed, i) is splitmix64 mapped to 53 bits, the same everywhere") {
-    const auto c = compileText("let r = [for i in 0 .. 9999: random(42, i)];\n"
-                               "echo min(r[0], r[1]) >= 0, max(r[0], r[9999]) < 1, random(42, 7) == random(42, 7);");
+    const auto c = compileText(
+        "let r = [for i in 0 .. 9999: random(42, i)];\n"
+        "echo min(r[0], r[1]) >= 0, max(r[0], r[9999]) < 1, random(42, 7) == random(42, 7);");
     INFO(c.sink.format());
     REQUIRE(c.scene);
     CHECK(c.sink.diagnostics().back().message == "true, true, true");
-    const auto bits = echoes("let u = random(1, 2); echo u * 9007199254740992 == floor(u * 9007199254740992);");
+    const auto bits =
+        echoes("let u = random(1, 2); echo u * 9007199254740992 == floor(u * 9007199254740992);");
     CHECK(bits[0] == "true");  // a multiple of 2^-53
     // The stream's mean over 10,000 draws is 1/2 within 4 standard deviations (0.0029 each).
-    const auto mean = echoes("let r = [for i in 0 .. 9999: random(7, i)]; let s = [for v in r if v < 0.5: v];"
-                             "echo abs(len(s) / 10000 - 0.5) < 0.0116;");
+    const auto mean = echoes(
+        "let r = [for i in 0 .. 9999: random(7, i)]; let s = [for v in r if v < 0.5: v];"
+        "echo abs(len(s) / 10000 - 0.5) < 0.0116;");
     CHECK(mean[0] == "true");
-    for (uint64_t i : {0ull, 1ull, 1000ull, 123456789ull}) {  // bit for bit: 17 digits round-trip a double
+    for (uint64_t i :
+         {0ull, 1ull, 1000ull, 123456789ull}) {  // bit for bit: 17 digits round-trip a double
         char literal[64];
         std::snprintf(literal, sizeof literal, "%.17g", referenceRandom(5, i));
         const auto one = echoes("echo random(5, " + std::to_string(i) + ") == " + literal + ";");
@@ -122,16 +129,21 @@ TEST_CASE("values: random(seed, i) is splitmix64 mapped to 53 bits, the same eve
 TEST_CASE("values: errors name the types involved") {
     requireOneError("let a = 1 < \"b\";", 1, 11, "cannot compare a number and a string with '<'");
     requireOneError("let a = 1 and true;", 1, 9, "'and' expects booleans, got a number");
-    requireOneError("let a = 1 ? 2 : 3;", 1, 9, "the condition of '?' must be a boolean, got a number");
-    requireOneError("let a = [1, 2][2];", 1, 16, "index 2 is out of range for a list of 2 elements");
+    requireOneError("let a = 1 ? 2 : 3;", 1, 9,
+                    "the condition of '?' must be a boolean, got a number");
+    requireOneError("let a = [1, 2][2];", 1, 16,
+                    "index 2 is out of range for a list of 2 elements");
     requireOneError("let a = 3[0];", 1, 10, "cannot index a number");
     requireOneError("let a = (1).x;", 1, 13, "'.x' needs a vector, got a number");
     requireOneError("let a = \"s\" * 2;", 1, 13, "cannot apply '*' to a string and a number");
     requireOneError("let a = [1] + 2;", 1, 13, "cannot apply '+' to a list and a number");
-    requireOneError("let a = len(3);", 1, 13, "'len' expects a list, a string or a vector, got a number");
-    requireOneError("let a = 0 .. 1 step 0;", 1, 21, "the step of a range must be a finite number other than 0");
+    requireOneError("let a = len(3);", 1, 13,
+                    "'len' expects a list, a string or a vector, got a number");
+    requireOneError("let a = 0 .. 1 step 0;", 1, 21,
+                    "the step of a range must be a finite number other than 0");
     requireOneError("let a = random(1.5, 0);", 1, 16, "random's seed must be a whole number");
-    requireOneError("object sphere { radius [1] };", 1, 24, "property 'radius' of sphere expects a number, got a list");
+    requireOneError("object sphere { radius [1] };", 1, 24,
+                    "property 'radius' of sphere expects a number, got a list");
     requireOneError("let a = 1 < 2 < 3;", 1, 15, "comparisons do not chain");
 }
 

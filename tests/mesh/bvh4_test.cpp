@@ -24,10 +24,10 @@ std::vector<AimedRay> aimedRays(const TriangleMesh& m, std::mt19937_64& rng, int
         const Vec3 p = m.positions[t[i % 3]], q = m.positions[t[(i + 1) % 3]];
         Vec3 target;
         switch (i % 4) {
-        case 0: target = p; break;                     // a vertex
-        case 1: target = 0.5 * (p + q); break;         // an edge's midpoint (exact)
-        case 2: target = p + 0.25 * (q - p); break;    // a point along an edge
-        default: target = Vec3(unit(rng), unit(rng), unit(rng));  // anywhere
+            case 0: target = p; break;                                // a vertex
+            case 1: target = 0.5 * (p + q); break;                    // an edge's midpoint (exact)
+            case 2: target = p + 0.25 * (q - p); break;               // a point along an edge
+            default: target = Vec3(unit(rng), unit(rng), unit(rng));  // anywhere
         }
         AimedRay r{{2.5 * Vec3(unit(rng), unit(rng), unit(rng)), {}}, 0.0, kInf};
         r.ray.dir = target - r.ray.origin;

@@ -71,8 +71,8 @@ TEST_CASE("bvh_split/the pieces' boxes cover their triangle") {
 
 TEST_CASE("bvh_split/split walks equal brute force and report each triangle once") {
     std::mt19937_64 rng(22);
-    const std::vector<std::pair<const char*, TriangleMesh>> meshes{
-        {"needles", needles(1500, rng)}, {"fan", fan(3000)}};
+    const std::vector<std::pair<const char*, TriangleMesh>> meshes{{"needles", needles(1500, rng)},
+                                                                   {"fan", fan(3000)}};
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     for (const auto& [name, m] : meshes)
         for (bool useSimd : {false, true}) {

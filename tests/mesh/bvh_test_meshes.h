@@ -60,8 +60,8 @@ inline TriangleMesh jitteredGrid(int n, std::mt19937_64& rng) {
     for (int j = 0; j <= n; ++j)
         for (int i = 0; i <= n; ++i) {
             const bool border = i == 0 || j == 0 || i == n || j == n;
-            m.positions.push_back({i + (border ? 0.0 : jitter(rng)),
-                                   j + (border ? 0.0 : jitter(rng)), 0.0});
+            m.positions.push_back(
+                {i + (border ? 0.0 : jitter(rng)), j + (border ? 0.0 : jitter(rng)), 0.0});
         }
     auto v = [n](int i, int j) { return uint32_t(j * (n + 1) + i); };
     for (int j = 0; j < n; ++j)
@@ -128,10 +128,10 @@ inline double tOf(const TriangleMesh& m, uint32_t tri, const Ray& ray) {
 }
 
 inline void checkAgainstBruteForce(const TriangleMesh& m, const TriangleBvh& bvh, const Ray& ray,
-                            double tmin, double tmax) {
+                                   double tmin, double tmax) {
     INFO("ray o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=("
-                   << ray.dir.x << ", " << ray.dir.y << ", " << ray.dir.z << ") range ("
-                   << tmin << ", " << tmax << ")");
+                   << ray.dir.x << ", " << ray.dir.y << ", " << ray.dir.z << ") range (" << tmin
+                   << ", " << tmax << ")");
     const Brute b = bruteForce(m, ray, tmin, tmax);
     BvhStats stats;
     TriangleHit hit;

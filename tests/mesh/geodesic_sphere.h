@@ -20,9 +20,9 @@ inline TriangleMesh geodesicSphere(const Vec3& center, double radius, int levels
                            {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
     for (Vec3& p : v) p = glm::normalize(p);
     std::vector<std::array<uint32_t, 3>> f = {
-        {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+        {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
         {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-        {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+        {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
     for (int l = 0; l < levels; ++l) {
         std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
         auto middle = [&](uint32_t a, uint32_t b) {
@@ -34,7 +34,8 @@ inline TriangleMesh geodesicSphere(const Vec3& center, double radius, int levels
         };
         std::vector<std::array<uint32_t, 3>> next;
         for (const auto& t : f) {
-            const uint32_t ab = middle(t[0], t[1]), bc = middle(t[1], t[2]), ca = middle(t[2], t[0]);
+            const uint32_t ab = middle(t[0], t[1]), bc = middle(t[1], t[2]),
+                           ca = middle(t[2], t[0]);
             next.push_back({t[0], ab, ca});
             next.push_back({t[1], bc, ab});
             next.push_back({t[2], ca, bc});
@@ -54,8 +55,8 @@ inline TriangleMesh geodesicSphere(const Vec3& center, double radius, int levels
 inline double innerRadius(const TriangleMesh& m, const Vec3& center) {
     double r = kInf;
     for (const auto& t : m.triangles) {
-        const Vec3 q = nearestPointOnTriangle(center, m.positions[t[0]], m.positions[t[1]],
-                                              m.positions[t[2]]);
+        const Vec3 q =
+            nearestPointOnTriangle(center, m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]);
         r = std::min(r, glm::length(q - center));
     }
     return r;

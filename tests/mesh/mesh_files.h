@@ -41,8 +41,10 @@ inline std::vector<std::array<uint32_t, 3>> octahedronTriangles() {
         for (uint32_t sy = 0; sy < 2; ++sy)
             for (uint32_t sz = 0; sz < 2; ++sz) {
                 const uint32_t x = sx, y = 2 + sy, z = 4 + sz;
-                if ((sx + sy + sz) % 2 == 0) t.push_back({x, y, z});
-                else t.push_back({x, z, y});
+                if ((sx + sy + sz) % 2 == 0)
+                    t.push_back({x, y, z});
+                else
+                    t.push_back({x, z, y});
             }
     return t;
 }
@@ -95,7 +97,8 @@ inline std::string plyAsciiText() {
     std::ostringstream s;
     s << plyHeader("ascii", 6, 8);
     for (const Vec3& p : octahedronVertices()) s << p.x << ' ' << p.y << ' ' << p.z << '\n';
-    for (const auto& t : octahedronTriangles()) s << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    for (const auto& t : octahedronTriangles())
+        s << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
     return s.str();
 }
 
@@ -128,7 +131,8 @@ inline std::string stlAsciiText() {
     for (const auto& t : octahedronTriangles()) {
         const Vec3 n = faceNormal(v, t);
         s << "  facet normal " << n.x << ' ' << n.y << ' ' << n.z << "\n    outer loop\n";
-        for (uint32_t i : t) s << "      vertex " << v[i].x << ' ' << v[i].y << ' ' << v[i].z << '\n';
+        for (uint32_t i : t)
+            s << "      vertex " << v[i].x << ' ' << v[i].y << ' ' << v[i].z << '\n';
         s << "    endloop\n  endfacet\n";
     }
     s << "endsolid octahedron\n";
@@ -200,8 +204,8 @@ inline std::string gltfJson(const std::string& uri, bool mirrored) {
     std::ostringstream s;
     s << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],)"
       << R"("nodes": [{"mesh": 0, )" << (mirrored ? R"("scale": [-1, 1, 1], )" : "")
-      << R"("translation": [)" << kOctaCenter.x << ", " << kOctaCenter.y << ", "
-      << kOctaCenter.z << "]}],"
+      << R"("translation": [)" << kOctaCenter.x << ", " << kOctaCenter.y << ", " << kOctaCenter.z
+      << "]}],"
       << R"("meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4}]}],)"
       << R"("accessors": [{"bufferView": 0, "componentType": 5126, "count": 6, "type": "VEC3", )"
       << R"("min": [)" << -r << ", " << -r << ", " << -r << R"(], "max": [)" << r << ", " << r

@@ -1,8 +1,8 @@
 // loadMesh: every format gives the same octahedron (as a set of oriented triangles), and
 // every malformed file is a MeshError naming the file.
+#include "mesh/mesh_loader.h"
 #include "mesh/half_edges.h"
 #include "mesh/mesh_files.h"
-#include "mesh/mesh_loader.h"
 
 #include "app/kerf_runner.h"
 
@@ -36,9 +36,12 @@ TEST_CASE("loadMesh::every format gives the same solid octahedron") {
     TempDir dir;
     const auto expected = canonicalTriangles(octahedronMesh());
     const std::pair<const char*, std::string> files[] = {
-        {"octa.obj", objText()},          {"octa_ascii.ply", plyAsciiText()},
-        {"octa_binary.ply", plyBinaryText()}, {"octa_ascii.stl", stlAsciiText()},
-        {"octa_binary.stl", stlBinaryText()}, {"octa.gltf", gltfText()},
+        {"octa.obj", objText()},
+        {"octa_ascii.ply", plyAsciiText()},
+        {"octa_binary.ply", plyBinaryText()},
+        {"octa_ascii.stl", stlAsciiText()},
+        {"octa_binary.stl", stlBinaryText()},
+        {"octa.gltf", gltfText()},
         {"octa.glb", glbText()},
         // A node that mirrors: its triangles are swapped back to face outward.
         {"octa_mirrored.gltf", gltfText(true)},
@@ -110,7 +113,8 @@ TEST_CASE("loadMesh::malformed files are errors naming the file") {
     SECTION("missing file") { requireMeshError(dir.file("nothing.obj"), "no such file"); }
     SECTION("empty file") { requireMeshError(dir.write("empty.obj", ""), "empty file"); }
     SECTION("a PNG renamed .obj") {
-        static const char kPngStart[] = "\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10\0\0\0\x10\x08\x02\0\0\0";
+        static const char kPngStart[] =
+            "\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10\0\0\0\x10\x08\x02\0\0\0";
         const std::string png(kPngStart, sizeof kPngStart - 1);
         requireMeshError(dir.write("picture.obj", png), "");
     }
@@ -131,7 +135,9 @@ TEST_CASE("loadMesh::malformed files are errors naming the file") {
     }
     SECTION("out-of-range index in PLY") {
         std::string text = plyHeader("ascii", 6, 8);
-        for (const Vec3& p : octahedronVertices()) text += std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+        for (const Vec3& p : octahedronVertices())
+            text +=
+                std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
         for (int i = 0; i < 7; ++i) text += "3 0 2 4\n";
         text += "3 0 2 99\n";
         requireMeshError(dir.write("bad_index.ply", text), "");
@@ -150,8 +156,9 @@ TEST_CASE("loadMesh::malformed files are errors naming the file") {
         requireMeshError(dir.write("inf.ply", text), "non-finite");
     }
     SECTION("a binary PLY header declaring a million vertices it does not hold") {
-        requireMeshError(dir.write("hollow.ply", plyHeader("binary_little_endian", 1000000, 1000000)),
-                         "truncated binary PLY: the data ends after 0 of the 1000000 'vertex' rows");
+        requireMeshError(
+            dir.write("hollow.ply", plyHeader("binary_little_endian", 1000000, 1000000)),
+            "truncated binary PLY: the data ends after 0 of the 1000000 'vertex' rows");
     }
     SECTION("no triangles: points only") {
         requireMeshError(dir.write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\np 1 2 3\n"), "");
@@ -161,9 +168,10 @@ TEST_CASE("loadMesh::malformed files are errors naming the file") {
 TEST_CASE("loadMesh::UVs are kept per vertex") {
     // A unit square whose UV at each corner equals its (x, y): an open sheet with 4 boundary edges.
     TempDir dir;
-    const std::string path = dir.write("sheet.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
-                                                    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
-                                                    "f 1/1 2/2 3/3 4/4\n");
+    const std::string path = dir.write("sheet.obj",
+                                       "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                       "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                                       "f 1/1 2/2 3/3 4/4\n");
     const TriangleMesh mesh = loadMesh(path);
     CHECK(mesh.triangles.size() == 2);
     CHECK(mesh.normals.empty());

@@ -1,9 +1,9 @@
 // A closed mesh as a solid: its spans, first surface, signed distance and interval enclosure
 // against the analytic sphere it approximates (the mesh lies between two concentric spheres,
 // the oracle's bounds), and an open mesh as a two-sided surface.
-#include "csg/solids.h"
-#include "csg/tree_tape.h"
-#include "csg/tape.h"
+#include "csg/tape/tape.h"
+#include "csg/tape/tree_tape.h"
+#include "csg/tree/solids.h"
 #include "mesh/mesh_shape.h"
 #include "tests/mesh/geodesic_sphere.h"
 #include "tests/mesh/mesh_files.h"
@@ -255,8 +255,10 @@ TEST_CASE("meshNode::hard cases: -0 directions, huge and tiny scales, grazing ra
             REQUIRE(spans.size() == 1);
             const Vec3 oc = ray.origin - kCenter * scale;
             const double a = glm::dot(ray.dir, ray.dir), b = glm::dot(oc, ray.dir);
-            const double outer0 = (-b - std::sqrt(b * b - a * (glm::dot(oc, oc) - std::pow(kRadius * scale, 2)))) / a;
-            const double inner0 = (-b - std::sqrt(b * b - a * (glm::dot(oc, oc) - inner * inner))) / a;
+            const double outer0 =
+                (-b - std::sqrt(b * b - a * (glm::dot(oc, oc) - std::pow(kRadius * scale, 2)))) / a;
+            const double inner0 =
+                (-b - std::sqrt(b * b - a * (glm::dot(oc, oc) - inner * inner))) / a;
             CHECK(spans[0].in.t >= outer0 * (1 - 1e-11));
             CHECK(spans[0].in.t <= inner0 * (1 + 1e-11));
         }

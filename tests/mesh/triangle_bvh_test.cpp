@@ -122,17 +122,17 @@ TEST_CASE("triangle_bvh/degenerate inputs build and trace") {
             const Vec3 a(unit(rng), unit(rng), unit(rng)), b(unit(rng), unit(rng), unit(rng));
             const uint32_t k = uint32_t(m.positions.size());
             switch (i % 4) {
-            case 0:  // a point
-                m.positions.insert(m.positions.end(), {a, a, a});
-                break;
-            case 1:  // collinear: a, its mirror through b's midpoint, and b
-                m.positions.insert(m.positions.end(), {a, 0.5 * (a + b), b});
-                break;
-            case 2:  // two equal corners
-                m.positions.insert(m.positions.end(), {a, b, b});
-                break;
-            default:
-                m.positions.insert(m.positions.end(), {a, b, Vec3(unit(rng), 0.0, unit(rng))});
+                case 0:  // a point
+                    m.positions.insert(m.positions.end(), {a, a, a});
+                    break;
+                case 1:  // collinear: a, its mirror through b's midpoint, and b
+                    m.positions.insert(m.positions.end(), {a, 0.5 * (a + b), b});
+                    break;
+                case 2:  // two equal corners
+                    m.positions.insert(m.positions.end(), {a, b, b});
+                    break;
+                default:
+                    m.positions.insert(m.positions.end(), {a, b, Vec3(unit(rng), 0.0, unit(rng))});
             }
             m.triangles.push_back({k, k + 1, k + 2});
         }

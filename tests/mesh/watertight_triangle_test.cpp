@@ -5,7 +5,6 @@
 using namespace kerf;
 using namespace kerf::bvh_test;
 
-
 TEST_CASE("triangle_bvh/watertight on a jittered grid's shared edges and vertices") {
     std::mt19937_64 rng(7);
     const int n = 12;

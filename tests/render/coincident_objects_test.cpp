@@ -90,15 +90,20 @@ TEST_CASE("render: a glass box on an opaque box shows the contact face without s
             for (double s : {1.0, 1e-3, 1e3}) {
                 INFO((mirrored ? "opaque on glass" : "glass on opaque")
                      << (glassFirst ? ", glass first" : ", opaque first") << ", scale " << s);
-                const RenderResult r = render(contactScene(s, mirrored, glassFirst), smallImage(kW, kH));
+                const RenderResult r =
+                    render(contactScene(s, mirrored, glassFirst), smallImage(kW, kH));
                 // Seen through the glass the lit face is smooth: neighbours differ little,
                 // where a speckle (the block's far face, or a shadow) differs by ~0.3.
                 double worstStep = 0;
                 for (auto [i, j] : region) {
                     if (i + 1 < kW && inRegion[j * kW + i + 1])
-                        worstStep = std::max(worstStep, double(glm::length(pixel(r.color, i, j) - pixel(r.color, i + 1, j))));
+                        worstStep = std::max(
+                            worstStep,
+                            double(glm::length(pixel(r.color, i, j) - pixel(r.color, i + 1, j))));
                     if (j + 1 < kH && inRegion[(j + 1) * kW + i])
-                        worstStep = std::max(worstStep, double(glm::length(pixel(r.color, i, j) - pixel(r.color, i, j + 1))));
+                        worstStep = std::max(
+                            worstStep,
+                            double(glm::length(pixel(r.color, i, j) - pixel(r.color, i, j + 1))));
                 }
                 CHECK(worstStep <= 0.02);
                 // The clay is lit through the glass: brighter than its ambient term alone.

@@ -43,7 +43,8 @@ TEST_CASE("intersection: an implicit operand after the first keeps the entry fac
     const std::string implicit = "implicit { f -1 bound box { min <-1, -1, -1> max <1, 1, 1> } }";
     for (const std::string& first : {box, halfspace}) {
         for (bool implicitFirst : {false, true}) {
-            const std::string a = implicitFirst ? implicit : first, b = implicitFirst ? first : implicit;
+            const std::string a = implicitFirst ? implicit : first,
+                              b = implicitFirst ? first : implicit;
             const std::string text = "object intersection {\n" + a + "\n" + b + "\n};\n" + kScene;
             INFO(text);
             float depth = 0;

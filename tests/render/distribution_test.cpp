@@ -46,7 +46,8 @@ TEST_CASE("thin lens: rays meet at the focus plane; the circle of confusion is t
         const Vec3 p = rim.at((depth - glm::dot(rim.origin - desc.eye, f)) / glm::dot(rim.dir, f));
         const Vec3 axisPoint = desc.eye + depth * f;
         INFO("depth " << depth);
-        CHECK(glm::length(p - axisPoint) == Approx(0.2 * std::fabs(1.0 - depth / 5.0)).margin(1e-12));
+        CHECK(glm::length(p - axisPoint) ==
+              Approx(0.2 * std::fabs(1.0 - depth / 5.0)).margin(1e-12));
     }
     // Aperture 0: the pinhole ray, bit for bit.
     desc.aperture = 0.0;
@@ -153,8 +154,8 @@ TEST_CASE("a rectangular light behind an edge: umbra and penumbra where geometry
     // A 2 × 2 light at height 4 (x in [−1, 1]) and a thin opaque plate at height 2 filling
     // x ≤ 0: by similar triangles the plate's edge, seen from light point x_L, shadows the
     // floor for x < −x_L (the heights are in ratio 1): umbra for x < −1, penumbra for
-    // −1 < x < 1, lit for x > 1. Rendered with and without the wall, with the same light samples, the ratio
-    // is exactly 0 in the umbra, exactly 1 in the lit part, and strictly between in the
+    // −1 < x < 1, lit for x > 1. Rendered with and without the wall, with the same light samples,
+    // the ratio is exactly 0 in the umbra, exactly 1 in the lit part, and strictly between in the
     // penumbra (away from its ends by a pixel).
     Light area;
     area.kind = Light::Kind::Area;
@@ -240,7 +241,8 @@ TEST_CASE("white furnace: glossy and translucent rays neither gain nor lose ener
     }
 }
 
-TEST_CASE("white furnace: a closed glass ball loses no light to the depth limit at the default depth") {
+TEST_CASE(
+    "white furnace: a closed glass ball loses no light to the depth limit at the default depth") {
     // A clear ball (transmit 1, no absorption) in a uniform white sky: Fresnel's two parts sum
     // to 1 at every hit, and every path gets out in the end, so every pixel is 1. Light caught
     // bouncing inside is lost only where a path is cut: by the weight cutoff (each cut path
@@ -351,7 +353,8 @@ TEST_CASE("a gradient sky: horizon, zenith and nadir colours along up") {
     }
 }
 
-TEST_CASE("motion blur: a moving sphere covers a pixel for the fraction of the shutter it is there") {
+TEST_CASE(
+    "motion blur: a moving sphere covers a pixel for the fraction of the shutter it is there") {
     // An emissive sphere (radius 1) moving by v over the shutter [0, 1], on black: the pixel
     // centre ray meets it for the times s where the sphere's centre c0 + v·s is within 1 of the
     // ray: |w|² − (w·d)² ≤ 1 with w = c0 + v·s − eye, a quadratic in s. The pixel's value is

@@ -2,8 +2,8 @@
 // straight edge filtered as the closed-form convolution says, images independent of the
 // thread count, and adaptive sampling that stops where there is no noise.
 #include "render/film.h"
-#include "render/sampler.h"
 #include "render/render.h"
+#include "render/sampler.h"
 #include "render_test_util.h"
 
 #include <catch2/catch.hpp>
@@ -71,7 +71,8 @@ TEST_CASE("a straight edge through each filter: the convolution of a step") {
         const bool whiteLeft = r.color.at(0, 1, 0) > 0.5;
         for (int k = 4; k < 12; ++k) {
             const double c = k + 0.5, edge = width / 2.0;
-            const double leftPart = integrate(f, -f.radius, std::clamp(edge - c, -f.radius, f.radius)) / total;
+            const double leftPart =
+                integrate(f, -f.radius, std::clamp(edge - c, -f.radius, f.radius)) / total;
             const double expected = whiteLeft ? leftPart : 1.0 - leftPart;
             INFO(filterName(kind) << " column " << k);
             CHECK(r.color.at(k, 1, 0) == Approx(expected).margin(0.01));

@@ -77,8 +77,8 @@ double uOf(int i) { return (i + 0.5) / kW; }
 double vOf(int j) { return 1.0 - (j + 0.5) / kH; }
 
 void checkColour(const Vec3& got, const Vec3& want) {
-    INFO("got " << got.x << ", " << got.y << ", " << got.z << "; want " << want.x << ", "
-                << want.y << ", " << want.z);
+    INFO("got " << got.x << ", " << got.y << ", " << got.z << "; want " << want.x << ", " << want.y
+                << ", " << want.z);
     CHECK(glm::length(got - want) < 1e-4);
 }
 
@@ -87,29 +87,39 @@ void checkColour(const Vec3& got, const Vec3& want) {
 TEST_CASE("image textures: planar and cylindrical maps put each texel at its point") {
     TextureFile file("distinct.png", distinctImage());
     // Planar, repeating, under the pattern's own scale 2 (the map into its space halves).
-    const auto planar = imagePattern(file.texture, ImageMap::Mapping::Planar, Affine::scale(Vec3(0.5)));
+    const auto planar =
+        imagePattern(file.texture, ImageMap::Mapping::Planar, Affine::scale(Vec3(0.5)));
     const auto cylinder = imagePattern(file.texture, ImageMap::Mapping::Cylindrical);
     for (int j = 0; j < kH; ++j)
         for (int i = 0; i < kW; ++i) {
             INFO("texel " << i << ", " << j);
             const Vec3 want = quantised(texel(i, j));
-            checkColour(patternColor(*planar, Vec3(2.0 * (uOf(i) + 3.0), 2.0 * (vOf(j) - 1.0), 7.0), 0.0), want);
+            checkColour(
+                patternColor(*planar, Vec3(2.0 * (uOf(i) + 3.0), 2.0 * (vOf(j) - 1.0), 7.0), 0.0),
+                want);
             // Cylindrical: the angle from +z toward +x in turns, v = y (repeating).
             const double angle = 2.0 * glm::pi<double>() * uOf(i);
             const double radius = 0.3 + i;
-            checkColour(patternColor(*cylinder, Vec3(radius * std::sin(angle), vOf(j) + 2.0, radius * std::cos(angle)), 0.0),
-                        want);
+            checkColour(
+                patternColor(*cylinder,
+                             Vec3(radius * std::sin(angle), vOf(j) + 2.0, radius * std::cos(angle)),
+                             0.0),
+                want);
         }
 }
 
-TEST_CASE("image textures: a spherical map puts the poles on the top and bottom rows, the equator in the middle") {
+TEST_CASE(
+    "image textures: a spherical map puts the poles on the top and bottom rows, the equator in the "
+    "middle") {
     TextureFile file("distinct.png", distinctImage());
-    const auto sphere = imagePattern(file.texture, ImageMap::Mapping::Spherical,
-                                     Affine::translate(Vec3(-1.0, 2.0, 0.5)));  // centred at (1, −2, −½)
+    const auto sphere =
+        imagePattern(file.texture, ImageMap::Mapping::Spherical,
+                     Affine::translate(Vec3(-1.0, 2.0, 0.5)));  // centred at (1, −2, −½)
     const Vec3 centre(1.0, -2.0, -0.5);
     const double r = 3.0;
     checkColour(patternColor(*sphere, centre + Vec3(0.0, r, 0.0), 0.0), quantised(texel(0, 0)));
-    checkColour(patternColor(*sphere, centre - Vec3(0.0, r, 0.0), 0.0), quantised(texel(0, kH - 1)));
+    checkColour(patternColor(*sphere, centre - Vec3(0.0, r, 0.0), 0.0),
+                quantised(texel(0, kH - 1)));
     for (int j = 3; j < kH - 3; ++j)
         for (int i = 0; i < kW; ++i) {
             INFO("texel " << i << ", " << j);
@@ -132,14 +142,15 @@ TEST_CASE("image textures: a box map shows each face by the dominant axis of the
         Vec3 normal, point;
     };
     const Face faces[] = {
-        {Vec3(1, 0, 0), Vec3(0.7, v, -u)},  {Vec3(-1, 0, 0), Vec3(-0.7, v, u)},
-        {Vec3(0, 1, 0), Vec3(u, 0.7, -v)},  {Vec3(0, -1, 0), Vec3(u, -0.7, v)},
-        {Vec3(0, 0, 1), Vec3(u, v, 0.7)},   {Vec3(0, 0, -1), Vec3(-u, v, -0.7)},
+        {Vec3(1, 0, 0), Vec3(0.7, v, -u)}, {Vec3(-1, 0, 0), Vec3(-0.7, v, u)},
+        {Vec3(0, 1, 0), Vec3(u, 0.7, -v)}, {Vec3(0, -1, 0), Vec3(u, -0.7, v)},
+        {Vec3(0, 0, 1), Vec3(u, v, 0.7)},  {Vec3(0, 0, -1), Vec3(-u, v, -0.7)},
     };
     for (const Face& f : faces) {
         INFO("face " << f.normal.x << ", " << f.normal.y << ", " << f.normal.z);
         // Tilted off the axis (but still dominant), as a curved surface's normal is.
-        const Vec3 n = glm::normalize(f.normal + Vec3(0.2, -0.3, 0.25) * (1.0 - glm::abs(f.normal)));
+        const Vec3 n =
+            glm::normalize(f.normal + Vec3(0.2, -0.3, 0.25) * (1.0 - glm::abs(f.normal)));
         checkColour(patternColor(*box, f.point, 0.0, Footprint{Vec3(0.0), Vec3(0.0), n}),
                     quantised(texel(i, j)));
     }
@@ -148,11 +159,13 @@ TEST_CASE("image textures: a box map shows each face by the dominant axis of the
     const Affine turn = Affine::rotateDegrees(Vec3(0.0, 90.0, 0.0));
     const auto turned = imagePattern(file.texture, ImageMap::Mapping::Box, turn.inverse());
     const Vec3 q(uOf(i), vOf(j), 0.7);  // on the pattern's +z face
-    checkColour(patternColor(*turned, turn.point(q), 0.0, Footprint{Vec3(0.0), Vec3(0.0), turn.vector(Vec3(0, 0, 1))}),
+    checkColour(patternColor(*turned, turn.point(q), 0.0,
+                             Footprint{Vec3(0.0), Vec3(0.0), turn.vector(Vec3(0, 0, 1))}),
                 quantised(texel(i, j)));
 }
 
-TEST_CASE("an image checkerboard on a floor to the horizon does not alias at one sample per pixel") {
+TEST_CASE(
+    "an image checkerboard on a floor to the horizon does not alias at one sample per pixel") {
     // The procedural checker's test (pattern_test.cpp) with the checker as an image: 64 × 64
     // texels of 2 × 2 cells, mapped planar across the floor with cells one unit wide. The far
     // band of a 1-sample render must have about the high-frequency energy of a 256-sample
@@ -183,7 +196,8 @@ TEST_CASE("an image checkerboard on a floor to the horizon does not alias at one
         if (!(r.dir.y < 0.0)) continue;
         const double distance = -r.origin.y / r.dir.y;
         if (distance < 8.0) {  // near: whole cells, black or white where not on an edge
-            for (int i = 0; i < 96; ++i) near += one.color.at(i, j, 0) < 0.02 || one.color.at(i, j, 0) > 0.98;
+            for (int i = 0; i < 96; ++i)
+                near += one.color.at(i, j, 0) < 0.02 || one.color.at(i, j, 0) > 0.98;
             continue;
         }
         if (distance < 40.0) continue;  // the far band: cells smaller than a pixel

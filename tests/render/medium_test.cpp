@@ -25,13 +25,19 @@ public:
     enum class Kind { Constant, Ramp, Exponential };
     ZField(Kind kind, double a, double b) : mKind(kind), mA(a), mB(b) {}
     double value(const Vec3& p) const override { return at(p.z); }
-    long double valueExtended(const glm::tvec3<long double>& p) const override { return at(double(p.z)); }
-    double valueGradient(const Vec3& p, Vec3& g) const override { g = Vec3(0.0); return at(p.z); }
+    long double valueExtended(const glm::tvec3<long double>& p) const override {
+        return at(double(p.z));
+    }
+    double valueGradient(const Vec3& p, Vec3& g) const override {
+        g = Vec3(0.0);
+        return at(p.z);
+    }
     Interval range(const Interval&, const Interval&, const Interval& z) const override {
         // Constant, increasing (ramp, b > 0) or decreasing (exponential): the ends bound it.
         const double u = at(z.lo), v = at(z.hi);
         if (mKind == Kind::Constant) return Interval(mA, mA);
-        return Interval(std::nextafter(std::min(u, v), -kInf), std::nextafter(std::max(u, v), kInf));
+        return Interval(std::nextafter(std::min(u, v), -kInf),
+                        std::nextafter(std::max(u, v), kInf));
     }
     /// ∫ density dz from 0 to h.
     double integral(double h) const {
@@ -206,7 +212,8 @@ TEST_CASE("medium/single scattering of a constant slab under a directional light
         INFO(mediumMethodName(method) << ": exact " << exact.x << " " << exact.y << " " << exact.z
                                       << ", got " << mean.x << " " << mean.y << " " << mean.z);
         for (int ch = 0; ch < 3; ++ch) {
-            const double se = std::sqrt(std::max(0.0, sum2[ch] / n - mean[ch] * mean[ch]) / (n - 1));
+            const double se =
+                std::sqrt(std::max(0.0, sum2[ch] / n - mean[ch] * mean[ch]) / (n - 1));
             if (method == MediumMethod::March)  // deterministic: midpoint error O(h²)
                 CHECK(mean[ch] == Approx(exact[ch]).epsilon(1e-4));
             else

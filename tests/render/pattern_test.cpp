@@ -34,9 +34,11 @@ TEST_CASE("checker, stripes and rings at points: the parity of the cells") {
     std::uniform_real_distribution<double> coord(-50.0, 50.0);
     for (int k = 0; k < 2000; ++k) {
         const Vec3 p(coord(rng), coord(rng), coord(rng));
-        const int64_t sum = int64_t(std::floor(p.x)) + int64_t(std::floor(p.y)) + int64_t(std::floor(p.z));
+        const int64_t sum =
+            int64_t(std::floor(p.x)) + int64_t(std::floor(p.y)) + int64_t(std::floor(p.z));
         CHECK(patternColor(*checker, p, 0.0).x == ((sum & 1) == 0 ? 1.0 : 0.0));
-        CHECK(patternColor(*stripes, p, 0.0).x == ((int64_t(std::floor(p.x)) & 1) == 0 ? 1.0 : 0.0));
+        CHECK(patternColor(*stripes, p, 0.0).x ==
+              ((int64_t(std::floor(p.x)) & 1) == 0 ? 1.0 : 0.0));
         const double r = std::sqrt(p.x * p.x + p.z * p.z);
         CHECK(patternColor(*rings, p, 0.0).x == ((int64_t(std::floor(r)) & 1) == 0 ? 1.0 : 0.0));
     }

@@ -3,11 +3,11 @@
 // and renders with beams give the same first hits as without, within the tolerance.
 #include "render/primary_beams.h"
 
-#include "csg/scene_geometry.h"
+#include "csg/bvh/scene_geometry.h"
 #include "lang/compile.h"
-#include "util/compiled_scene.h"
 #include "render/camera.h"
 #include "render/render.h"
+#include "util/compiled_scene.h"
 
 #include <catch2/catch.hpp>
 
@@ -20,7 +20,9 @@ using namespace kerf;
 
 namespace {
 
-Scene compiled(const std::string& text) { return test::compiledScene(text, "primary_beams_test.kerf"); }
+Scene compiled(const std::string& text) {
+    return test::compiledScene(text, "primary_beams_test.kerf");
+}
 
 /// Issue 8's gyroid ball on a floor, and Barth's sextic clipped by a sphere.
 const char* kGyroidBall = R"(
@@ -46,8 +48,7 @@ camera { eye <0, 0, -6> look_at <0, 0, 0> up <0, 1, 0> fov 40 }
 
 }  // namespace
 
-TEST_CASE("Camera::frustumSlice holds every ray point of the rectangle and range",
-          "[beams]") {
+TEST_CASE("Camera::frustumSlice holds every ray point of the rectangle and range", "[beams]") {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     int outside = 0;
@@ -69,7 +70,8 @@ TEST_CASE("Camera::frustumSlice holds every ray point of the rectangle and range
         const Bounds3 box = camera.frustumSlice(x0, y0, x1, y1, ta, tb);
         for (int k = 0; k < 50; ++k) {
             // Corners and edges of the rectangle and range, and points inside.
-            const double fx = k < 4 ? double(k & 1) : unit(rng), fy = k < 4 ? double(k >> 1) : unit(rng);
+            const double fx = k < 4 ? double(k & 1) : unit(rng),
+                         fy = k < 4 ? double(k >> 1) : unit(rng);
             const double ft = k % 3 == 0 ? 0.0 : k % 3 == 1 ? 1.0 : unit(rng);
             const Ray ray = camera.rayThrough(x0 + fx * (x1 - x0), y0 + fy * (y1 - y0));
             const Vec3 p = ray.at(ta + ft * (tb - ta));
@@ -78,10 +80,9 @@ TEST_CASE("Camera::frustumSlice holds every ray point of the rectangle and range
             if (in || outside++) continue;
             std::ostringstream s;
             s.precision(17);
-            s << "trial " << trial << ": point (" << p.x << ", " << p.y << ", " << p.z
-              << ") at t " << ta + ft * (tb - ta) << " outside [" << box.lo.x << ", " << box.hi.x
-              << "] x [" << box.lo.y << ", " << box.hi.y << "] x [" << box.lo.z << ", "
-              << box.hi.z << "]";
+            s << "trial " << trial << ": point (" << p.x << ", " << p.y << ", " << p.z << ") at t "
+              << ta + ft * (tb - ta) << " outside [" << box.lo.x << ", " << box.hi.x << "] x ["
+              << box.lo.y << ", " << box.hi.y << "] x [" << box.lo.z << ", " << box.hi.z << "]";
             first = s.str();
         }
     }
@@ -207,7 +208,8 @@ TEST_CASE("the default rule turns beams on for implicit scenes only", "[beams]")
     octree.eye = ball.camera.eye;
     CHECK(beamsPay(ball.objects, octree));
     // A closed-form object beside it: its rays are cheap, slices would cost more than they save.
-    const Scene mixed = compiled(std::string(kGyroidBall) + "object box { min <4, 0, 0> max <5, 1, 1> };");
+    const Scene mixed =
+        compiled(std::string(kGyroidBall) + "object box { min <4, 0, 0> max <5, 1, 1> };");
     CHECK_FALSE(beamsPay(mixed.objects, octree));
     // The eye inside the ball's bounds: nothing in front of it to prove empty.
     octree.eye = Vec3(0.0, 3.0, 0.0);

@@ -1,8 +1,8 @@
 /// @file tests/render/ray_budget_test.cpp
 /// @brief The work per camera ray is bounded whatever the weights (render/shading.h): the
 /// budget's split, a glass whose weights exceed the language's policy (built through the API,
-/// which does not check them) in a mirror box finishing with a bounded ray count, and a mirror box that
-/// the language accepts (reflect 1, max_depth 1000) tracing every bounce uncut.
+/// which does not check them) in a mirror box finishing with a bounded ray count, and a mirror box
+/// that the language accepts (reflect 1, max_depth 1000) tracing every bounce uncut.
 #include "lang/compile.h"
 #include "render/shading.h"
 #include "render_test_util.h"
@@ -29,7 +29,9 @@ TEST_CASE("splitRayBudget: in proportion to the weights, never more than the bud
     }
 }
 
-TEST_CASE("render: a glass with transmit 1 reflect 1 in a mirror box at depth 1000 finishes within the budget") {
+TEST_CASE(
+    "render: a glass with transmit 1 reflect 1 in a mirror box at depth 1000 finishes within the "
+    "budget") {
     // Every hit on the ball sends two rays on and the mirror walls bring both back, so the
     // tree would hold ~2^1000 rays (the earlier code never finished); the budget bounds it.
     Scene scene;
@@ -41,7 +43,8 @@ TEST_CASE("render: a glass with transmit 1 reflect 1 in a mirror box at depth 10
     mirror.reflect = 1;
     addObject(scene, makeSphere(Vec3(0.0), 1.0), addMaterial(scene, glass));
     addObject(scene,
-              makeBoolean(BoolOp::Difference, {makeBox(Vec3(-4.0), Vec3(4.0)), makeBox(Vec3(-3.0), Vec3(3.0))}),
+              makeBoolean(BoolOp::Difference,
+                          {makeBox(Vec3(-4.0), Vec3(4.0)), makeBox(Vec3(-3.0), Vec3(3.0))}),
               addMaterial(scene, mirror));
     Light light;
     light.position = Vec3(1.5, 2.5, -2);
@@ -67,7 +70,8 @@ TEST_CASE("render: a mirror box with reflect 1 traces every bounce to max_depth 
         light point { at <0, 0.5, 0> power 10 }
         render { max_depth 1000 }
         object difference { box { min <-2, -2, -2> max <2, 2, 2> } box { min <-1, -1, -1> max <1, 1, 1> } } material m;
-    )", "mirror.kerf", sink);
+    )",
+                                     "mirror.kerf", sink);
     INFO(sink.format());
     REQUIRE(scene);
     const RenderResult r = render(*scene, smallImage(2, 2));

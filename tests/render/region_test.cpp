@@ -18,7 +18,8 @@ namespace {
 
 Scene model(const std::string& name) {
     DiagnosticSink sink;
-    std::optional<Scene> scene = compileFile(std::string(KERF_SOURCE_DIR) + "/models/" + name, sink);
+    std::optional<Scene> scene =
+        compileFile(std::string(KERF_SOURCE_DIR) + "/models/" + name, sink);
     REQUIRE(scene);
     return std::move(*scene);
 }
@@ -87,8 +88,8 @@ TEST_CASE("region renders equal the full render's pixels: box filter, each sampl
     RenderOptions options;
     options.spp = 4;
     options.filter = FilterKind::Box;
-    for (SamplerKind s : {SamplerKind::Regular, SamplerKind::Random, SamplerKind::Jittered,
-                          SamplerKind::Lattice}) {
+    for (SamplerKind s :
+         {SamplerKind::Regular, SamplerKind::Random, SamplerKind::Jittered, SamplerKind::Lattice}) {
         CAPTURE(int(s));
         options.sampler = s;
         checkRegions(scene, options);

@@ -1,7 +1,7 @@
 /// @file tests/render/render_test.cpp
 /// @brief render(): the depth and normal outputs against closed forms, the same image at
 /// every scale and every thread count, statistics and progress.
-#include "csg/scene_geometry.h"
+#include "csg/bvh/scene_geometry.h"
 #include "render/camera.h"
 #include "render_test_util.h"
 
@@ -126,7 +126,8 @@ TEST_CASE("render: the same image at scales 1e-6, 1 and 1e6") {
         const RenderResult scaled = render(sceneAtScale(s), smallImage(W, H));
         double worst = 0;
         for (size_t k = 0; k < unit.color.pixels.size(); ++k)
-            worst = std::max(worst, double(std::abs(unit.color.pixels[k] - scaled.color.pixels[k])));
+            worst =
+                std::max(worst, double(std::abs(unit.color.pixels[k] - scaled.color.pixels[k])));
         INFO("scale " << s);
         CHECK(worst <= 1e-4);
         CHECK(scaled.stats.shadowRays == unit.stats.shadowRays);
@@ -150,10 +151,9 @@ TEST_CASE("render: the same image at scales 1e-6, 1 and 1e6") {
                     clear = false;
             if (!clear) continue;
             const double d2 = glm::dot(toLight, toLight);
-            const Vec3 expected =
-                floor.ambient * floor.color +
-                floor.diffuse * floor.color * (toLight.y / std::sqrt(d2)) *
-                    scene.lights[0].power / (4 * glm::pi<double>() * d2);
+            const Vec3 expected = floor.ambient * floor.color +
+                                  floor.diffuse * floor.color * (toLight.y / std::sqrt(d2)) *
+                                      scene.lights[0].power / (4 * glm::pi<double>() * d2);
             INFO("pixel " << i << "," << j);
             for (int k = 0; k < 3; ++k)
                 CHECK(unit.color.at(i, j, k) == Approx(expected[k]).margin(1e-5));

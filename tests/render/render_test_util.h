@@ -2,9 +2,9 @@
 /// @brief Small scenes and closed-form oracles shared by the render tests.
 #pragma once
 
-#include "scene/scene.h"
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 #include "render/render.h"
+#include "scene/scene.h"
 
 #include <cmath>
 #include <optional>
@@ -56,8 +56,8 @@ inline Vec3 referenceDirection(const CameraDesc& c, int width, int height, doubl
 }
 
 /// The first t > 0 where origin + t·dir (dir unit) enters the sphere, in long double.
-inline std::optional<long double> raySphere(const Vec3& origin, const Vec3& dir,
-                                            const Vec3& center, double radius) {
+inline std::optional<long double> raySphere(const Vec3& origin, const Vec3& dir, const Vec3& center,
+                                            double radius) {
     using LD = long double;
     const LD oc[3] = {LD(origin.x) - center.x, LD(origin.y) - center.y, LD(origin.z) - center.z};
     const LD b = oc[0] * dir.x + oc[1] * dir.y + oc[2] * dir.z;

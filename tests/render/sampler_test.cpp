@@ -100,8 +100,8 @@ TEST_CASE("permuteIndex is a permutation of 0 … n−1 for every n and seed") {
 }
 
 TEST_CASE("every sampler: exactly N points in the unit square, stratified where it says") {
-    for (SamplerKind kind : {SamplerKind::Regular, SamplerKind::Random, SamplerKind::Jittered,
-                             SamplerKind::Lattice})
+    for (SamplerKind kind :
+         {SamplerKind::Regular, SamplerKind::Random, SamplerKind::Jittered, SamplerKind::Lattice})
         for (int n : {1, 2, 5, 16, 17, 64}) {
             const PixelSampler sampler(n, kind);
             INFO(samplerName(kind) << " N=" << n);

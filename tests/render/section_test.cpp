@@ -183,7 +183,8 @@ TEST_CASE("section: the cup cut at mid height shows its wall's annulus") {
                 const long double rhoFloor = rho * tFloor / t;
                 if (rhoFloor < inner * (1 - 1e-9L)) {
                     ++floors;
-                    REQUIRE(std::fabs(r.depth.at(i, j, 0) - double(tFloor)) <= 1e-6 * double(tFloor));
+                    REQUIRE(std::fabs(r.depth.at(i, j, 0) - double(tFloor)) <=
+                            1e-6 * double(tFloor));
                 }
             } else {
                 REQUIRE(std::isinf(r.depth.at(i, j, 0)));

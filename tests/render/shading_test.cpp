@@ -208,7 +208,8 @@ TEST_CASE("WhittedIntegrator: total internal reflection inside a glass cube") {
         const RenderResult r = render(scene, smallImage(9, 9));
         const double F = 0.04;  // F² = 1.6e-3 is still traced, F³ = 6.4e-5 is not
         for (int k = 0; k < 3; ++k)
-            CHECK(r.color.at(4, 4, k) == Approx(scene.background[k] * (1 - F * F * F)).margin(1e-6));
+            CHECK(r.color.at(4, 4, k) ==
+                  Approx(scene.background[k] * (1 - F * F * F)).margin(1e-6));
     }
 }
 
@@ -255,8 +256,8 @@ TEST_CASE("WhittedIntegrator: mist") {
             const Ray ray = camera.rayThrough(i + 0.5, j + 0.5);
             const auto t = raySphere(ray.origin, ray.dir, center, 1.5);
             const Vec3 expected =
-                t ? scene.mist.color + (m.color - scene.mist.color) *
-                                           std::exp(-double(*t) / scene.mist.distance)
+                t ? scene.mist.color +
+                        (m.color - scene.mist.color) * std::exp(-double(*t) / scene.mist.distance)
                   : scene.mist.color;
             INFO("pixel " << i << "," << j);
             for (int k = 0; k < 3; ++k)

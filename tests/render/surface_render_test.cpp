@@ -1,10 +1,10 @@
 /// @file tests/render/surface_render_test.cpp
-/// @brief Surfaces in images (csg/surfaces.h): a disc casts the shadow its closed form says,
-/// on both shadow paths, and its back shows the interior material.
+/// @brief Surfaces in images (csg/primitives/surfaces.h): a disc casts the shadow its closed form
+/// says, on both shadow paths, and its back shows the interior material.
 #include "render/camera.h"
 #include "render_test_util.h"
 
-#include "csg/surfaces.h"
+#include "csg/primitives/surfaces.h"
 
 #include <catch2/catch.hpp>
 
@@ -59,8 +59,8 @@ TEST_CASE("surfaces: a disc between a point light and the ground shadows what is
                 const double rho = std::hypot(m.x - c.x, m.z - c.z);
                 const Vec3 toLight = lightPos - p;
                 const double d2 = glm::dot(toLight, toLight);
-                const Vec3 lit = ground.diffuse * ground.color * (toLight.y / std::sqrt(d2)) * power /
-                                 (4 * glm::pi<double>() * d2);
+                const Vec3 lit = ground.diffuse * ground.color * (toLight.y / std::sqrt(d2)) *
+                                 power / (4 * glm::pi<double>() * d2);
                 Vec3 expected;
                 if (rho < radius * 0.98) {
                     expected = Vec3(0.0);
@@ -87,7 +87,8 @@ TEST_CASE("surfaces: the back of a disc shows its interior material, the front i
     back.emit = Vec3(0.1, 0.2, 0.8);
     const int32_t f = addMaterial(scene, front), b = addMaterial(scene, back);
     // Facing +z; the camera looks along the axis from either side.
-    scene.objects.push_back(makeMaterial(makeInterior(makeDisc(Vec3(0.0), Vec3(0, 0, 1), 1.0), b), f));
+    scene.objects.push_back(
+        makeMaterial(makeInterior(makeDisc(Vec3(0.0), Vec3(0, 0, 1), 1.0), b), f));
     scene.background = Vec3(0.0);
     for (double side : {1.0, -1.0}) {
         INFO("camera at z = " << 4 * side);

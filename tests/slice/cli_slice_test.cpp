@@ -62,8 +62,8 @@ TEST_CASE("kerf slice writes an empty section and says so") {
 TEST_CASE("kerf slice --stack writes one file per layer and --stats the areas") {
     TempDir dir;
     dir.write("ball.kerf", kBall);
-    const KerfRun run = runKerf(dir, {"slice", "ball.kerf", "--stack", "z=-0.5:0.5:0.25", "-o",
-                                      "cut_%02d.svg", "--stats"});
+    const KerfRun run = runKerf(
+        dir, {"slice", "ball.kerf", "--stack", "z=-0.5:0.5:0.25", "-o", "cut_%02d.svg", "--stats"});
     INFO(run.err);
     REQUIRE(run.exitCode == 0);
     for (const char* name : {"cut_00.svg", "cut_01.svg", "cut_02.svg", "cut_03.svg", "cut_04.svg"})

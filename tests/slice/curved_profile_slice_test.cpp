@@ -25,8 +25,10 @@ double greenTerm(const PathSegment& s) {
                 return {u * u * s.p[0] + 2 * u * t * s.p[1] + t * t * s.p[2],
                         2.0 * (u * (s.p[1] - s.p[0]) + t * (s.p[2] - s.p[1]))};
             default:
-                return {u * u * u * s.p[0] + 3 * u * u * t * s.p[1] + 3 * u * t * t * s.p[2] + t * t * t * s.p[3],
-                        3.0 * (u * u * (s.p[1] - s.p[0]) + 2 * u * t * (s.p[2] - s.p[1]) + t * t * (s.p[3] - s.p[2]))};
+                return {u * u * u * s.p[0] + 3 * u * u * t * s.p[1] + 3 * u * t * t * s.p[2] +
+                            t * t * t * s.p[3],
+                        3.0 * (u * u * (s.p[1] - s.p[0]) + 2 * u * t * (s.p[2] - s.p[1]) +
+                               t * t * (s.p[3] - s.p[2]))};
         }
     };
     const double nodes[3] = {0.5 - 0.5 * std::sqrt(0.6), 0.5, 0.5 + 0.5 * std::sqrt(0.6)};
@@ -59,19 +61,21 @@ TEST_CASE("text extruded slices to its outline's area at a fine tolerance, curve
     const double exact = outlineArea(text.shape);
     // extrude puts the profile's (x, y) on the solid's (x, z) and extrudes along y.
     const Scene scene = test::compiledScene(
-        "object extrude { profile text { string \"kerf&9\" font \"DejaVu Sans\" size 1 } height 1 };");
+        "object extrude { profile text { string \"kerf&9\" font \"DejaVu Sans\" size 1 } height 1 "
+        "};");
     const SlicePlane plane = SlicePlane::axisAligned(1, 0.5);
     SliceOptions options;
     options.tolerance = 1e-7;
     SceneSlicer slicer(scene, plane, options);
     const SliceResult result = slicer.slice(plane.w);
     const ContourStats& stats = result.stats.contour;
-    INFO("area " << result.stats.area << " exact " << exact << " cells " << stats.cells << " simple "
-                 << stats.simpleLeaves << " of " << stats.boundaryLeaves);
+    INFO("area " << result.stats.area << " exact " << exact << " cells " << stats.cells
+                 << " simple " << stats.simpleLeaves << " of " << stats.boundaryLeaves);
     REQUIRE_FALSE(stats.budgetExceeded);
     // Every vertex is within the tolerance of the outline: the area is off by at most about
     // perimeter × tolerance.
-    CHECK(std::abs(result.stats.area - exact) <= result.stats.perimeter * slicer.absoluteTolerance());
+    CHECK(std::abs(result.stats.area - exact) <=
+          result.stats.perimeter * slicer.absoluteTolerance());
     // Curved and straight boundaries are proved simple: most leaves stop before the finest
     // level (splitting to it along the curves took 1.7 million cells for "kerf" before).
     CHECK(stats.simpleLeaves > stats.boundaryLeaves * 3 / 4);

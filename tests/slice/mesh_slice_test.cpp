@@ -1,6 +1,6 @@
 // Sections of closed meshes, alone and in CSG, against the areas of the polyhedra they cut:
 // an octahedron's section at height h is a square of area 2(r − |h|)².
-#include "csg/solids.h"
+#include "csg/tree/solids.h"
 #include "mesh/mesh_shape.h"
 #include "slice/slice.h"
 #include "tests/mesh/mesh_files.h"
@@ -36,7 +36,8 @@ TEST_CASE("slice::a closed mesh's section is the polyhedron's") {
         INFO("h " << h << " area " << s.stats.area << " exact " << exact);
         REQUIRE(s.stats.contours == 1);
         CHECK(std::fabs(s.stats.area - exact) <= 2.0 * tol * s.stats.perimeter);
-        CHECK(s.stats.perimeter == Approx(4.0 * std::sqrt(2.0) * (r - std::fabs(h))).epsilon(1e-13));
+        CHECK(s.stats.perimeter ==
+              Approx(4.0 * std::sqrt(2.0) * (r - std::fabs(h))).epsilon(1e-13));
     }
 }
 
@@ -68,9 +69,9 @@ TEST_CASE("slice::an open mesh is left out of the section with a note") {
 TEST_CASE("slice::a moved mesh is cut where it was moved to") {
     // Scaled by 2 and shifted: the section at the new centre's height is the square of side
     // 2·√2·r.
-    const NodePtr octa = makeTransform(
-        meshNode(std::make_shared<const MeshShape>(octahedronMesh()), false),
-        Affine::translate(Vec3(0.0, 0.0, 5.0)).after(Affine::scale(Vec3(2.0))));
+    const NodePtr octa =
+        makeTransform(meshNode(std::make_shared<const MeshShape>(octahedronMesh()), false),
+                      Affine::translate(Vec3(0.0, 0.0, 5.0)).after(Affine::scale(Vec3(2.0))));
     double tol = 0.0;
     const SliceResult s = sliceAt(octa, 2.0 * kOctaCenter.z + 5.0, tol);
     const double r = 2.0 * kOctaRadius;

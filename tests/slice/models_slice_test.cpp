@@ -47,8 +47,8 @@ TEST_CASE("every model slices to SVG, DXF and PNG that agree with its statistics
         double area = 0.0, contours = 0.0, perimeter = 0.0;
         std::string plane;
         for (const char* candidate : {"y=0.5", "z=0"}) {
-            const KerfRun run = runKerf(dir, {"slice", model, "--plane", candidate, "--tolerance", "1e-3", "-o",
-                                              name + ".svg", "--stats"});
+            const KerfRun run = runKerf(dir, {"slice", model, "--plane", candidate, "--tolerance",
+                                              "1e-3", "-o", name + ".svg", "--stats"});
             INFO(run.err);
             REQUIRE(run.exitCode == 0);
             area = statistic(run.err, "total: area ");
@@ -65,7 +65,8 @@ TEST_CASE("every model slices to SVG, DXF and PNG that agree with its statistics
         CHECK(count(svg, "<path") >= 1);
         CHECK(count(svg, "Z") >= size_t(contours));
         // DXF: one closed polyline per contour, and a well-formed end.
-        const KerfRun dxf = runKerf(dir, {"slice", model, "--plane", plane, "--tolerance", "1e-3", "-o", name + ".dxf"});
+        const KerfRun dxf = runKerf(
+            dir, {"slice", model, "--plane", plane, "--tolerance", "1e-3", "-o", name + ".dxf"});
         REQUIRE(dxf.exitCode == 0);
         const std::string dxfText = readText(dir.file(name + ".dxf"));
         CHECK(count(dxfText, "LWPOLYLINE") == size_t(contours));
@@ -74,15 +75,16 @@ TEST_CASE("every model slices to SVG, DXF and PNG that agree with its statistics
         // polygons' area, up to 8-bit quantisation of alpha: half a code in each pixel the
         // boundary crosses, at most 2√2 per pixel length of boundary plus 4 per contour.
         const double pixel = 0.02;
-        const KerfRun png = runKerf(dir, {"slice", model, "--plane", plane, "--tolerance", "1e-3", "-o",
-                                          name + ".png", "--pixel", std::to_string(pixel)});
+        const KerfRun png = runKerf(dir, {"slice", model, "--plane", plane, "--tolerance", "1e-3",
+                                          "-o", name + ".png", "--pixel", std::to_string(pixel)});
         REQUIRE(png.exitCode == 0);
         const kerf::Image image = kerf::readImage(dir.file(name + ".png"));
         REQUIRE(image.channels == 4);
         double covered = 0.0;
         for (size_t i = 3; i < image.pixels.size(); i += 4) covered += image.pixels[i];
         const double boundaryPixels = 2.0 * std::sqrt(2.0) * perimeter / pixel + 4.0 * contours;
-        CHECK(std::fabs(covered * pixel * pixel - area) <= (0.5 / 255.0) * boundaryPixels * pixel * pixel + 1e-9 * area);
+        CHECK(std::fabs(covered * pixel * pixel - area) <=
+              (0.5 / 255.0) * boundaryPixels * pixel * pixel + 1e-9 * area);
     }
     CHECK(models >= 10);
 }

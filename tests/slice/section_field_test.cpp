@@ -1,13 +1,13 @@
 // The slicer's section tape over an implicit that calls external fields (Op::Field): its
 // interval value and slopes in u and v enclose sampled values and gradients on axis and
 // oblique planes, and its point values are the closed form's (the signed distances to a
-// sphere and a box, csg/scalar_field.h).
+// sphere and a box, csg/tape/scalar_field.h).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
-#include "csg/expr.h"
-#include "csg/solids.h"
+#include "csg/tape/expr.h"
+#include "csg/tree/solids.h"
 #include "slice/section_tape.h"
 #include "util/test_fields.h"
 

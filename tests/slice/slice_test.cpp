@@ -65,8 +65,10 @@ size_t selfIntersections(const SectionDrawing& d) {
     std::map<int, std::vector<size_t>> grid;
     for (size_t i = 0; i < segs.size(); ++i) {
         const auto& s = segs[i];
-        const int u0 = bucket(std::min(s[0][0], s[1][0]), d.minU, w), u1 = bucket(std::max(s[0][0], s[1][0]), d.minU, w);
-        const int v0 = bucket(std::min(s[0][1], s[1][1]), d.minV, h), v1 = bucket(std::max(s[0][1], s[1][1]), d.minV, h);
+        const int u0 = bucket(std::min(s[0][0], s[1][0]), d.minU, w),
+                  u1 = bucket(std::max(s[0][0], s[1][0]), d.minU, w);
+        const int v0 = bucket(std::min(s[0][1], s[1][1]), d.minV, h),
+                  v1 = bucket(std::max(s[0][1], s[1][1]), d.minV, h);
         for (int u = u0; u <= u1; ++u)
             for (int v = v0; v <= v1; ++v) grid[u * n + v].push_back(i);
     }
@@ -117,7 +119,9 @@ TEST_CASE("cup wall is the annulus pi (R^2 - r^2)") {
             for (size_t i = 0; i < pts.size(); ++i) {
                 const auto& a = pts[i];
                 const auto& b = pts[(i + 1) % pts.size()];
-                worst = std::max(worst, std::fabs(std::hypot(0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])) - radius));
+                worst = std::max(
+                    worst,
+                    std::fabs(std::hypot(0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])) - radius));
             }
             CHECK(worst <= c.tolerance);
         }
@@ -131,7 +135,8 @@ object difference {
     cylinder { from <1, 1, -2> to <1, 1, 2> radius 0.5 }
     cylinder { from <3, 1, -2> to <3, 1, 2> radius 0.3 }
 };
-)", SlicePlane::axisAligned(2, 0.25), 1e-9);
+)",
+                      SlicePlane::axisAligned(2, 0.25), 1e-9);
     const SliceStats& s = c.result.stats;
     const double exact = 8.0 - kPi * (0.25 + 0.09);
     CHECK(s.contours == 3);
@@ -156,7 +161,8 @@ TEST_CASE("cone cut obliquely is an ellipse") {
     // Cone of apex height H = 2 and base radius 1 (t = 1/2), plane z = 0.8 + 0.5 x: the
     // ellipse's area is π t² c² √(1 + s²) / (1 − t² s²)^{3/2}, c = H − 0.8, s = 0.5.
     const double t = 0.5, cc = 1.2, sl = 0.5;
-    const double exact = kPi * t * t * cc * cc * std::sqrt(1 + sl * sl) / std::pow(1 - t * t * sl * sl, 1.5);
+    const double exact =
+        kPi * t * t * cc * cc * std::sqrt(1 + sl * sl) / std::pow(1 - t * t * sl * sl, 1.5);
     const Cut c = cut("object cone { from <0, 0, 0> to <0, 0, 2> radius1 1 radius2 0 };",
                       SlicePlane::throughPoint(Vec3(0, 0, 0.8), Vec3(-0.5, 0, 1)), 1e-9);
     const SliceStats& s = c.result.stats;
@@ -168,7 +174,8 @@ TEST_CASE("cone cut obliquely is an ellipse") {
 TEST_CASE("sphere near its pole is a tiny circle") {
     const double z = 1.0 - 1e-6;
     const double exact = kPi * (1.0 - z * z);
-    const Cut c = cut("object sphere { center <0, 0, 0> radius 1 };", SlicePlane::axisAligned(2, z), 1e-10);
+    const Cut c =
+        cut("object sphere { center <0, 0, 0> radius 1 };", SlicePlane::axisAligned(2, z), 1e-10);
     const SliceStats& s = c.result.stats;
     REQUIRE(s.contours == 1);
     INFO("area " << s.area << " exact " << exact);
@@ -181,7 +188,8 @@ object difference {
     box { min <0, 0, -1> max <1, 1, 1> }
     box { min <0.5, 0.3, -2> max <0.500001, 0.301, 2> }
 };
-)", SlicePlane::axisAligned(2, 0.0), 1e-8);
+)",
+                      SlicePlane::axisAligned(2, 0.0), 1e-8);
     const SliceStats& s = c.result.stats;
     REQUIRE(s.contours == 2);
     CHECK(s.holes == 1);
@@ -197,7 +205,8 @@ object difference {
     box { min <0, 0, -1> max <2, 2, 1> }
     cylinder { from <2, 2, -2> to <2, 2, 2> radius 1 }
 };
-)", SlicePlane::axisAligned(2, 0.0), 1e-9);
+)",
+                      SlicePlane::axisAligned(2, 0.0), 1e-9);
     for (const auto& corner : {std::array<double, 2>{1, 2}, std::array<double, 2>{2, 1}}) {
         double nearest = INFINITY;
         for (const SectionLoop* loop : allLoops(c.result.drawing))
@@ -213,7 +222,8 @@ object difference {
     box { min <0, 0, -1> max <2, 2, 1> }
     cylinder { from <2, 2, -2> to <2, 2, 2> radius 1 }
 };
-)", SlicePlane::axisAligned(2, 0.0), 1e-6);
+)",
+                           SlicePlane::axisAligned(2, 0.0), 1e-6);
     for (const auto& corner : {std::array<double, 2>{1, 2}, std::array<double, 2>{2, 1}}) {
         double nearest = INFINITY;
         for (const SectionLoop* loop : allLoops(coarse.result.drawing))
@@ -237,7 +247,8 @@ object union {
     sphere { center <0, 0, 0> radius 0.7 }
     torus { major 1.2 minor 0.2 } rotate <90, 0, 0>
 };
-)", SlicePlane::axisAligned(2, 0.1), 1e-4);
+)",
+                      SlicePlane::axisAligned(2, 0.1), 1e-4);
     const SliceStats& s = c.result.stats;
     CHECK(s.contour.repairedLoops == 0);
     CHECK(selfIntersections(c.result.drawing) == 0);
@@ -287,7 +298,8 @@ object union {
     box { min <1, -1, -1> max <3, 1, 1> } material blue
 };
 object sphere { center <0, 5, 0> radius 0.5 };
-)", SlicePlane::axisAligned(2, 0.0), 1e-9);
+)",
+                      SlicePlane::axisAligned(2, 0.0), 1e-9);
     const SectionDrawing& d = c.result.drawing;
     REQUIRE(d.layers.size() == 3);
     std::map<std::string, double> area;
@@ -306,7 +318,8 @@ object union {
     box { min <0, 0, -1> max <1, 1, 1> }
     box { min <1, 0, -1> max <2, 1, 1> }
 };
-)", SlicePlane::axisAligned(2, 0.0), 1e-4);
+)",
+                      SlicePlane::axisAligned(2, 0.0), 1e-4);
     const SliceStats& s = c.result.stats;
     CHECK(s.contours == 1);
     CHECK(s.contour.repairedLoops == 0);
@@ -319,7 +332,8 @@ TEST_CASE("a plane holding a face ends quickly with a closed section") {
     // cannot prove a sign: the section is either the face or nothing (here nothing: f ≥ 0 on
     // the whole plane), but it is closed and found without splitting the face to the finest
     // level.
-    const Cut c = cut("object box { min <0, 0, 0> max <1, 1, 1> };", SlicePlane::axisAligned(2, 1.0), 1e-9);
+    const Cut c =
+        cut("object box { min <0, 0, 0> max <1, 1, 1> };", SlicePlane::axisAligned(2, 1.0), 1e-9);
     const SliceStats& s = c.result.stats;
     CHECK(!s.contour.budgetExceeded);
     CHECK(s.contour.repairedLoops == 0);

@@ -3,7 +3,7 @@
 /// evaluators to agree exactly.
 #pragma once
 
-#include "csg/interval.h"
+#include "csg/interval/interval.h"
 
 #include <cstring>
 #include <sstream>

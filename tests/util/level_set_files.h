@@ -1,10 +1,10 @@
 /// @file tests/util/level_set_files.h
-/// @brief .vdb files for the level-set tests, written through volume/vdb_grid_files.h: a sphere
-/// and a torus around y (exact distances in a band of 3 voxels, the rest signed by OpenVDB's
+/// @brief .vdb files for the level-set tests, written through volume/grids/vdb_grid_files.h: a
+/// sphere and a torus around y (exact distances in a band of 3 voxels, the rest signed by OpenVDB's
 /// flood fill), a fog volume and a vec3 grid (for the error messages).
 #pragma once
 
-#include "volume/vdb_grid_files.h"
+#include "volume/grids/vdb_grid_files.h"
 
 #include <cmath>
 #include <functional>
@@ -14,12 +14,14 @@ namespace kerf::test {
 
 using Grid = VdbGridToWrite;
 
-inline void writeGrids(const std::string& path, const std::vector<Grid>& grids) { writeVdbGrids(path, grids); }
+inline void writeGrids(const std::string& path, const std::vector<Grid>& grids) {
+    writeVdbGrids(path, grids);
+}
 
 /// A level set of the signed distance `sdf` (world units) over the index box ±n, half-width 3
 /// voxels.
-inline Grid distanceGrid(const std::function<double(double, double, double)>& sdf, const std::array<int, 3>& n,
-                         double voxel, const std::string& name) {
+inline Grid distanceGrid(const std::function<double(double, double, double)>& sdf,
+                         const std::array<int, 3>& n, double voxel, const std::string& name) {
     Grid g;
     g.name = name;
     g.voxel = voxel;
@@ -35,11 +37,12 @@ inline Grid distanceGrid(const std::function<double(double, double, double)>& sd
 }
 
 /// A sphere level set of `radius` at `center` (world units).
-inline Grid sphereGrid(double radius, const Vec3& center, double voxel, const std::string& name = "sphere") {
+inline Grid sphereGrid(double radius, const Vec3& center, double voxel,
+                       const std::string& name = "sphere") {
     const int n = int(std::ceil((glm::length(center) + radius) / voxel)) + 4;
     return distanceGrid(
-        [&](double x, double y, double z) { return glm::length(Vec3(x, y, z) - center) - radius; }, {n, n, n},
-        voxel, name);
+        [&](double x, double y, double z) { return glm::length(Vec3(x, y, z) - center) - radius; },
+        {n, n, n}, voxel, name);
 }
 
 /// The signed distance to the torus (√(x² + z²) − R)² + y² = r², as kerf's makeTorus.
@@ -51,8 +54,8 @@ inline double torusDistance(double R, double r, double x, double y, double z) {
 /// A torus level set around y.
 inline Grid torusGrid(double R, double r, double voxel, const std::string& name = "torus") {
     const int n = int(std::ceil((R + r) / voxel)) + 4, m = int(std::ceil(r / voxel)) + 4;
-    return distanceGrid([&](double x, double y, double z) { return torusDistance(R, r, x, y, z); }, {n, m, n},
-                        voxel, name);
+    return distanceGrid([&](double x, double y, double z) { return torusDistance(R, r, x, y, z); },
+                        {n, m, n}, voxel, name);
 }
 
 /// A fog volume: densities in [0, 1] in a small cube.

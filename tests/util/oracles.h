@@ -4,10 +4,10 @@
 /// ulp stepping, and expression builders for the implicit test solids.
 #pragma once
 
-#include "csg/expr.h"
-#include "csg/scene_geometry.h"
-#include "csg/solids.h"
-#include "csg/tape.h"
+#include "csg/bvh/scene_geometry.h"
+#include "csg/tape/expr.h"
+#include "csg/tape/tape.h"
+#include "csg/tree/solids.h"
 
 #include <algorithm>
 #include <cmath>
@@ -46,7 +46,9 @@ public:
     explicit Random(uint64_t seed = std::mt19937_64::default_seed) : mRng(seed) {}
     /// Restarts the sequence, so a test case's numbers do not depend on which others ran.
     void seed(uint64_t s) { mRng.seed(s); }
-    double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(mRng); }
+    double uniform(double a, double b) {
+        return std::uniform_real_distribution<double>(a, b)(mRng);
+    }
     /// exp of a uniform value in [log a, log b]: magnitudes spread over decades.
     double logUniform(double a, double b) { return std::exp(uniform(std::log(a), std::log(b))); }
     Vec3 unitVector() {
@@ -75,9 +77,9 @@ private:
 /// Where a line meets a sphere, in long double: the chord through the line's point nearest the
 /// centre (well conditioned even far away), and the miss margin (distance − r)/r.
 struct SphereOracle {
-    LD tMid = 0;     ///< parameter of the point nearest the centre
+    LD tMid = 0;       ///< parameter of the point nearest the centre
     LD halfChord = 0;  ///< in t units; 0 on a miss
-    LD margin = 0;   ///< (line distance − r)/r: < 0 hit, > 0 miss
+    LD margin = 0;     ///< (line distance − r)/r: < 0 hit, > 0 miss
     bool hit() const { return margin < 0; }
     LD tIn() const { return tMid - halfChord; }
     LD tOut() const { return tMid + halfChord; }
@@ -136,9 +138,9 @@ inline LD lineDistance(const Ray& ray, const LV3& a, const LV3& u) {
 
 /// |p|² − r², the implicit sphere.
 inline ExprId sphereExpr(ExprGraph& g, double r) {
-    const ExprId s = g.binary(Op::Add,
-                              g.binary(Op::Add, g.unary(Op::Square, g.x()), g.unary(Op::Square, g.y())),
-                              g.unary(Op::Square, g.z()));
+    const ExprId s =
+        g.binary(Op::Add, g.binary(Op::Add, g.unary(Op::Square, g.x()), g.unary(Op::Square, g.y())),
+                 g.unary(Op::Square, g.z()));
     return g.binary(Op::Sub, s, g.constant(r * r));
 }
 

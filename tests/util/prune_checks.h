@@ -1,5 +1,5 @@
 /// @file tests/util/prune_checks.h
-/// @brief The property pruned(node, box) promises (csg/prune.h), checked at random points and
+/// @brief The property pruned(node, box) promises (csg/tree/prune.h), checked at random points and
 /// on random rays inside the box, and counters of what pruning leaves (primitives, tape
 /// instructions) for the reports.
 #pragma once
@@ -12,8 +12,8 @@
 #include <variant>
 #include <vector>
 
-#include "csg/prune.h"
-#include "csg/tape.h"
+#include "csg/tape/tape.h"
+#include "csg/tree/prune.h"
 #include "util/oracles.h"
 
 namespace kerf::test {

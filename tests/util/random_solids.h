@@ -12,7 +12,16 @@ namespace kerf::test {
 
 /// The primitive kinds randomPrimitive draws from.
 enum class PrimitiveKind {
-    Sphere, Box, GridBox, Cylinder, Cone, Torus, HalfSpace, ImplicitSphere, ImplicitFull, Count
+    Sphere,
+    Box,
+    GridBox,
+    Cylinder,
+    Cone,
+    Torus,
+    HalfSpace,
+    ImplicitSphere,
+    ImplicitFull,
+    Count
 };
 
 /// A random primitive of the given kind in about [-1.5, 1.5]³. Implicit spheres get a bound
@@ -21,11 +30,14 @@ enum class PrimitiveKind {
 /// their bounds clip rays too. GridBoxes have their faces on a grid of halves, so two of them
 /// often share a face plane: crossings of different primitives at exactly the same t.
 inline NodePtr randomPrimitive(Random& rnd, PrimitiveKind kind) {
-    auto point = [&](double r) { return Vec3(rnd.uniform(-r, r), rnd.uniform(-r, r), rnd.uniform(-r, r)); };
+    auto point = [&](double r) {
+        return Vec3(rnd.uniform(-r, r), rnd.uniform(-r, r), rnd.uniform(-r, r));
+    };
     switch (kind) {
         case PrimitiveKind::Sphere: return makeSphere(point(1.0), rnd.uniform(0.3, 1.0));
         case PrimitiveKind::Box: {
-            const Vec3 c = point(1.0), h(rnd.uniform(0.2, 1.0), rnd.uniform(0.2, 1.0), rnd.uniform(0.2, 1.0));
+            const Vec3 c = point(1.0),
+                       h(rnd.uniform(0.2, 1.0), rnd.uniform(0.2, 1.0), rnd.uniform(0.2, 1.0));
             return makeBox(c - h, c + h);
         }
         case PrimitiveKind::GridBox: {
@@ -38,17 +50,19 @@ inline NodePtr randomPrimitive(Random& rnd, PrimitiveKind kind) {
         }
         case PrimitiveKind::Cylinder: {
             const Vec3 a = point(1.0);
-            return makeCylinder(a, a + rnd.uniform(0.5, 1.5) * rnd.unitVector(), rnd.uniform(0.2, 0.7));
+            return makeCylinder(a, a + rnd.uniform(0.5, 1.5) * rnd.unitVector(),
+                                rnd.uniform(0.2, 0.7));
         }
         case PrimitiveKind::Cone: {
             const Vec3 a = point(1.0);
             const double r2 = rnd.uniform(0.0, 1.0) < 0.3 ? 0.0 : rnd.uniform(0.1, 0.5);
-            return makeCone(a, a + rnd.uniform(0.5, 1.5) * rnd.unitVector(), rnd.uniform(0.2, 0.8), r2);
+            return makeCone(a, a + rnd.uniform(0.5, 1.5) * rnd.unitVector(), rnd.uniform(0.2, 0.8),
+                            r2);
         }
         case PrimitiveKind::Torus: {
             const double major = rnd.uniform(0.4, 1.0);
-            const Affine place = Affine::translate(point(0.8))
-                                     .after(Affine::rotateDegrees(point(180.0)));
+            const Affine place =
+                Affine::translate(point(0.8)).after(Affine::rotateDegrees(point(180.0)));
             return makeTransform(makeTorus(major, rnd.uniform(0.1, 0.8) * major), place);
         }
         case PrimitiveKind::HalfSpace: {

@@ -34,8 +34,10 @@ LD bisectLD(F f, LD a, LD b) {
     for (int i = 0; i < 200; ++i) {
         const LD m = a + (b - a) / 2;
         if (m <= a || m >= b) break;
-        if ((f(m) <= 0) == negA) a = m;
-        else b = m;
+        if ((f(m) <= 0) == negA)
+            a = m;
+        else
+            b = m;
     }
     return a + (b - a) / 2;
 }

@@ -26,7 +26,8 @@ inline RefSpan chord(const SphereOracle& o, LD r, LD far, LD a, LD tolerance) {
 }
 
 /// Outer chord minus inner chord: one or two spans.
-inline std::vector<RefSpan> shellSpans(const RefSpan& outer, const SphereOracle& inner, const RefSpan& in) {
+inline std::vector<RefSpan> shellSpans(const RefSpan& outer, const SphereOracle& inner,
+                                       const RefSpan& in) {
     if (!inner.hit()) return {outer};
     return {{outer.in, in.in, outer.errIn, in.errIn}, {in.out, outer.out, in.errOut, outer.errOut}};
 }
@@ -38,13 +39,15 @@ struct ShellTally {
 
 /// Every reference span wider than 2·tolerance·t is found with both ends within bounds, and
 /// every span found is one of the reference's.
-inline void compare(const SpanList& got, const std::vector<RefSpan>& ref, double tolerance, ShellTally& tally) {
+inline void compare(const SpanList& got, const std::vector<RefSpan>& ref, double tolerance,
+                    ShellTally& tally) {
     int next = 0;
     for (const RefSpan& r : ref) {
         const bool owed = r.out - r.in > 2 * tolerance * std::fabs(r.out);
         const Span* match = nullptr;
         for (int k = next; k < got.size(); ++k)
-            if (std::fabs(got[k].in.t - r.in) <= r.errIn && std::fabs(got[k].out.t - r.out) <= r.errOut) {
+            if (std::fabs(got[k].in.t - r.in) <= r.errIn &&
+                std::fabs(got[k].out.t - r.out) <= r.errOut) {
                 match = &got[k];
                 next = k + 1;
                 break;
@@ -61,6 +64,5 @@ inline void compare(const SpanList& got, const std::vector<RefSpan>& ref, double
     }
     CHECK(next == got.size());  // nothing found that the reference does not have
 }
-
 
 }  // namespace kerf::test

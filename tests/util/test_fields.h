@@ -1,4 +1,4 @@
-// External scalar fields with closed forms, for the tests of Op::Field (csg/scalar_field.h):
+// External scalar fields with closed forms, for the tests of Op::Field (csg/tape/scalar_field.h):
 // the exact signed distance to a sphere (smooth but at its centre) and to an axis-aligned box
 // (kinks on the medial planes, as a mesh's distance has). Their ranges are the same formulas
 // in interval arithmetic: sound, and exact up to rounding where each term depends on one axis.
@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "csg/interval.h"
-#include "csg/scalar_field.h"
+#include "csg/interval/interval.h"
+#include "csg/tape/scalar_field.h"
 
 namespace kerf::test {
 

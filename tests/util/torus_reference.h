@@ -20,7 +20,8 @@ inline LD evalPolyLD(const std::vector<LD>& c, LD t) {
 
 /// Sign changes of the polynomial c (ascending coefficients) on [lo, hi]; critical points
 /// are appended to `critical` when given.
-inline std::vector<LD> polyRootsLD(const std::vector<LD>& c, LD lo, LD hi, std::vector<LD>* critical) {
+inline std::vector<LD> polyRootsLD(const std::vector<LD>& c, LD lo, LD hi,
+                                   std::vector<LD>* critical) {
     std::vector<LD> d;
     for (size_t i = 1; i < c.size(); ++i) d.push_back(c[i] * LD(i));
     std::vector<LD> pts{lo};
@@ -33,7 +34,8 @@ inline std::vector<LD> polyRootsLD(const std::vector<LD>& c, LD lo, LD hi, std::
     std::vector<LD> roots;
     auto f = [&](LD t) { return evalPolyLD(c, t); };
     for (size_t i = 0; i + 1 < pts.size(); ++i)
-        if ((f(pts[i]) <= 0) != (f(pts[i + 1]) <= 0)) roots.push_back(bisectLD(f, pts[i], pts[i + 1]));
+        if ((f(pts[i]) <= 0) != (f(pts[i + 1]) <= 0))
+            roots.push_back(bisectLD(f, pts[i], pts[i + 1]));
     return roots;
 }
 
@@ -46,7 +48,8 @@ struct TorusReference {
 inline TorusReference torusReference(const LV3& o, const LV3& d, LD R, LD r) {
     const LD dd = glm::dot(d, d), od = glm::dot(o, d), oo = glm::dot(o, o);
     const LD k = oo + R * R - r * r;
-    const LD A2 = d.x * d.x + d.z * d.z, A1 = 2 * (o.x * d.x + o.z * d.z), A0 = o.x * o.x + o.z * o.z;
+    const LD A2 = d.x * d.x + d.z * d.z, A1 = 2 * (o.x * d.x + o.z * d.z),
+             A0 = o.x * o.x + o.z * o.z;
     const std::vector<LD> c{k * k - 4 * R * R * A0, 4 * od * k - 4 * R * R * A1,
                             4 * od * od + 2 * dd * k - 4 * R * R * A2, 4 * dd * od, dd * dd};
     auto h = [&](LD t) {

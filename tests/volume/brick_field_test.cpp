@@ -1,4 +1,4 @@
-// The baked field (volume/bricked_field.h) against closed forms: a linear function comes back
+// The baked field (volume/grids/bricked_field.h) against closed forms: a linear function comes back
 // exactly, range() holds every value of random boxes, the Lipschitz bound holds between random
 // points, the bake is the same on one thread as on many, and bad input is refused.
 #include <tbb/task_arena.h>
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "volume/bricked_field.h"
+#include "volume/grids/bricked_field.h"
 
 using namespace kerf;
 

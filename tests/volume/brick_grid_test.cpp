@@ -2,7 +2,7 @@
 // of small odd-sized grids, trilinear samples against a flat reference (bit for bit: the same
 // lerp order, written out again here), sparse allocation counted, and range bounds checked by
 // brute force.
-#include "volume/brick_grid.h"
+#include "volume/grids/brick_grid.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

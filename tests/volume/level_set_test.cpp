@@ -3,12 +3,12 @@
 // shrunk by a voxel always hit (grazing rays included); a ray touching the interpolant's zero
 // set (a double root) hits; CSG with a box; the implicit form's range holds its values; every
 // error of a file that cannot be a solid.
-#include "volume/level_set_node.h"
-#include "volume/vdb_level_set.h"
+#include "volume/grids/level_set_node.h"
+#include "volume/grids/vdb_level_set.h"
 
-#include "csg/solids.h"
-#include "util/scratch_folder.h"
+#include "csg/tree/solids.h"
 #include "util/level_set_files.h"
+#include "util/scratch_folder.h"
 
 #include <catch2/catch.hpp>
 
@@ -104,7 +104,8 @@ TEST_CASE("LevelSet/the grid's own transform places it (rotation, translation)",
     }
 }
 
-TEST_CASE("LevelSet/grazing rays on a sphere hit where the sphere shrunk by a voxel is hit", "[volume]") {
+TEST_CASE("LevelSet/grazing rays on a sphere hit where the sphere shrunk by a voxel is hit",
+          "[volume]") {
     test::ScratchFolder dir;
     const double radius = 1.5, voxel = 0.05;
     test::writeGrids(dir.file("s.vdb"), {test::sphereGrid(radius, Vec3(0.0), voxel)});
@@ -136,8 +137,9 @@ TEST_CASE("LevelSet/torus hits and grazing rays against the analytic torus", "[v
     // The torus distance's Hessian has eigenvalues of magnitude ≤ max(1/q, 1/ρ) (q from the
     // tube's core circle ≥ r − 2h, ρ from the axis ≥ R − r − 2h): the trilinear error is
     // at most (3h²/8)·max(1/q, 1/ρ), plus the samples' float rounding.
-    const double bound = 3 * voxel * voxel / 8 * std::max(1 / (r - 2 * voxel), 1 / (R - r - 2 * voxel)) +
-                         1e-5 * voxel;
+    const double bound =
+        3 * voxel * voxel / 8 * std::max(1 / (r - 2 * voxel), 1 / (R - r - 2 * voxel)) +
+        1e-5 * voxel;
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     int shrunkHits = 0, misses = 0;
@@ -217,7 +219,8 @@ TEST_CASE("LevelSet/difference with a box", "[volume]") {
     test::writeGrids(dir.file("s.vdb"), {test::sphereGrid(radius, Vec3(0.0), voxel)});
     const NodePtr sphere = levelSetSolid(loadLevelSet(dir.file("s.vdb")));
     // The upper half (z > 0.2) cut away.
-    const NodePtr cut = makeBoolean(BoolOp::Difference, {sphere, makeBox(Vec3(-2, -2, 0.2), Vec3(2, 2, 2))});
+    const NodePtr cut =
+        makeBoolean(BoolOp::Difference, {sphere, makeBox(Vec3(-2, -2, 0.2), Vec3(2, 2, 2))});
     const double bound = voxel * voxel / (4 * (radius - 2 * voxel)) + 1e-5 * voxel;
     TraceContext ctx;
     SpanList spans;
@@ -227,7 +230,8 @@ TEST_CASE("LevelSet/difference with a box", "[volume]") {
     CHECK(spans[0].in.t == Approx(2.8).epsilon(1e-12));
     CHECK(spans[0].in.normal.z > 0.0);  // the cutter's normal, flipped
     const double zExit = -std::sqrt(radius * radius - 0.18);
-    CHECK(std::fabs((3.0 - spans[0].out.t) - zExit) <= bound / std::cos(std::asin(std::sqrt(0.18))) + 1e-9);
+    CHECK(std::fabs((3.0 - spans[0].out.t) - zExit) <=
+          bound / std::cos(std::asin(std::sqrt(0.18))) + 1e-9);
     // Below the cut the sphere is whole: a horizontal ray at z = −0.5 crosses it twice.
     cut->spans(Ray{Vec3(-3.0, 0.0, -0.5), Vec3(1, 0, 0)}, 0.0, kInf, ctx, spans);
     REQUIRE(spans.size() == 1);
@@ -275,10 +279,12 @@ TEST_CASE("LevelSet/implicit form: range holds the values, inside by sign", "[vo
     for (int i = 0; i < 2000; ++i) {
         const Vec3 lo(u(rng), u(rng) * 0.3, u(rng));
         const Vec3 hi = lo + Vec3(w(rng), w(rng), w(rng));
-        const Interval range = solid->valueInterval({Interval(lo.x, hi.x), Interval(lo.y, hi.y), Interval(lo.z, hi.z)});
+        const Interval range = solid->valueInterval(
+            {Interval(lo.x, hi.x), Interval(lo.y, hi.y), Interval(lo.z, hi.z)});
         for (int k = 0; k < 20; ++k) {
-            const Vec3 p = lo + Vec3((hi.x - lo.x) * (k % 3) / 2.0, (hi.y - lo.y) * ((k / 3) % 3) / 2.0,
-                                     (hi.z - lo.z) * std::fmod(k * 0.37, 1.0));
+            const Vec3 p =
+                lo + Vec3((hi.x - lo.x) * (k % 3) / 2.0, (hi.y - lo.y) * ((k / 3) % 3) / 2.0,
+                          (hi.z - lo.z) * std::fmod(k * 0.37, 1.0));
             const double v = solid->value(p);
             REQUIRE(range.contains(v));
             // Inside by the sign, where the exact torus says so beyond the interpolation error.
@@ -300,19 +306,23 @@ TEST_CASE("LevelSet/errors name what is wrong", "[volume]") {
         return "";
     };
     CHECK(message(dir.file("none.vdb"), "") == "no such file");
-    {
-        std::ofstream(dir.file("text.vdb")) << "not a vdb";
-    }
-    CHECK_THAT(message(dir.file("text.vdb"), ""), Catch::StartsWith("cannot read it as a .vdb file"));
-    test::writeGrids(dir.file("many.vdb"), {test::fogGrid(), test::vectorGrid(), test::sphereGrid(1.0, Vec3(0.0), 0.1)});
+    { std::ofstream(dir.file("text.vdb")) << "not a vdb"; }
+    CHECK_THAT(message(dir.file("text.vdb"), ""),
+               Catch::StartsWith("cannot read it as a .vdb file"));
+    test::writeGrids(dir.file("many.vdb"),
+                     {test::fogGrid(), test::vectorGrid(), test::sphereGrid(1.0, Vec3(0.0), 0.1)});
     CHECK(message(dir.file("many.vdb"), "missing") ==
-          "it has no grid named 'missing'; its grids: 'density' (float, fog volume), 'sphere' (float, "
+          "it has no grid named 'missing'; its grids: 'density' (float, fog volume), 'sphere' "
+          "(float, "
           "level set), 'vel' (vec3s, unknown class)");
-    CHECK_THAT(message(dir.file("many.vdb"), "density"), Catch::StartsWith("grid 'density' is a fog volume"));
-    CHECK(message(dir.file("many.vdb"), "vel") == "grid 'vel' holds vec3s values; a solid needs a float level set");
+    CHECK_THAT(message(dir.file("many.vdb"), "density"),
+               Catch::StartsWith("grid 'density' is a fog volume"));
+    CHECK(message(dir.file("many.vdb"), "vel") ==
+          "grid 'vel' holds vec3s values; a solid needs a float level set");
     CHECK(message(dir.file("many.vdb"), "").empty());  // the level set is found by its class
     test::writeGrids(dir.file("fog.vdb"), {test::fogGrid()});
-    CHECK_THAT(message(dir.file("fog.vdb"), ""), Catch::StartsWith("grid 'density' is a fog volume"));
+    CHECK_THAT(message(dir.file("fog.vdb"), ""),
+               Catch::StartsWith("grid 'density' is a fog volume"));
     // A fog volume without its class: no value ≤ 0 (all densities are ≥ 0 and the background 0
     // is refused first as no outside).
     auto unclassed = test::fogGrid("d2");

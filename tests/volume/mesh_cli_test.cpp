@@ -10,8 +10,10 @@ using namespace kerf::test;
 
 TEST_CASE("mesh_cli/writes a mesh and its statistics") {
     TempDir dir;
-    dir.write("ball.kerf", "object sphere { radius 1 };\nobject halfspace { normal <0, 1, 0> offset -1 };\n");
-    const KerfRun run = runKerf(dir, {"mesh", "ball.kerf", "-o", "ball.stl", "--voxel", "0.2", "--stats"});
+    dir.write("ball.kerf",
+              "object sphere { radius 1 };\nobject halfspace { normal <0, 1, 0> offset -1 };\n");
+    const KerfRun run =
+        runKerf(dir, {"mesh", "ball.kerf", "-o", "ball.stl", "--voxel", "0.2", "--stats"});
     INFO(run.err);
     REQUIRE(run.exitCode == 0);
     CHECK(run.err.find("left out 1 unbounded object") != std::string::npos);
@@ -50,7 +52,8 @@ TEST_CASE("mesh_cli/bad options exit 2 and write nothing") {
         CHECK(run.err.find(c.message) != std::string::npos);
         CHECK(dir.listing() == std::vector<std::string>{"ball.kerf"});
     }
-    const KerfRun wrongFormat = runKerf(dir, {"mesh", "ball.kerf", "-o", "ball.png", "--voxel", "0.1"});
+    const KerfRun wrongFormat =
+        runKerf(dir, {"mesh", "ball.kerf", "-o", "ball.png", "--voxel", "0.1"});
     CHECK(wrongFormat.exitCode == 2);
     CHECK(wrongFormat.err.find("must end in .obj, .ply or .stl") != std::string::npos);
     CHECK(dir.listing() == std::vector<std::string>{"ball.kerf"});

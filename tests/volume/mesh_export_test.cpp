@@ -2,12 +2,12 @@
 // running it in opposite directions (watertight, manifold, consistently wound); vertices lie
 // on a sphere; the enclosed volume converges as h²; a box's edges and corners are kept; the
 // measured distance to the surface equals the exact one where that is known.
-#include "volume/mesh_export.h"
+#include "volume/export/mesh_export.h"
 
 #include "util/compiled_scene.h"
 
-#include <catch2/catch.hpp>
 #include <tbb/global_control.h>
+#include <catch2/catch.hpp>
 
 #include <cmath>
 #include <map>
@@ -114,10 +114,11 @@ TEST_CASE("mesh_export/box minus sphere keeps the box's edges and corner") {
         INFO(k.name);
         // The sphere takes a bite out of the corner at hi, so the edges there end on it.
         char model[512];
-        std::snprintf(model, sizeof model,
-                      "object difference { box { min <%.17g, %.17g, %.17g> max <%.17g, %.17g, %.17g> } "
-                      "sphere { center <%.17g, %.17g, %.17g> radius 0.7 } };",
-                      k.lo.x, k.lo.y, k.lo.z, k.hi.x, k.hi.y, k.hi.z, k.hi.x, k.hi.y, k.hi.z);
+        std::snprintf(
+            model, sizeof model,
+            "object difference { box { min <%.17g, %.17g, %.17g> max <%.17g, %.17g, %.17g> } "
+            "sphere { center <%.17g, %.17g, %.17g> radius 0.7 } };",
+            k.lo.x, k.lo.y, k.lo.z, k.hi.x, k.hi.y, k.hi.z, k.hi.x, k.hi.y, k.hi.z);
         MeshExportStats stats;
         const TriangleMesh mesh = meshOf(model, k.h, stats);
         requireWatertight(mesh);
@@ -158,9 +159,9 @@ TEST_CASE("mesh_export/box minus sphere keeps the box's edges and corner") {
 
 TEST_CASE("mesh_export/torus: watertight, volume 2 pi^2 R r^2 within O(h^2)") {
     MeshExportStats stats;
-    const TriangleMesh mesh = meshOf(
-        "object torus { major 1 minor 0.3 } rotate <20, 10, 0> translate <0.05, 0.1, 0>;", 0.05,
-        stats);
+    const TriangleMesh mesh =
+        meshOf("object torus { major 1 minor 0.3 } rotate <20, 10, 0> translate <0.05, 0.1, 0>;",
+               0.05, stats);
     requireWatertight(mesh);
     const double exact = 2.0 * kPi * kPi * 1.0 * 0.09;
     INFO("volume " << stats.meshVolume << " exact " << exact);
@@ -170,8 +171,8 @@ TEST_CASE("mesh_export/torus: watertight, volume 2 pi^2 R r^2 within O(h^2)") {
 }
 
 TEST_CASE("mesh_export/gyroid ball model: watertight, volume within the model's bounds") {
-    const Scene scene = test::compiledSceneFile(std::string(KERF_SOURCE_DIR) +
-                                                "/models/gyroid_sphere.kerf");
+    const Scene scene =
+        test::compiledSceneFile(std::string(KERF_SOURCE_DIR) + "/models/gyroid_sphere.kerf");
     for (const double adaptivity : {0.0, 0.5}) {
         INFO("adaptivity " << adaptivity);
         MeshExportOptions options;
@@ -206,8 +207,8 @@ TEST_CASE("mesh_export/bad voxel sizes are refused") {
 }
 
 TEST_CASE("mesh_export/the same mesh whatever the thread count") {
-    const Scene scene = test::compiledSceneFile(std::string(KERF_SOURCE_DIR) +
-                                                "/models/gyroid_sphere.kerf");
+    const Scene scene =
+        test::compiledSceneFile(std::string(KERF_SOURCE_DIR) + "/models/gyroid_sphere.kerf");
     MeshExportOptions options;
     options.voxel = 0.08;
     options.adaptivity = 0.2;

@@ -1,7 +1,7 @@
 // The mesh writers read back: OBJ to the same doubles, PLY and STL to the same floats, the same
 // triangles in the same order and winding; a small reader per format, written from the specs.
 #include "io/mesh_writers.h"
-#include "volume/mesh_export.h"
+#include "volume/export/mesh_export.h"
 
 #include "util/compiled_scene.h"
 #include "util/scratch_folder.h"
@@ -132,7 +132,8 @@ TEST_CASE("mesh_files/OBJ, PLY and STL read back to the same mesh") {
         REQUIRE(r.xyz.size() == 3 * mesh.vertices.size());
         for (size_t i = 0; i < mesh.vertices.size(); ++i)
             for (int a = 0; a < 3; ++a) REQUIRE(r.xyz[3 * i + size_t(a)] == mesh.vertices[i][a]);
-        REQUIRE(r.indices == std::vector<uint32_t>(arrays.indices, arrays.indices + 3 * arrays.triangleCount));
+        REQUIRE(r.indices ==
+                std::vector<uint32_t>(arrays.indices, arrays.indices + 3 * arrays.triangleCount));
     }
     SECTION("PLY: the same floats and triangles") {
         writeMeshFile(folder.file("m.ply"), MeshFormat::Ply, arrays);
@@ -141,7 +142,8 @@ TEST_CASE("mesh_files/OBJ, PLY and STL read back to the same mesh") {
         for (size_t i = 0; i < mesh.vertices.size(); ++i)
             for (int a = 0; a < 3; ++a)
                 REQUIRE(r.xyz[3 * i + size_t(a)] == double(float(mesh.vertices[i][a])));
-        REQUIRE(r.indices == std::vector<uint32_t>(arrays.indices, arrays.indices + 3 * arrays.triangleCount));
+        REQUIRE(r.indices ==
+                std::vector<uint32_t>(arrays.indices, arrays.indices + 3 * arrays.triangleCount));
     }
     SECTION("STL: each triangle's corners as floats, in order, with its outward unit normal") {
         writeMeshFile(folder.file("m.stl"), MeshFormat::Stl, arrays);

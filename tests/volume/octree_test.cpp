@@ -1,13 +1,13 @@
 // The octree answers as the plain object tree does: first hits of every pixel ray (hit or miss,
 // distance within the tolerance, the side crossed) and the crossings of whole spans, on
 // implicit scenes at several octree depths and on every model in models/.
-#include "volume/accelerate.h"
+#include "volume/octree/accelerate.h"
 
-#include "csg/scene_geometry.h"
+#include "csg/bvh/scene_geometry.h"
 #include "lang/compile.h"
-#include "util/compiled_scene.h"
 #include "render/camera.h"
 #include "render/render.h"
+#include "util/compiled_scene.h"
 
 #include <catch2/catch.hpp>
 
@@ -91,7 +91,9 @@ Comparison compare(const Scene& scene, int width, int height, Accel accel, int d
     ctx.relTolerance = tolerance;
     Comparison m;
     SpanList a, b;
-    auto close = [&](double x, double y) { return std::fabs(x - y) <= 4.0 * tolerance * std::fabs(x); };
+    auto close = [&](double x, double y) {
+        return std::fabs(x - y) <= 4.0 * tolerance * std::fabs(x);
+    };
     // Object o's span crossings on the ray, plain against accelerated.
     auto compareSpans = [&](size_t o, const Ray& ray, const std::string& where) {
         scene.objects[o]->spans(ray, 0.0, kInf, ctx, a);
@@ -213,16 +215,17 @@ TEST_CASE("the default rule: an octree where an implicit spans many cells, not f
     const Scene ball = compiled(kGyroidBall);
     OctreeOptions options;
     options.eye = ball.camera.eye;
-    options.footprintPerDistance = 2.0 * std::tan(0.5 * 35.0 * 3.14159265358979323846 / 180.0) / 600;
-    CHECK(octreePays(ball.objects[0], options));   // the gyroid ball: 130 cells wide
+    options.footprintPerDistance =
+        2.0 * std::tan(0.5 * 35.0 * 3.14159265358979323846 / 180.0) / 600;
+    CHECK(octreePays(ball.objects[0], options));        // the gyroid ball: 130 cells wide
     CHECK_FALSE(octreePays(ball.objects[1], options));  // the floor: unbounded, no implicit
     // A union of small implicit blobs, each about one finest cell wide at this footprint.
     std::string blobs = "object union {\n";
     for (int i = 0; i < 40; ++i)
-        blobs += "  implicit { f x^2 + y^2 + z^2 - 0.0025 bound box { min <-0.05, -0.05, -0.05> "
-                 "max <0.05, 0.05, 0.05> } } translate <" +
-                 std::to_string(-3.0 + 0.15 * i) + ", " + std::to_string((i * 7) % 11 * 0.5) +
-                 ", 0>\n";
+        blobs +=
+            "  implicit { f x^2 + y^2 + z^2 - 0.0025 bound box { min <-0.05, -0.05, -0.05> "
+            "max <0.05, 0.05, 0.05> } } translate <" +
+            std::to_string(-3.0 + 0.15 * i) + ", " + std::to_string((i * 7) % 11 * 0.5) + ", 0>\n";
     blobs += "};\ncamera { eye <0, 3, -12> look_at <0, 2, 0> up <0, 1, 0> fov 35 }\n";
     const Scene small = compiled(blobs);
     CHECK_FALSE(octreePays(small.objects[0], options));
@@ -246,7 +249,8 @@ camera { eye <0.4, 2.4, -2.6> look_at <0, 0.2, 0> fov 45 }
     }
 }
 
-TEST_CASE("octree keeps no span its first run's tree gives before that run's search range", "[octree]") {
+TEST_CASE("octree keeps no span its first run's tree gives before that run's search range",
+          "[octree]") {
     // A ray starting in the bore of a bored cube (outside the solid) crosses empty cells, then
     // a cell whose pruned tree has no bore: that tree says "inside" back at the ray's start,
     // where it is not the object. Only spans within the run's search range count (found in

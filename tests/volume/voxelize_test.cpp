@@ -1,16 +1,16 @@
-// kerf voxelize against closed forms: the .vdb is read back (volume/vdb_grid_files.h); grid names, class
-// and transform; every active voxel within band + 1 voxel of the analytic surface, its value
-// the exact signed distance within a stated error and its sign right; the zero crossing of
+// kerf voxelize against closed forms: the .vdb is read back (volume/grids/vdb_grid_files.h); grid
+// names, class and transform; every active voxel within band + 1 voxel of the analytic surface, its
+// value the exact signed distance within a stated error and its sign right; the zero crossing of
 // the trilinear interpolant along random lines within half a voxel of the analytic surface.
-#include "volume/voxelize.h"
+#include "volume/export/voxelize.h"
 
 #include "util/compiled_scene.h"
 #include "util/scratch_folder.h"
 
-#include "volume/vdb_grid_files.h"
+#include "volume/grids/vdb_grid_files.h"
 
-#include <catch2/catch.hpp>
 #include <tbb/global_control.h>
+#include <catch2/catch.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -54,9 +54,9 @@ Vec3 unitVector(std::mt19937_64& rng) {
 }
 
 struct GridReport {
-    double maxValueError = 0.0;     ///< |value − sdf| over active voxels, voxels
-    double maxActiveDistance = 0.0; ///< |sdf| over active voxels, voxels
-    double maxCrossingError = 0.0;  ///< |sdf| at the interpolant's zero crossings, voxels
+    double maxValueError = 0.0;      ///< |value − sdf| over active voxels, voxels
+    double maxActiveDistance = 0.0;  ///< |sdf| over active voxels, voxels
+    double maxCrossingError = 0.0;   ///< |sdf| at the interpolant's zero crossings, voxels
     size_t crossings = 0;
     size_t wrongSigns = 0;
     size_t missing = 0;  ///< voxels nearer than the band (less the mesh's error) left inactive
@@ -80,7 +80,8 @@ GridReport measure(const VdbFloatGrid& grid, const Sdf& sdf, const Vec3& lo, con
     for (int64_t i = int64_t(std::floor(lo.x / h)); i <= int64_t(std::ceil(hi.x / h)); ++i)
         for (int64_t j = int64_t(std::floor(lo.y / h)); j <= int64_t(std::ceil(hi.y / h)); ++j)
             for (int64_t k = int64_t(std::floor(lo.z / h)); k <= int64_t(std::ceil(hi.z / h)); ++k)
-                if (std::abs(sdf(Vec3(double(i) * h, double(j) * h, double(k) * h))) < (band - 0.05) * h &&
+                if (std::abs(sdf(Vec3(double(i) * h, double(j) * h, double(k) * h))) <
+                        (band - 0.05) * h &&
                     !grid.active(int(i), int(j), int(k))) {
                     ++r.missing;
                 }
@@ -127,8 +128,8 @@ void requireLevelSet(const VdbFloatGrid& g, const std::string& name, double h) {
 
 void requireAccurate(const GridReport& r, double valueError, double band = 3.0) {
     INFO("value error " << r.maxValueError << " voxels, active voxels up to " << r.maxActiveDistance
-                        << " voxels from the surface, " << r.crossings
-                        << " crossings up to " << r.maxCrossingError << " voxels off");
+                        << " voxels from the surface, " << r.crossings << " crossings up to "
+                        << r.maxCrossingError << " voxels off");
     CHECK(r.wrongSigns == 0);
     CHECK(r.missing == 0);
     CHECK(r.maxActiveDistance <= band + valueError);  // the band, and the mesh's error
@@ -150,14 +151,16 @@ TEST_CASE("voxelize/sphere: a level set of the exact distance") {
     REQUIRE(grids.size() == 1);
     requireLevelSet(grids[0], "object_0", h);
     CHECK(stats.grids[0].activeVoxels == grids[0].activeVoxelCount());
-    const GridReport r = measure(grids[0], [&](const Vec3& p) { return sdfSphere(p, c, 1.0); },
-                                 c - Vec3(1.2), c + Vec3(1.2));
+    const GridReport r = measure(
+        grids[0], [&](const Vec3& p) { return sdfSphere(p, c, 1.0); }, c - Vec3(1.2),
+        c + Vec3(1.2));
     // The values are distances to a mesh with vertices on the sphere (32 voxels in radius):
     // its chords stand about e²/8r ≈ 0.008 voxel off it (measured 0.0095).
     requireAccurate(r, 0.02);
     // Only the band: as many voxels as the shell |d| < 3h holds (within 1%), a third of the
     // dense bounds' at this size.
-    const double shell = 4.0 / 3.0 * 3.14159265358979 * (std::pow(1.0 + 3 * h, 3) - std::pow(1.0 - 3 * h, 3));
+    const double shell =
+        4.0 / 3.0 * 3.14159265358979 * (std::pow(1.0 + 3 * h, 3) - std::pow(1.0 - 3 * h, 3));
     CHECK(double(stats.grids[0].activeVoxels) == Approx(shell / (h * h * h)).epsilon(0.01));
     CHECK(double(stats.grids[0].activeVoxels) < 0.35 * stats.grids[0].denseVoxels);
 }
@@ -171,9 +174,9 @@ TEST_CASE("voxelize/narrower and wider bands hold every voxel nearer than the ba
         voxelize("object sphere { center <0.1, 0.2, 0.3> radius 1 };", h, dir.file("s.vdb"), band);
         const std::vector<VdbFloatGrid> grids = readGrids(dir.file("s.vdb"));
         CHECK(grids[0].background == Approx(band * h).epsilon(1e-6));
-        const GridReport r = measure(grids[0],
-                                     [&](const Vec3& p) { return sdfSphere(p, c, 1.0); },
-                                     c - Vec3(1.4), c + Vec3(1.4));
+        const GridReport r = measure(
+            grids[0], [&](const Vec3& p) { return sdfSphere(p, c, 1.0); }, c - Vec3(1.4),
+            c + Vec3(1.4));
         requireAccurate(r, 0.03, band);
     }
 }
@@ -196,24 +199,24 @@ TEST_CASE("voxelize/box and a CSG difference: one grid each, named by order") {
     requireLevelSet(grids[0], "object_0", h);
     requireLevelSet(grids[1], "object_2", h);
     SECTION("box: flat faces, sharp edges and corners") {
-        const GridReport r = measure(grids[0],
-                                     [&](const Vec3& p) { return sdfBox(p, lo, hi); },
-                                     lo - Vec3(0.2), hi + Vec3(0.2));
+        const GridReport r = measure(
+            grids[0], [&](const Vec3& p) { return sdfBox(p, lo, hi); }, lo - Vec3(0.2),
+            hi + Vec3(0.2));
         requireAccurate(r, 0.02);
     }
     SECTION("a shell: a sphere minus a smaller one") {
         auto shell = [&](const Vec3& p) {
             return std::max(sdfSphere(p, c, 1.0), -sdfSphere(p, c, 0.55));
         };
-        const GridReport r =
-            measure(grids[1], shell, c - Vec3(1.2), c + Vec3(1.2));
+        const GridReport r = measure(grids[1], shell, c - Vec3(1.2), c + Vec3(1.2));
         // The inner sphere is 13 voxels in radius: flat triangles with edges up to 1.4 voxels
         // stand up to e²/8r ≈ 0.02 voxel off it (measured 0.021).
         requireAccurate(r, 0.03);
     }
 }
 
-// OpenVDB's transforms refuse voxels below 1.44e-5 (volume/voxelize.h), hence 1e-3, not 1e-6.
+// OpenVDB's transforms refuse voxels below 1.44e-5 (volume/export/voxelize.h), hence 1e-3, not
+// 1e-6.
 TEST_CASE("voxelize/a model scaled by 1e-3 or 1e6 voxelizes alike at a scaled voxel") {
     test::ScratchFolder dir;
     const double h = 1.0 / 16;
@@ -222,16 +225,18 @@ TEST_CASE("voxelize/a model scaled by 1e-3 or 1e6 voxelizes alike at a scaled vo
     const double k = 0.9713;  // faces off the lattice: no distance ties the band's edge
     for (int s = 0; s < 3; ++s) {
         char model[400];
-        std::snprintf(model, sizeof model,
-                      "object difference { box { min <-%.17g, -%.17g, -%.17g> max <%.17g, %.17g, %.17g> }"
-                      " sphere { center <%.17g, 0, 0> radius %.17g } };",
-                      k * scales[s], k * scales[s], k * scales[s], k * scales[s], k * scales[s],
-                      k * scales[s], 0.9317 * scales[s], 0.6131 * scales[s]);
+        std::snprintf(
+            model, sizeof model,
+            "object difference { box { min <-%.17g, -%.17g, -%.17g> max <%.17g, %.17g, %.17g> }"
+            " sphere { center <%.17g, 0, 0> radius %.17g } };",
+            k * scales[s], k * scales[s], k * scales[s], k * scales[s], k * scales[s],
+            k * scales[s], 0.9317 * scales[s], 0.6131 * scales[s]);
         const VoxelizeStats stats = voxelize(model, h * scales[s], dir.file("s.vdb"));
         REQUIRE(stats.grids.size() == 1);
         const std::vector<VdbFloatGrid> grids = readGrids(dir.file("s.vdb"));
-        grids[0].forEachActive(
-            [&](int, int, int, float value) { values[s].push_back(double(value) / (h * scales[s])); });
+        grids[0].forEachActive([&](int, int, int, float value) {
+            values[s].push_back(double(value) / (h * scales[s]));
+        });
     }
     // The same voxels, the same distances in voxels to float precision.
     REQUIRE(values[0].size() > 1000);
@@ -247,7 +252,8 @@ TEST_CASE("voxelize/a model scaled by 1e-3 or 1e6 voxelizes alike at a scaled vo
 TEST_CASE("voxelize/an empty solid is an empty level set") {
     test::ScratchFolder dir;
     const VoxelizeStats stats = voxelize(
-        "object intersection { sphere { center <-2, 0, 0> radius 1 } sphere { center <2, 0, 0> radius 1 } };",
+        "object intersection { sphere { center <-2, 0, 0> radius 1 } sphere { center <2, 0, 0> "
+        "radius 1 } };",
         0.1, dir.file("e.vdb"));
     REQUIRE(stats.grids.size() == 1);
     const std::vector<VdbFloatGrid> grids = readGrids(dir.file("e.vdb"));
@@ -259,8 +265,9 @@ TEST_CASE("voxelize/an empty solid is an empty level set") {
 
 TEST_CASE("voxelize/the same file whatever the thread count") {
     test::ScratchFolder dir;
-    const char* model = "object difference { box { min <-1, -1, -1> max <1, 1, 1> }\n"
-                        "                    sphere { center <1, 1, 1> radius 0.8 } };";
+    const char* model =
+        "object difference { box { min <-1, -1, -1> max <1, 1, 1> }\n"
+        "                    sphere { center <1, 1, 1> radius 0.8 } };";
     voxelize(model, 0.05, dir.file("many.vdb"));
     {
         tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
@@ -318,10 +325,11 @@ TEST_CASE("figures/voxelize: a unit sphere's file against the exact distance", "
     const std::vector<VdbFloatGrid> grids = readGrids(path);
     REQUIRE(grids.size() == 1);
     const VdbFloatGrid& grid = grids[0];
-    const GridReport r = measure(grid, [](const Vec3& p) { return glm::length(p) - 1.0; },
-                                 Vec3(-1.1), Vec3(1.1));
-    WARN("h " << grid.voxelSize.x << ": " << grid.activeVoxelCount() << " active voxels; value error up to "
-              << r.maxValueError << " voxels; active voxels up to " << r.maxActiveDistance
+    const GridReport r = measure(
+        grid, [](const Vec3& p) { return glm::length(p) - 1.0; }, Vec3(-1.1), Vec3(1.1));
+    WARN("h " << grid.voxelSize.x << ": " << grid.activeVoxelCount()
+              << " active voxels; value error up to " << r.maxValueError
+              << " voxels; active voxels up to " << r.maxActiveDistance
               << " voxels from the surface; " << r.missing << " missing; " << r.wrongSigns
               << " wrong signs; " << r.crossings << " crossings of the interpolant up to "
               << r.maxCrossingError << " voxels from the sphere");

@@ -1,0 +1,237 @@
+// The prism: closed-form spans of an outline of lines and Béziers extruded along y
+// (csg/profiles/prism.h).
+#include "csg/profiles/prism.h"
+
+#include "csg/primitives/closed_primitive.h"
+
+#include <algorithm>
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace kerf {
+
+namespace {
+
+/// A segment as a cubic Bézier's control points (a line: its ends, flagged).
+struct Piece {
+    std::array<Vec2, 4> p;
+    bool line = true;
+};
+
+/// Where the ray's shadow crosses the outline.
+struct Crossing {
+    double t;
+    Vec2 normal;  ///< the outline's normal there, either side (unit)
+};
+
+/// The 1-D cubic Bézier with coefficients g at s (de Casteljau).
+double bezier1(const std::array<double, 4>& g, double s) {
+    const double a = g[0] + s * (g[1] - g[0]), b = g[1] + s * (g[2] - g[1]),
+                 c = g[2] + s * (g[3] - g[2]);
+    const double d = a + s * (b - a), e = b + s * (c - b);
+    return d + s * (e - d);
+}
+
+Vec2 bezier2(const std::array<Vec2, 4>& p, double s) {
+    const double u = 1.0 - s;
+    return u * u * u * p[0] + 3.0 * u * u * s * p[1] + 3.0 * u * s * s * p[2] + s * s * s * p[3];
+}
+
+Vec2 tangent(const std::array<Vec2, 4>& p, double s) {
+    const double u = 1.0 - s;
+    const Vec2 d = u * u * (p[1] - p[0]) + 2.0 * u * s * (p[2] - p[1]) + s * s * (p[3] - p[2]);
+    return d != Vec2(0.0) ? d : p[3] - p[0];
+}
+
+class Prism final : public ClosedFormPrimitive<Prism> {
+public:
+    Prism(const PathShape& shape, double y0, double y1, NodePtr implicitForm)
+        : mY0(y0),
+          mY1(y1),
+          mImplicit(std::move(implicitForm)),
+          mForm(static_cast<const Primitive&>(*mImplicit)) {
+        mBounds = mImplicit->bounds();
+        for (const PathLoop& loop : shape.loops) {
+            std::vector<Piece> pieces;
+            for (const PathSegment& s : loop.segments) {
+                Piece piece;
+                switch (s.kind) {
+                    case PathSegment::Kind::Line: piece.p = {s.p[0], s.p[0], s.p[1], s.p[1]}; break;
+                    case PathSegment::Kind::Quadratic:  // raised to a cubic, as
+                                                        // csg/profiles/profile_field.cpp does
+                        piece.p = {s.p[0], s.p[0] + (2.0 / 3.0) * (s.p[1] - s.p[0]),
+                                   s.p[2] + (2.0 / 3.0) * (s.p[1] - s.p[2]), s.p[2]};
+                        piece.line = false;
+                        break;
+                    case PathSegment::Kind::Cubic:
+                        piece.p = {s.p[0], s.p[1], s.p[2], s.p[3]};
+                        piece.line = false;
+                        break;
+                    case PathSegment::Kind::Arc: break;  // makeExtrude passes no arcs
+                }
+                pieces.push_back(piece);
+            }
+            if (!pieces.empty()) mLoops.push_back(std::move(pieces));
+        }
+    }
+
+    double value(const Vec3& p) const override { return mImplicit->value(p); }
+    long double valueExtended(const LVec3& p) const override { return mImplicit->valueExtended(p); }
+    Interval valueInterval(const IntervalVec3& box) const override {
+        return mImplicit->valueInterval(box);
+    }
+    NodeKind kind() const override { return mImplicit->kind(); }
+    NodeParams params() const override { return mImplicit->params(); }
+    ExprId implicitExpr(ExprGraph& g, ExprId x, ExprId y, ExprId z) const override {
+        return mForm.implicitExpr(g, x, y, z);
+    }
+    const Tape* compiledForm() const override { return mForm.compiledForm(); }
+    double lipschitz() const override { return mForm.lipschitz(); }
+
+private:
+    friend class ClosedFormPrimitive<Prism>;
+
+    /// The crossings of the line o + t·d with one segment. g(s) = d × (B(s) − o), the side of
+    /// the segment's point, is a cubic with coefficients d × (pᵢ − o); its ends are the sides
+    /// of the segment's end points, computed as the neighbours compute them. The line crosses
+    /// where the class g ≤ 0 changes: on each piece of [0, 1] where g is monotone (split at
+    /// the roots of g'), at most once, found by bisection; a touch changes nothing.
+    static void crossSegment(const Piece& piece, Vec2 o, Vec2 d, double dd,
+                             std::vector<Crossing>& out) {
+        std::array<double, 4> g;
+        for (int i = 0; i < 4; ++i) g[i] = d.x * (piece.p[i].y - o.y) - d.y * (piece.p[i].x - o.x);
+        const auto add = [&](Vec2 q, Vec2 along) {
+            out.push_back({glm::dot(q - o, d) / dd, Vec2(-along.y, along.x) / glm::length(along)});
+        };
+        if (piece.line) {
+            if ((g[0] <= 0.0) == (g[3] <= 0.0)) return;
+            // At an end on the line, the end itself: both segments there give one t.
+            const Vec2 a = piece.p[0], b = piece.p[3];
+            add(g[3] == 0.0 ? b : g[0] == 0.0 ? a : a + g[0] / (g[0] - g[3]) * (b - a), b - a);
+            return;
+        }
+        // All control sides in one class: the curve (in their hull) stays in it.
+        const bool c0 = g[0] <= 0.0;
+        if ((g[1] <= 0.0) == c0 && (g[2] <= 0.0) == c0 && (g[3] <= 0.0) == c0) return;
+        // Split where g' = 3·(quadratic Bézier of the differences) vanishes.
+        const double a = g[1] - g[0], b = g[2] - g[1], c = g[3] - g[2];
+        const double qa = a - 2.0 * b + c, qb = 2.0 * (b - a), qc = a;
+        double cuts[4] = {0.0, 0.0, 0.0, 1.0};
+        int n = 1;
+        const auto keep = [&](double s) {
+            if (s > 0.0 && s < 1.0) cuts[n++] = s;
+        };
+        if (qa == 0.0) {
+            if (qb != 0.0) keep(-qc / qb);
+        } else {
+            const double disc = qb * qb - 4.0 * qa * qc;
+            if (disc >= 0.0) {
+                const double r = std::sqrt(disc);
+                const double q = -0.5 * (qb + (qb >= 0.0 ? r : -r));
+                double s1 = q / qa, s2 = q != 0.0 ? qc / q : s1;
+                if (s1 > s2) std::swap(s1, s2);
+                keep(s1);
+                if (s2 != s1) keep(s2);
+            }
+        }
+        cuts[n++] = 1.0;
+        for (int k = 0; k + 1 < n; ++k) {
+            const double lo0 = cuts[k], hi0 = cuts[k + 1];
+            const double glo = lo0 == 0.0 ? g[0] : bezier1(g, lo0),
+                         ghi = hi0 == 1.0 ? g[3] : bezier1(g, hi0);
+            const bool clo = glo <= 0.0;
+            if (clo == (ghi <= 0.0)) continue;
+            if (hi0 == 1.0 && g[3] == 0.0) {  // at the end point: as the next segment finds it
+                add(piece.p[3], tangent(piece.p, 1.0));
+                continue;
+            }
+            if (lo0 == 0.0 && g[0] == 0.0) {
+                add(piece.p[0], tangent(piece.p, 0.0));
+                continue;
+            }
+            double lo = lo0, hi = hi0;
+            for (int it = 0; it < 200 && hi - lo > 0.0; ++it) {
+                const double mid = 0.5 * (lo + hi);
+                if (mid <= lo || mid >= hi) break;
+                ((bezier1(g, mid) <= 0.0) == clo ? lo : hi) = mid;
+            }
+            add(bezier2(piece.p, hi), tangent(piece.p, hi));
+        }
+    }
+
+    /// Even-odd inside test of a point of the plane: the crossings of the line through it
+    /// along +x, on its positive side.
+    bool inside(Vec2 p) const {
+        std::vector<Crossing>& hits = mScratch;
+        hits.clear();
+        for (const auto& loop : mLoops)
+            for (const Piece& piece : loop) crossSegment(piece, p, Vec2(1.0, 0.0), 1.0, hits);
+        bool odd = false;
+        for (const Crossing& c : hits) odd ^= c.t > 0.0;
+        return odd;
+    }
+
+    void closedSpans(const Ray& ray, SpanList& out) const {
+        // The slab y0 ≤ y ≤ y1 (closed, as a box's).
+        double ta = -kInf, tb = kInf;
+        if (ray.dir.y == 0.0) {
+            if (ray.origin.y < mY0 || ray.origin.y > mY1) return;
+        } else {
+            const double t0 = (mY0 - ray.origin.y) / ray.dir.y,
+                         t1 = (mY1 - ray.origin.y) / ray.dir.y;
+            ta = std::min(t0, t1);
+            tb = std::max(t0, t1);
+        }
+        const Vec3 capIn(0.0, ray.dir.y > 0.0 ? -1.0 : 1.0, 0.0);
+        const Vec3 capOut = -capIn;
+        const Vec2 o(ray.origin.x, ray.origin.z), d(ray.dir.x, ray.dir.z);
+        if (d.x == 0.0 && d.y == 0.0) {  // along y: in or out of the outline throughout
+            if (inside(o)) out.push_back({boundary(ta, capIn), boundary(tb, capOut)});
+            return;
+        }
+        std::vector<Crossing>& hits = mScratch;
+        hits.clear();
+        const double dd = glm::dot(d, d);
+        for (const auto& loop : mLoops)
+            for (const Piece& piece : loop) crossSegment(piece, o, d, dd, hits);
+        std::sort(hits.begin(), hits.end(),
+                  [](const Crossing& x, const Crossing& y) { return x.t < y.t; });
+        // The line starts and ends outside: crossings pair up into inside intervals.
+        const auto side = [&](const Crossing& c, bool entering) {
+            const Vec2 n = (glm::dot(c.normal, d) < 0.0) == entering ? c.normal : -c.normal;
+            return Vec3(n.x, 0.0, n.y);
+        };
+        for (size_t k = 0; k + 1 < hits.size(); k += 2) {
+            const double tin = std::max(hits[k].t, ta), tout = std::min(hits[k + 1].t, tb);
+            if (!(tin <= tout)) continue;
+            const Boundary leave = hits[k + 1].t <= tb ? boundary(tout, side(hits[k + 1], false))
+                                                       : boundary(tout, capOut);
+            // A line through a vertex where the outline touches it from outside (a reflex
+            // vertex met from inside) leaves and enters at one t: one span, no gap.
+            if (!out.empty() && out.back().out.t == tin) {
+                out.back().out = leave;
+                continue;
+            }
+            out.push_back(
+                {hits[k].t >= ta ? boundary(tin, side(hits[k], true)) : boundary(tin, capIn),
+                 leave});
+        }
+    }
+
+    std::vector<std::vector<Piece>> mLoops;
+    double mY0, mY1;
+    NodePtr mImplicit;
+    const Primitive& mForm;
+    static thread_local std::vector<Crossing> mScratch;
+};
+
+thread_local std::vector<Crossing> Prism::mScratch;
+
+}  // namespace
+
+NodePtr makePrism(const PathShape& shape, double y0, double y1, NodePtr implicitForm) {
+    return std::make_shared<Prism>(shape, y0, y1, std::move(implicitForm));
+}
+
+}  // namespace kerf
