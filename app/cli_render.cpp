@@ -60,6 +60,7 @@ void checkNumbers(const RenderCommandLine& line) {
     requireAtMost(line.heightOption, line.height, kMaxImageSide);
     requireAtMost(line.sppOption, line.spp, kMaxSamplesPerPixel);
     requireAtLeast(line.threadsOption, line.threads, 0);
+    requireAtMost(line.threadsOption, line.threads, kMaxThreads);
     if (line.toleranceOption->count() > 0 && !(line.tolerance > 0 && line.tolerance < 1)) {
         throw UsageError("--tolerance must be between 0 and 1, exclusive (got " +
                          line.toleranceOption->results().front() + ")");

@@ -5,6 +5,7 @@
 #include "app/model_loader.h"
 #include "app/numbered_names.h"
 #include "app/option_text.h"
+#include "csg/format.h"
 #include "io/atomic_file.h"
 #include "io/image.h"
 #include "io/section_writers.h"
@@ -187,10 +188,10 @@ int runSlice(const SliceCommandLine& line) {
         throw UsageError("give exactly one of --plane, --point with --normal, or --stack");
     if (!(line.tolerance > 0.0 && line.tolerance < 1.0))
         throw UsageError("--tolerance must be between 0 and 1, exclusive (got " +
-                         std::to_string(line.tolerance) + ")");
+                         formatDouble("%g", line.tolerance) + ")");
     if (line.tolerance < 1e-13)
         throw UsageError("--tolerance must be at least 1e-13 (finer than doubles resolve; got " +
-                         std::to_string(line.tolerance) + ")");
+                         formatDouble("%g", line.tolerance) + ")");
     if (line.widthOption->count() && line.pixelOption->count())
         throw UsageError("--width and --pixel: give one of them");
     if (line.widthOption->count() && (line.width < 1 || line.width > 65536))

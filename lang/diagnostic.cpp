@@ -6,7 +6,8 @@
 namespace kerf {
 
 void DiagnosticSink::report(Diagnostic d) {
-    if (d.severity == Severity::Error) ++mErrorCount;
+    if (d.severity == Severity::Error && ++mErrorCount > kMaxErrorsShown) return;  // counted only
+    if (d.severity == Severity::Warning && ++mWarningCount > kMaxErrorsShown) return;
     mDiagnostics.push_back(std::move(d));
 }
 
@@ -172,6 +173,25 @@ std::string DiagnosticSink::format(bool withEchoes) const {
         if (!d.hint.empty()) out += "  hint: " + d.hint + '\n';
         for (const std::string& note : d.notes) out += "  note: " + note + '\n';
     }
+    return out + untoldCount();
+}
+
+std::string DiagnosticSink::untoldCount() const {
+    std::string out;
+    std::string fileName = "<input>";
+    for (const Diagnostic& d : mDiagnostics)
+        if (d.severity == Severity::Error && d.loc.file) {
+            fileName = *d.loc.file;
+            break;
+        }
+    const auto tell = [&](int count, const char* severity, const char* what) {
+        if (count <= kMaxErrorsShown) return;
+        out += fileName + ": " + severity + ": " + std::to_string(count - kMaxErrorsShown) +
+               " more " + what + " not shown (the first " + std::to_string(kMaxErrorsShown) +
+               " are)\n";
+    };
+    tell(mErrorCount, "error", "errors");
+    tell(mWarningCount, "warning", "warnings");
     return out;
 }
 

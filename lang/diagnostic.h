@@ -42,6 +42,10 @@ struct Diagnostic {
 /// Collects diagnostics and knows the text of every file read, to print the offending line.
 class DiagnosticSink {
 public:
+    /// Errors (and, apart, warnings) kept and printed; the rest are counted, and format() ends
+    /// with one line saying how many more there were (10,000 errors once took 1 MB of stderr).
+    static constexpr int kMaxErrorsShown = 20;
+
     void report(Diagnostic d);
     void error(const SourceLoc& loc, std::string message, std::string hint = {});
     void error(SourcePos pos, std::string message, std::string hint = {});
@@ -77,7 +81,11 @@ private:
         mSources;
     /// Per remembered file, the offsets where its lines start; built by the first locate().
     mutable std::vector<std::vector<uint32_t>> mLineStarts;
+    /// The line counting the errors and warnings past kMaxErrorsShown, or "".
+    std::string untoldCount() const;
+
     int mErrorCount = 0;
+    int mWarningCount = 0;
 };
 
 }  // namespace kerf

@@ -2,6 +2,7 @@
 // walked (for PLY lists, each count is read to skip its items), never beyond the file's end.
 #include "mesh/mesh_loader_truncation.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdint>
 #include <cstring>
@@ -18,9 +19,20 @@ std::string readAll(const std::string& path) {
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+/// Whether an STL that starts with "solid" is really ASCII: many CAD exporters write "solid"
+/// into a binary file's 80-byte header, and its facets are then mostly unprintable bytes.
+bool looksLikeText(const std::string& data) {
+    const size_t n = std::min<size_t>(data.size(), 1024);
+    for (size_t i = 0; i < n; ++i) {
+        const unsigned char c = static_cast<unsigned char>(data[i]);
+        if (c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v') return false;
+        if (c >= 0x7f) return false;
+    }
+    return true;
+}
+
 std::optional<std::string> stlTruncation(const std::string& data) {
-    // Readers take a file starting with "solid" for ASCII; anything else is binary.
-    if (data.compare(0, 5, "solid") == 0) return std::nullopt;
+    if (data.compare(0, 5, "solid") == 0 && looksLikeText(data)) return std::nullopt;  // ASCII
     if (data.size() < 84)
         return "truncated binary STL: " + std::to_string(data.size()) +
                " bytes, less than the 84 of its header";
@@ -31,6 +43,32 @@ std::optional<std::string> stlTruncation(const std::string& data) {
         return "truncated binary STL: the header declares " + std::to_string(facets) + " facets (" +
                std::to_string(needed) + " bytes) but the file has " + std::to_string(data.size()) +
                " bytes";
+    return std::nullopt;
+}
+
+/// A binary glTF (GLB): the 12-byte header's total length and each chunk's length must fit
+/// the file (a 640-byte file claiming a 4 GB JSON chunk once took 4.2 GB and 16 s).
+std::optional<std::string> glbTruncation(const std::string& data) {
+    if (data.size() < 12 || data.compare(0, 4, "glTF") != 0)
+        return "not a binary glTF file: " + std::to_string(data.size()) +
+               " bytes without the 12-byte 'glTF' header";
+    auto word = [&](size_t at) {
+        uint32_t v;
+        std::memcpy(&v, data.data() + at, 4);  // little-endian by the format
+        return uint64_t(v);
+    };
+    const uint64_t total = word(8);
+    if (total > data.size())
+        return "truncated binary glTF: the header declares " + std::to_string(total) +
+               " bytes but the file has " + std::to_string(data.size());
+    for (uint64_t at = 12; at < total;) {
+        if (total - at < 8) return "truncated binary glTF: a chunk header is cut off";
+        const uint64_t length = word(size_t(at));
+        if (length > total - at - 8)
+            return "truncated binary glTF: a chunk declares " + std::to_string(length) +
+                   " bytes but " + std::to_string(total - at - 8) + " remain";
+        at += 8 + length;
+    }
     return std::nullopt;
 }
 
@@ -57,10 +95,27 @@ struct PlyElement {
     std::vector<PlyProperty> properties;
 };
 
+/// An ASCII row takes at least two bytes per property (a digit and a separator), so a count
+/// the data cannot hold is refused before the importer reserves room for it.
+std::optional<std::string> asciiPlyShortfall(const std::vector<PlyElement>& elements,
+                                             uint64_t bytes) {
+    uint64_t needed = 0;
+    for (const PlyElement& e : elements) {
+        const uint64_t perRow = 2 * uint64_t(e.properties.size());
+        if (perRow != 0 && e.count > (bytes - std::min(bytes, needed)) / perRow)
+            return "truncated ASCII PLY: the header declares " + std::to_string(e.count) + " '" +
+                   e.name + "' rows, more than its " + std::to_string(bytes) +
+                   " bytes of data can hold";
+        needed += perRow * e.count;
+    }
+    return std::nullopt;
+}
+
 std::optional<std::string> plyTruncation(const std::string& data) {
     if (data.compare(0, 4, "ply\n") != 0 && data.compare(0, 5, "ply\r\n") != 0) return std::nullopt;
     const size_t end = data.find("end_header");
-    if (end == std::string::npos) return std::nullopt;  // the importer reports the bad header
+    // Assimp reads on at the end of the file for ever without it.
+    if (end == std::string::npos) return "PLY header has no end_header line";
     size_t pos = data.find('\n', end);
     if (pos == std::string::npos) return std::nullopt;
     ++pos;
@@ -99,7 +154,7 @@ std::optional<std::string> plyTruncation(const std::string& data) {
             elements.back().properties.push_back(p);
         }
     }
-    if (!binary) return std::nullopt;
+    if (!binary) return asciiPlyShortfall(elements, data.size() - pos);
 
     const uint64_t size = data.size();
     auto truncated = [&](const PlyElement& e, uint64_t row) {
@@ -140,8 +195,9 @@ std::optional<std::string> plyTruncation(const std::string& data) {
 std::optional<std::string> binaryMeshTruncation(const std::string& path) {
     std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".stl" && ext != ".ply") return std::nullopt;
+    if (ext != ".stl" && ext != ".ply" && ext != ".glb") return std::nullopt;
     const std::string data = readAll(path);
+    if (ext == ".glb") return glbTruncation(data);
     return ext == ".stl" ? stlTruncation(data) : plyTruncation(data);
 }
 

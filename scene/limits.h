@@ -54,6 +54,9 @@ constexpr int64_t kMaxPrimitives = 10'000'000;
 constexpr int kMaxImageSide = 32768;
 /// Samples per pixel, in a model and on the command line.
 constexpr int kMaxSamplesPerPixel = 65536;
+/// Worker threads of one process (`--threads`): far above any machine's cores, far below the
+/// 70,000 at which TBB's own thread creation crashes.
+constexpr int kMaxThreads = 4096;
 
 // ---- section views ----
 /// Section planes, in a model and on the command line together: each one is a half-space every

@@ -75,3 +75,16 @@ TEST_CASE("kerf slice --layers refuses bad ranges with exit code 2") {
         CHECK(dir.listing() == std::vector<std::string>{"m.kerf"});
     }
 }
+
+// Issue 24: the value was printed by std::to_string, so 1e-300 read "got 0.000000".
+TEST_CASE("kerf slice --tolerance below what doubles resolve names the value as given") {
+    TempDir dir;
+    dir.write("m.kerf", kModel);
+    const KerfRun run =
+        runKerf(dir, {"slice", "m.kerf", "-o", "c.svg", "--plane", "z=0", "--tolerance", "1e-300"});
+    INFO("stderr: " << run.err);
+    CHECK(run.exitCode == 2);
+    CHECK(run.err.find("at least 1e-13 (finer than doubles resolve; got 1e-300)") !=
+          std::string::npos);
+    CHECK(dir.listing() == std::vector<std::string>{"m.kerf"});
+}

@@ -44,6 +44,10 @@ TEST_CASE("kerf render: numeric option ranges") {
     SECTION("--height -3") { requireUsageError({"--height=-3"}, "--height"); }
     SECTION("--spp 0") { requireUsageError({"--spp", "0"}, "--spp"); }
     SECTION("--threads -1") { requireUsageError({"--threads=-1"}, "--threads"); }
+    // 70,000 crashed inside TBB's thread creation (issue 24); the limit is scene/limits.h's.
+    SECTION("--threads 70000") {
+        requireUsageError({"--threads=70000"}, "--threads must be at most 4096 (got 70000)");
+    }
     SECTION("--tolerance 0") { requireUsageError({"--tolerance", "0"}, "--tolerance"); }
     SECTION("--tolerance 1") { requireUsageError({"--tolerance", "1"}, "--tolerance"); }
     SECTION("--tolerance -1e-3") { requireUsageError({"--tolerance=-1e-3"}, "--tolerance"); }

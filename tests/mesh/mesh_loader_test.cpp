@@ -160,6 +160,46 @@ TEST_CASE("loadMesh::malformed files are errors naming the file") {
             dir.write("hollow.ply", plyHeader("binary_little_endian", 1000000, 1000000)),
             "truncated binary PLY: the data ends after 0 of the 1000000 'vertex' rows");
     }
+    // Issue 24: a "solid" header skipped the check, and Assimp then called the file ASCII.
+    SECTION("truncated binary STL whose header starts with solid, as CAD exporters write") {
+        auto facets = octahedronFacets();
+        facets.resize(3);
+        std::string stl = stlBinary(facets, 8);
+        stl.replace(0, 14, "solid exported");
+        requireMeshError(dir.write("cad.stl", stl),
+                         "truncated binary STL: the header declares 8 facets (484 bytes)");
+    }
+    SECTION("a complete binary STL whose header starts with solid still loads") {
+        std::string stl = stlBinaryText();
+        stl.replace(0, 14, "solid exported");
+        CHECK(loadMesh(dir.write("cad_full.stl", stl)).triangles.size() == 8);
+    }
+    SECTION("a PLY header with no end_header (Assimp read on at the end for ever)") {
+        requireMeshError(dir.write("endless.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"),
+                         "PLY header has no end_header line");
+    }
+    SECTION("an ASCII PLY declaring more rows than its bytes can hold") {
+        requireMeshError(dir.write("huge.ply", plyHeader("ascii", 4000000000u, 1) + "0 0 0\n"),
+                         "truncated ASCII PLY: the header declares 4000000000 'vertex' rows");
+    }
+    SECTION("a GLB whose JSON chunk claims 0xFFFFFFF0 bytes") {
+        std::string glb = "glTF";
+        appendBytes(glb, uint32_t(2));
+        appendBytes(glb, uint32_t(640));
+        appendBytes(glb, uint32_t(0xFFFFFFF0u));
+        glb += "JSON";
+        glb.resize(640, ' ');
+        requireMeshError(dir.write("claims.glb", glb),
+                         "truncated binary glTF: a chunk declares 4294967280 bytes but 620 remain");
+    }
+    SECTION("a GLB whose header declares more bytes than the file has") {
+        std::string glb = "glTF";
+        appendBytes(glb, uint32_t(2));
+        appendBytes(glb, uint32_t(100000));
+        requireMeshError(
+            dir.write("short.glb", glb),
+            "truncated binary glTF: the header declares 100000 bytes but the file has 12");
+    }
     SECTION("no triangles: points only") {
         requireMeshError(dir.write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\np 1 2 3\n"), "");
     }

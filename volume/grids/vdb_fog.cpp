@@ -2,6 +2,8 @@
 /// @brief The fog volume field (see vdb_fog.h).
 #include "volume/grids/vdb_fog.h"
 
+#include "volume/grids/block_pyramid.h"
+
 #include <openvdb/openvdb.h>
 
 #include <algorithm>
@@ -18,11 +20,39 @@ using Accessor = openvdb::tree::ValueAccessor<const openvdb::FloatTree, false>;
 /// Blocks are the grid's 8³ leaves; level k of the pyramid holds blocks of 8·2ᵏ voxels.
 constexpr int kBlock = 8;
 
-struct Level {
-    int n[3] = {0, 0, 0};
-    std::vector<float> lo, hi;
-    size_t index(int i, int j, int k) const { return (size_t(k) * n[1] + j) * n[0] + i; }
-};
+constexpr float kInfF = std::numeric_limits<float>::infinity();
+
+/// The grid's leaves and tiles as a min/max pyramid over its 8³ blocks: work and memory
+/// follow the leaves and tiles the file holds, not its bounding box.
+BlockPyramid makePyramid(const openvdb::FloatGrid& grid) {
+    const openvdb::CoordBBox box = grid.evalActiveVoxelBoundingBox();
+    BlockCoord lo, hi;
+    for (int a = 0; a < 3; ++a) {  // one voxel of margin for trilinear support
+        lo[a] = int(std::floor((double(box.min()[a]) - 1) / kBlock));
+        hi[a] = int(std::floor((double(box.max()[a]) + 1) / kBlock));
+    }
+    BlockPyramid pyramid(grid.background(), lo, hi);
+    for (auto leaf = grid.tree().cbeginLeaf(); leaf; ++leaf) {
+        float vlo = kInfF, vhi = -kInfF;
+        for (auto v = leaf->cbeginValueAll(); v; ++v)
+            vlo = std::min(vlo, *v), vhi = std::max(vhi, *v);
+        const openvdb::Coord o = leaf->origin();  // a multiple of 8: the division is exact
+        pyramid.addBlock({o.x() / kBlock, o.y() / kBlock, o.z() / kBlock}, vlo, vhi);
+    }
+    // Tiles (constant regions above the leaves) are aligned cubes of 2^k blocks a side.
+    for (auto t = grid.tree().cbeginValueAll(); t; ++t) {
+        if (t.isVoxelValue()) continue;
+        const openvdb::CoordBBox tb = t.getBoundingBox();
+        const int side = tb.dim().x() / kBlock;
+        int level = 0;
+        while ((1 << level) < side) ++level;
+        const openvdb::Coord o = tb.min();
+        const int cube = kBlock * side;
+        pyramid.addTile(level, {o.x() / cube, o.y() / cube, o.z() / cube}, float(*t));
+    }
+    pyramid.finish();
+    return pyramid;
+}
 
 /// Each thread's accessor for the field it used last (an unsafe accessor is not registered
 /// with the tree, so dropping it after its tree is gone is harmless).
@@ -35,67 +65,11 @@ std::atomic<uint64_t> gNextId{1};
 
 class FogField final : public ScalarField {
 public:
-    explicit FogField(openvdb::FloatGrid::ConstPtr grid) : mGrid(std::move(grid)), mId(gNextId++) {
-        mBackground = mGrid->background();
-        openvdb::CoordBBox box = mGrid->evalActiveVoxelBoundingBox();
-        // Block-aligned origin and size, one voxel of margin for trilinear support.
-        for (int a = 0; a < 3; ++a) {
-            mOrigin[a] = int(std::floor(double(box.min()[a] - 1) / kBlock)) * kBlock;
-            const int last = int(std::floor(double(box.max()[a] + 1) / kBlock));
-            mBase.n[a] = last - mOrigin[a] / kBlock + 1;
-        }
-        const size_t count = size_t(mBase.n[0]) * mBase.n[1] * mBase.n[2];
-        mBase.lo.assign(count, std::min(mBackground, 0.0f));
-        mBase.hi.assign(count, std::max(mBackground, 0.0f));
-        for (auto leaf = mGrid->tree().cbeginLeaf(); leaf; ++leaf) {
-            const openvdb::Coord o = leaf->origin();
-            int b[3];
-            if (!blockOf(o, b)) continue;
-            float lo = kInfF, hi = -kInfF;
-            for (auto v = leaf->cbeginValueAll(); v; ++v)
-                lo = std::min(lo, *v), hi = std::max(hi, *v);
-            mBase.lo[mBase.index(b[0], b[1], b[2])] = lo;
-            mBase.hi[mBase.index(b[0], b[1], b[2])] = hi;
-        }
-        // Tiles (constant regions above the leaves) cover whole blocks.
-        for (auto t = mGrid->tree().cbeginValueAll(); t; ++t) {
-            if (t.isVoxelValue()) continue;
-            const openvdb::CoordBBox tb = t.getBoundingBox();
-            int b0[3], b1[3];
-            for (int a = 0; a < 3; ++a) {
-                b0[a] = std::max(0, (tb.min()[a] - mOrigin[a]) / kBlock);
-                b1[a] = std::min(mBase.n[a] - 1, (tb.max()[a] - mOrigin[a]) / kBlock);
-            }
-            for (int k = b0[2]; k <= b1[2]; ++k)
-                for (int j = b0[1]; j <= b1[1]; ++j)
-                    for (int i = b0[0]; i <= b1[0]; ++i) {
-                        const size_t id = mBase.index(i, j, k);
-                        mBase.lo[id] = std::min(mBase.lo[id], float(*t));
-                        mBase.hi[id] = std::max(mBase.hi[id], float(*t));
-                    }
-        }
-        mLevels.push_back(mBase);
-        while (std::max({mLevels.back().n[0], mLevels.back().n[1], mLevels.back().n[2]}) > 1) {
-            const Level& f = mLevels.back();
-            Level c;
-            for (int a = 0; a < 3; ++a) c.n[a] = (f.n[a] + 1) / 2;
-            c.lo.assign(size_t(c.n[0]) * c.n[1] * c.n[2], kInfF);
-            c.hi.assign(c.lo.size(), -kInfF);
-            for (int k = 0; k < f.n[2]; ++k)
-                for (int j = 0; j < f.n[1]; ++j)
-                    for (int i = 0; i < f.n[0]; ++i) {
-                        const size_t from = f.index(i, j, k), to = c.index(i / 2, j / 2, k / 2);
-                        c.lo[to] = std::min(c.lo[to], f.lo[from]);
-                        c.hi[to] = std::max(c.hi[to], f.hi[from]);
-                    }
-            mLevels.push_back(std::move(c));
-        }
-        for (const Level& l : mLevels)
-            for (float v : l.lo)
-                if (v < 0.0f) mMinValue = std::min(mMinValue, v);
-    }
+    explicit FogField(openvdb::FloatGrid::ConstPtr grid)
+        : mGrid(std::move(grid)), mId(gNextId++), mPyramid(makePyramid(*mGrid)) {}
 
-    float minValue() const { return mMinValue; }
+    /// The least value held anywhere, or 0 (negative density is refused on reading).
+    float minValue() const { return float(std::min(mPyramid.whole().lo, 0.0)); }
 
     Bounds3 worldBounds() const {
         const openvdb::CoordBBox box = mGrid->evalActiveVoxelBoundingBox();
@@ -142,48 +116,20 @@ public:
             for (int a = 0; a < 3; ++a)
                 lo[a] = std::min(lo[a], q[a]), hi[a] = std::max(hi[a], q[a]);
         }
-        int b0[3], b1[3];
-        bool outside = false;
+        BlockCoord b0, b1;
         for (int a = 0; a < 3; ++a) {
-            if (!(std::fabs(lo[a]) < 1e9 && std::fabs(hi[a]) < 1e9)) return Interval::entire();
+            // Beyond 2^34 voxels a block number would not fit an int (index coordinates are ints).
+            if (!(std::fabs(lo[a]) < 1.6e10 && std::fabs(hi[a]) < 1.6e10))
+                return Interval::entire();
             // Trilinear support: voxels floor(lo) … floor(hi) + 1 (a hair wider for rounding).
-            const int v0 = int(std::floor(lo[a] - 1e-6)), v1 = int(std::floor(hi[a] + 1e-6)) + 1;
-            b0[a] = int(std::floor(double(v0 - mOrigin[a]) / kBlock));
-            b1[a] = int(std::floor(double(v1 - mOrigin[a]) / kBlock));
-            if (b0[a] < 0 || b1[a] >= mBase.n[a]) outside = true;
-            b0[a] = std::max(b0[a], 0);
-            b1[a] = std::min(b1[a], mBase.n[a] - 1);
-            if (b0[a] > b1[a]) return Interval(mBackground, mBackground);
+            b0[a] = int(std::floor((std::floor(lo[a] - 1e-6)) / kBlock));
+            b1[a] = int(std::floor((std::floor(hi[a] + 1e-6) + 1) / kBlock));
         }
-        size_t level = 0;
-        while (level + 1 < mLevels.size() &&
-               (b1[0] - b0[0] > 3 || b1[1] - b0[1] > 3 || b1[2] - b0[2] > 3)) {
-            ++level;
-            for (int a = 0; a < 3; ++a) b0[a] >>= 1, b1[a] >>= 1;
-        }
-        const Level& l = mLevels[level];
-        double rlo = outside ? mBackground : kInf, rhi = outside ? mBackground : -kInf;
-        for (int k = b0[2]; k <= b1[2]; ++k)
-            for (int j = b0[1]; j <= b1[1]; ++j)
-                for (int i = b0[0]; i <= b1[0]; ++i) {
-                    const size_t id = l.index(i, j, k);
-                    rlo = std::min(rlo, double(l.lo[id]));
-                    rhi = std::max(rhi, double(l.hi[id]));
-                }
-        return Interval(rlo, rhi);
+        return mPyramid.range(b0, b1);
     }
     double lipschitz() const override { return kInf; }
 
 private:
-    static constexpr float kInfF = std::numeric_limits<float>::infinity();
-
-    bool blockOf(const openvdb::Coord& o, int b[3]) const {
-        for (int a = 0; a < 3; ++a) {
-            b[a] = (o[a] - mOrigin[a]) / kBlock;
-            if (o[a] < mOrigin[a] || b[a] >= mBase.n[a]) return false;
-        }
-        return true;
-    }
     const Accessor& accessor() const {
         if (tAccessor.owner != mId) {
             tAccessor.accessor = std::make_unique<Accessor>(mGrid->tree());
@@ -194,11 +140,7 @@ private:
 
     openvdb::FloatGrid::ConstPtr mGrid;
     uint64_t mId;
-    float mBackground = 0.0f;
-    float mMinValue = 0.0f;
-    int mOrigin[3] = {0, 0, 0};
-    Level mBase;
-    std::vector<Level> mLevels;
+    BlockPyramid mPyramid;
 };
 
 }  // namespace
