@@ -2,6 +2,7 @@
 #include "slice/section_tape.h"
 
 #include "csg/interval/interval_ops.h"
+#include "csg/tape/derivative_rules.h"
 #include "csg/tape/noise.h"
 #include "csg/tape/scalar_field.h"
 #include "csg/tape/tree_tape.h"
@@ -34,124 +35,89 @@ std::shared_ptr<const Tape> sectionTape(const Node& node, const SlicePlane& plan
     return Tape::compile(g, treeExpr(node, g, xyz[0], xyz[1], xyz[2]));
 }
 
+namespace {
+
+/// Whether the section's slopes have a rule for op: those ops whose derivative enclosure over a
+/// cell stays finite where the op is defined; the others (tan, asin, acos, atan2, pow, floor,
+/// ceil) leave nothing to conclude.
+bool hasSectionRule(Op op) {
+    switch (op) {
+        case Op::Tan:
+        case Op::Asin:
+        case Op::Acos:
+        case Op::Atan2:
+        case Op::Pow:
+        case Op::Floor:
+        case Op::Ceil: return false;
+        default: return true;
+    }
+}
+
+/// The inputs: constants, u, v (varying) and w (fixed); r[0] the value, r[1] d/du, r[2] d/dv.
+void inputSlot(const TapeInstr& in, const Interval& u, const Interval& v, double w, Interval* r) {
+    const Interval zero(0.0), one(1.0);
+    r[1] = r[2] = zero;
+    switch (in.op) {
+        case Op::Const: r[0] = in.value; break;
+        case Op::VarX:
+            r[0] = u;
+            r[1] = one;
+            break;
+        case Op::VarY:
+            r[0] = v;
+            r[2] = one;
+            break;
+        default: r[0] = w;  // Op::VarZ
+    }
+}
+
+/// Noise and fields: the value and the chain rule through the gradient enclosure over the box.
+void ternarySlot(const Tape& tape, const TapeInstr& in, const Interval* a, const Interval* b,
+                 const Interval* c, Interval* r) {
+    Interval g[3];
+    r[0] = in.op == Op::Noise ? gradientNoiseRange(a[0], b[0], c[0], noiseSeed(in), g)
+                              : tape.field(in).rangeGradient(a[0], b[0], c[0], g);
+    for (int k = 1; k < 3; ++k) r[k] = derivative_rules::chainSlope(g, a[k], b[k], c[k]);
+}
+
+/// Any other op: its value, then the shared derivative rule once per direction (sin and cos
+/// from one reduction).
+void opSlot(const TapeInstr& in, const Interval* a, const Interval* b, Interval* r) {
+    using namespace derivative_rules;
+    if (in.op == Op::Sin || in.op == Op::Cos) {
+        Interval sn, cs;
+        sinCos(a[0], sn, cs);
+        r[0] = in.op == Op::Sin ? sn : cs;
+        for (int k = 1; k < 3; ++k)
+            r[k] = in.op == Op::Sin ? sinSlope(cs, a[k]) : cosSlope(sn, a[k]);
+        return;
+    }
+    const Interval none;
+    r[0] = applyIntervalOp(in.op, a[0], b ? b[0] : none, in.value);
+    for (int k = 1; k < 3; ++k)
+        r[k] = derivative(in.op, a[0], a[k], b ? b[0] : none, b ? b[k] : none, in.value, r[0]);
+}
+
+}  // namespace
+
 IntervalSlopes evalIntervalSlopes(const Tape& tape, const Interval& u, const Interval& v, double w,
                                   std::vector<Interval>& s) {
     const auto& ins = tape.instrs();
     const size_t n = ins.size();
     s.resize(3 * n);  // value, d/du, d/dv per slot
-    const Interval zero(0.0), one(1.0);
     IntervalSlopes out;
     for (size_t i = 0; i < n; ++i) {
         const TapeInstr& in = ins[i];
         Interval* r = &s[3 * i];
         const Interval* a = in.a >= 0 ? &s[3 * in.a] : nullptr;
         const Interval* b = in.b >= 0 ? &s[3 * in.b] : nullptr;
-        switch (in.op) {
-            case Op::Const:
-                r[0] = in.value;
-                r[1] = r[2] = zero;
-                break;
-            case Op::VarX:
-                r[0] = u;
-                r[1] = one;
-                r[2] = zero;
-                break;
-            case Op::VarY:
-                r[0] = v;
-                r[1] = zero;
-                r[2] = one;
-                break;
-            case Op::VarZ:
-                r[0] = w;
-                r[1] = r[2] = zero;
-                break;
-            case Op::Neg:
-                for (int k = 0; k < 3; ++k) r[k] = -a[k];
-                break;
-            case Op::Add:
-                for (int k = 0; k < 3; ++k) r[k] = a[k] + b[k];
-                break;
-            case Op::Sub:
-                for (int k = 0; k < 3; ++k) r[k] = a[k] - b[k];
-                break;
-            case Op::Mul:
-                r[0] = a[0] * b[0];
-                for (int k = 1; k < 3; ++k) r[k] = a[k] * b[0] + a[0] * b[k];
-                break;
-            case Op::Div: {
-                r[0] = a[0] / b[0];
-                for (int k = 1; k < 3; ++k) r[k] = (a[k] - r[0] * b[k]) / b[0];
-                break;
-            }
-            case Op::Square:
-                r[0] = sqr(a[0]);
-                for (int k = 1; k < 3; ++k) r[k] = Interval(2.0) * a[0] * a[k];
-                break;
-            case Op::Sqrt: {
-                r[0] = sqrt(a[0]);
-                const Interval twice = Interval(2.0) * r[0];
-                for (int k = 1; k < 3; ++k) r[k] = a[k] / twice;  // NaN-flagged where r holds 0
-                break;
-            }
-            case Op::PowInt: {
-                const int p = static_cast<int>(in.value);
-                r[0] = powInt(a[0], p);
-                const Interval d = Interval(double(p)) * powInt(a[0], p - 1);
-                for (int k = 1; k < 3; ++k) r[k] = d * a[k];
-                break;
-            }
-            case Op::Sin:
-            case Op::Cos: {
-                Interval sn, cs;
-                sinCos(a[0], sn, cs);
-                r[0] = in.op == Op::Sin ? sn : cs;
-                const Interval d = in.op == Op::Sin ? cs : -sn;
-                for (int k = 1; k < 3; ++k) r[k] = d * a[k];
-                break;
-            }
-            case Op::Exp:
-                r[0] = exp(a[0]);
-                for (int k = 1; k < 3; ++k) r[k] = r[0] * a[k];
-                break;
-            case Op::Log:
-                r[0] = log(a[0]);
-                for (int k = 1; k < 3; ++k) r[k] = a[k] / a[0];
-                break;
-            case Op::Atan:
-                r[0] = atan(a[0]);
-                for (int k = 1; k < 3; ++k) r[k] = a[k] / (Interval(1.0) + sqr(a[0]));
-                break;
-            case Op::Abs:
-                r[0] = abs(a[0]);
-                for (int k = 1; k < 3; ++k)
-                    r[k] = a[0].lo > 0.0 ? a[k] : a[0].hi < 0.0 ? -a[k] : hull(a[k], -a[k]);
-                break;
-            case Op::Min:
-            case Op::Max: {
-                const bool isMin = in.op == Op::Min;
-                r[0] = isMin ? min(a[0], b[0]) : max(a[0], b[0]);
-                // Which operand is the result over the whole box, if one is.
-                const bool aWins = isMin ? a[0].hi < b[0].lo : a[0].lo > b[0].hi;
-                const bool bWins = isMin ? b[0].hi < a[0].lo : b[0].lo > a[0].hi;
-                for (int k = 1; k < 3; ++k) r[k] = aWins ? a[k] : bWins ? b[k] : hull(a[k], b[k]);
-                break;
-            }
-            case Op::Noise: {  // the chain rule through the noise's gradient enclosure
-                const Interval* c = &s[3 * in.c];
-                Interval g[3];
-                r[0] = gradientNoiseRange(a[0], b[0], c[0], noiseSeed(in), g);
-                for (int k = 1; k < 3; ++k) r[k] = g[0] * a[k] + g[1] * b[k] + g[2] * c[k];
-                break;
-            }
-            case Op::Field: {  // the chain rule through the field's gradient enclosure
-                const Interval* c = &s[3 * in.c];
-                Interval g[3];
-                r[0] = tape.field(in).rangeGradient(a[0], b[0], c[0], g);
-                for (int k = 1; k < 3; ++k) r[k] = g[0] * a[k] + g[1] * b[k] + g[2] * c[k];
-                break;
-            }
-            default:
-                return out;  // tan, asin, acos, atan2, pow, floor, ceil: no rule, no conclusion
+        if (!hasSectionRule(in.op)) return out;  // no rule, no conclusion
+        if (in.a < 0) {
+            inputSlot(in, u, v, w, r);
+        } else if (in.op == Op::Noise || in.op == Op::Field) {
+            ternarySlot(tape, in, a, b, &s[3 * in.c], r);
+        } else {
+            opSlot(in, a, b, r);
         }
         for (int k = 0; k < 3; ++k)
             if (r[k].maybeNan) return out;

@@ -4,6 +4,7 @@
 #include "csg/tape/tape_ray_program.h"
 
 #include <stdexcept>
+#include "csg/tape/derivative_rules.h"
 #include "csg/tape/tape_ray_step.h"
 
 namespace kerf {
@@ -120,44 +121,6 @@ void foldCoefficients(const TapeRayPlan::Poly& p, const Coefficients* x, const C
                 r.c[k] = isExactZero(x->c[k]) ? x->c[k] : x->c[k] / y->c[0];
             break;
         default: break;  // the plan folds nothing else
-    }
-}
-
-/// d(op(a, b))/dt at a point from the operands' values and slopes (the rules of
-/// Tape::evalGradient on one direction).
-double scalarSlope(Op op, double av, double ad, double bv, double bd, double value, double result) {
-    switch (op) {
-        case Op::Neg: return -ad;
-        case Op::Square: return (2.0 * av) * ad;
-        case Op::Sqrt: return ad / (2.0 * result);
-        case Op::Abs: return av < 0.0 ? -ad : ad;
-        case Op::Sin: return std::cos(av) * ad;
-        case Op::Cos: return -std::sin(av) * ad;
-        case Op::Tan: return (1.0 + result * result) * ad;
-        case Op::Asin: return ad / std::sqrt(1.0 - av * av);
-        case Op::Acos: return -ad / std::sqrt(1.0 - av * av);
-        case Op::Atan: return ad / (1.0 + av * av);
-        case Op::Exp: return result * ad;
-        case Op::Log: return ad / av;
-        case Op::Floor:
-        case Op::Ceil: return 0.0;
-        case Op::Add: return ad + bd;
-        case Op::Sub: return ad - bd;
-        case Op::Mul: return bv * ad + av * bd;
-        case Op::Div: return (ad - result * bd) / bv;
-        case Op::Pow: {
-            double d = (bv * std::pow(av, bv - 1.0)) * ad;
-            if (bd != 0.0) d += (result * std::log(av)) * bd;
-            return d;
-        }
-        case Op::Atan2: return (bv * ad - av * bd) / (av * av + bv * bv);
-        case Op::Min: return av <= bv ? ad : bd;
-        case Op::Max: return av >= bv ? ad : bd;
-        case Op::PowInt: {
-            const int n = static_cast<int>(value);
-            return n == 0 ? 0.0 : (value * std::pow(av, n - 1)) * ad;
-        }
-        default: return 0.0;
     }
 }
 
@@ -338,7 +301,7 @@ double TapeRayProgram::valueAndSlope(double t, double& dfdt) {
             const Point a = s[in.a];
             const Point b = in.b >= 0 ? s[in.b] : Point{0.0, 0.0};
             const double v = applyScalarOp(in.op, a.v, b.v, in.value);
-            s[i] = {v, scalarSlope(in.op, a.v, a.d, b.v, b.d, in.value, v)};
+            s[i] = {v, derivative_rules::derivative(in.op, a.v, a.d, b.v, b.d, in.value, v)};
         }
     }
     dfdt = s[n - 1].d;

@@ -7,6 +7,7 @@
 #include "csg/interval/interval_ops.h"
 #include "csg/interval/interval_trig.h"
 #include "csg/interval/scalar_ops.h"
+#include "csg/tape/derivative_rules.h"
 #include "csg/tape/tape.h"
 
 namespace kerf::ray_step {
@@ -46,52 +47,10 @@ inline bool isExactZero(const Interval& a) { return a.lo == 0.0 && a.hi == 0.0 &
     r.d = Interval(dir);
 }
 
+/// d op(a, b)/dt over the region: the shared rule (csg/tape/derivative_rules.h).
 inline Interval slope(Op op, const IntervalDual& a, const IntervalDual& b, double value,
                       const Interval& r) {
-    switch (op) {
-        case Op::Neg: return -a.d;
-        case Op::Square: return Interval(2.0) * a.v * a.d;
-        case Op::Sqrt: return a.d / (Interval(2.0) * r);
-        case Op::Abs:
-            if (a.v.lo >= 0.0) return a.d;
-            if (a.v.hi <= 0.0) return -a.d;
-            return hull(a.d, -a.d);
-        case Op::Sin: return cos(a.v) * a.d;
-        case Op::Cos: return -(sin(a.v) * a.d);
-        case Op::Tan: return (Interval(1.0) + sqr(r)) * a.d;
-        case Op::Asin: return a.d / sqrt(Interval(1.0) - sqr(a.v));
-        case Op::Acos: return -(a.d / sqrt(Interval(1.0) - sqr(a.v)));
-        case Op::Atan: return a.d / (Interval(1.0) + sqr(a.v));
-        case Op::Exp: return r * a.d;
-        case Op::Log: return a.d / a.v;
-        case Op::Floor:
-        case Op::Ceil:
-            // Constant where the enclosure holds no integer step; a jump otherwise.
-            return r.lo == r.hi ? Interval(0.0, 0.0, a.d.maybeNan) : Interval::entire();
-        case Op::Add: return a.d + b.d;
-        case Op::Sub: return a.d - b.d;
-        case Op::Mul: return a.d * b.v + a.v * b.d;
-        case Op::Div: return (a.d - r * b.d) / b.v;
-        case Op::Pow: {
-            Interval d = b.v * pow(a.v, b.v - Interval(1.0)) * a.d;
-            if (!(b.d.lo == 0.0 && b.d.hi == 0.0)) d = d + r * log(a.v) * b.d;
-            return d;
-        }
-        case Op::Atan2: return (b.v * a.d - a.v * b.d) / (sqr(a.v) + sqr(b.v));
-        case Op::Min:
-            if (a.v.hi <= b.v.lo) return a.d;
-            if (b.v.hi <= a.v.lo) return b.d;
-            return hull(a.d, b.d);
-        case Op::Max:
-            if (a.v.lo >= b.v.hi) return a.d;
-            if (b.v.lo >= a.v.hi) return b.d;
-            return hull(a.d, b.d);
-        case Op::PowInt: {
-            const int n = static_cast<int>(value);
-            return n == 0 ? Interval(0.0) : Interval(value) * powInt(a.v, n - 1) * a.d;
-        }
-        default: return Interval::entire();
-    }
+    return derivative_rules::derivative(op, a.v, a.d, b.v, b.d, value, r);
 }
 
 /// The second operand of a unary instruction.
