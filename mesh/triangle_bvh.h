@@ -120,8 +120,6 @@ private:
     std::vector<bvh4::WideNode> mWide;  ///< mNodes collapsed 4-wide: the ray walks' tree
     std::vector<bvh4::TriPack> mPacks;  ///< mTris again, four side by side per wide leaf
     bool mSimd = true;
-
-    friend struct BvhBuilder;
 };
 
 }  // namespace kerf

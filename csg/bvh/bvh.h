@@ -1,10 +1,12 @@
 /// @file csg/bvh/bvh.h
-/// @brief A bounding volume hierarchy over a set of boxes, built by binned SAH, stored as a flat
+/// @brief A bounding volume hierarchy over a set of boxes, built by binned SAH with the shared
+/// builder (csg/bvh/bvh_builder.h), stored as a flat
 /// array of 32-byte nodes with float boxes (rounded outward, so they hold the double boxes),
 /// and walked near child first with a fixed stack. Used over the children of wide Boolean
 /// nodes and over objects. Unbounded boxes are kept out of the tree and always reported.
 #pragma once
 
+#include "csg/bvh/bvh_builder.h"
 #include "csg/trace_context.h"
 #include "csg/types.h"
 
@@ -57,15 +59,14 @@ private:
     /// median splits (which halve) before a tree could get deeper than this.
     static constexpr int kStackSize = 96;
 
-    struct BuildItem;
-    int build(std::vector<BuildItem>& items, int begin, int end, int depth);
-    void setBox(Node& node, const Bounds3& box);
+    /// The builder's rule for a split kind (bin count, leaf sizes and costs of bvh.cpp).
+    static BvhBuildRule buildRule(Split split);
+    static void setBox(Node& node, const Bounds3& box);
 
     std::vector<Node> mNodes;
     std::vector<int32_t> mOrder;      ///< item indices, leaves point into ranges of it
     std::vector<int32_t> mUnbounded;  ///< items with infinite boxes, always visited
     int mItemCount = 0;
-    Split mSplit = Split::Sah;
 };
 
 template <class Visit>

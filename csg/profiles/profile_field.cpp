@@ -2,13 +2,13 @@
 // boxes), sign by crossing parity over y-monotone pieces.
 #include "csg/profiles/profile_field.h"
 
+#include "csg/bvh/bvh_builder.h"
 #include "csg/profiles/path_geometry.h"
 #include "csg/profiles/path_normals.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -26,10 +26,7 @@ public:
         for (const PathLoop& loop : shape.loops)
             for (const PathSegment& s : loop.segments) mSegments.push_back(makeSegment(s));
         for (const Segment& s : mSegments) addPieces(s);
-        std::vector<int> order(mSegments.size());
-        std::iota(order.begin(), order.end(), 0);
-        if (!order.empty()) build(order, 0, static_cast<int>(order.size()));
-        mOrder = std::move(order);
+        buildTree();
         for (const Segment& s : mSegments)
             mScale = std::max({mScale, std::abs(s.box.lo.x), std::abs(s.box.lo.y),
                                std::abs(s.box.hi.x), std::abs(s.box.hi.y)});
@@ -278,33 +275,36 @@ private:
         }
     }
 
-    int build(std::vector<int>& order, int first, int last) {
-        BvhNode node;
-        node.box = mSegments[order[first]].box;
-        for (int i = first; i < last; ++i) {
-            node.box.lo = glm::min(node.box.lo, mSegments[order[i]].box.lo);
-            node.box.hi = glm::max(node.box.hi, mSegments[order[i]].box.hi);
+    // The segment tree: the shared builder (csg/bvh/bvh_builder.h) with median splits on the
+    // wider side of the node's box, four segments a leaf, equal keys as nth_element leaves
+    // them (the key lo + hi, unhalved, is the tree's historic one).
+    void buildTree() {
+        std::vector<BvhBuildItem> items(mSegments.size());
+        for (size_t i = 0; i < mSegments.size(); ++i) {
+            const Bounds2& b = mSegments[i].box;
+            items[i] = {Bounds3{Vec3(b.lo, 0.0), Vec3(b.hi, 0.0)},
+                        Vec3(b.lo.x + b.hi.x, b.lo.y + b.hi.y, 0.0), uint32_t(i)};
         }
-        const int index = static_cast<int>(mNodes.size());
-        mNodes.push_back(node);
-        if (last - first <= 4) {
-            mNodes[index].first = first;
-            mNodes[index].count = last - first;
-            return index;
+        BvhBuildRule rule;
+        rule.split = BvhBuildRule::Split::Median;
+        rule.maxLeafSize = 4;
+        rule.medianAxis = BvhBuildRule::MedianAxis::NodeBox;
+        rule.medianTieById = false;
+        const BinaryBvh tree = buildBinaryBvh(std::move(items), rule);
+        mNodes.resize(tree.nodes.size());
+        for (size_t k = 0; k < tree.nodes.size(); ++k) {
+            const BinaryBvhNode& from = tree.nodes[k];
+            BvhNode& to = mNodes[k];
+            to.box = {Vec2(from.box.lo), Vec2(from.box.hi)};
+            if (from.count > 0) {
+                to.first = int(from.first);
+                to.count = int(from.count);
+            } else {
+                to.left = int(k + 1);  // the first child follows its parent
+                to.right = int(from.first);
+            }
         }
-        const Vec2 size = node.box.hi - node.box.lo;
-        const int axis = size.x >= size.y ? 0 : 1;
-        const int mid = (first + last) / 2;
-        std::nth_element(order.begin() + first, order.begin() + mid, order.begin() + last,
-                         [&](int i, int j) {
-                             return mSegments[i].box.lo[axis] + mSegments[i].box.hi[axis] <
-                                    mSegments[j].box.lo[axis] + mSegments[j].box.hi[axis];
-                         });
-        const int left = build(order, first, mid);
-        const int right = build(order, mid, last);
-        mNodes[index].left = left;
-        mNodes[index].right = right;
-        return index;
+        mOrder.assign(tree.order.begin(), tree.order.end());
     }
 
     Nearest nearest(Vec2 p, const Segment* skip = nullptr) const {
