@@ -102,8 +102,9 @@ TEST_CASE("Bsdf: Lambert") {
     SECTION("the Monte Carlo albedo is π·diffuse·albedo") {
         const Estimate e = albedo(bsdf, wo, 20000, 1);
         const Vec3 expected = kPi * 0.7 * colour;
-        // Cosine-weighted sampling of a Lambert lobe has zero variance: every sample is exact.
-        CHECK(e.stdErr < 1e-12);
+        // Cosine-weighted sampling of a Lambert lobe has zero variance: every sample is exact
+        // up to rounding (the error estimate itself cancels to ~1e-8).
+        CHECK(e.stdErr < 1e-6);
         CHECK(glm::length(e.mean - expected) < 1e-12);
     }
     SECTION("the pdf integrates to 1") {
