@@ -100,9 +100,8 @@ Vec3 Bsdf::evaluate(const Vec3& wo, const Vec3& wi, uint32_t lobes) const {
     return term;
 }
 
-void Bsdf::lobeWeights(const Vec3& wo, const SpecularLobes& s, double w[4]) const {
+void Bsdf::lobeWeights(const SpecularLobes& s, double w[4]) const {
     const Material& m = mMaterial;
-    (void)wo;
     w[0] = kPi * std::max(0.0, maxOf((1.0 - m.transmit) * m.diffuse * mAlbedo));
     w[1] = std::max(0.0, m.specular * 2.0 * kPi / (m.shininess + 1.0));
     w[2] = std::max(0.0, maxOf(s.reflectWeight));
@@ -133,7 +132,7 @@ double Bsdf::lobePdf(uint32_t lobe, const Vec3& wo, const Vec3& wi, const Specul
 double Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
     const SpecularLobes s = specular(wo);
     double w[4];
-    lobeWeights(wo, s, w);
+    lobeWeights(s, w);
     const double total = w[0] + w[1] + w[2] + w[3];
     if (!(total > 0.0)) return 0.0;
     double p = 0.0;
@@ -146,7 +145,7 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, double uLobe, const SubPi
     const Material& m = mMaterial;
     const SpecularLobes s = specular(wo);
     double w[4];
-    lobeWeights(wo, s, w);
+    lobeWeights(s, w);
     const double total = w[0] + w[1] + w[2] + w[3];
     if (!(total > 0.0)) return std::nullopt;
     int i = 0;

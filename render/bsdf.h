@@ -86,8 +86,9 @@ public:
     const Vec3& normal() const { return mNormal; }
 
 private:
-    /// The lobes' selection weights for wo, in BsdfLobe order (sum > 0 unless black).
-    void lobeWeights(const Vec3& wo, const SpecularLobes& s, double w[4]) const;
+    /// The lobes' selection weights (albedo bounds) given wo's specular lobes s, in BsdfLobe
+    /// order (sum > 0 unless nothing scatters).
+    void lobeWeights(const SpecularLobes& s, double w[4]) const;
     /// The non-delta density of lobe `lobe` (one bit) at wi.
     double lobePdf(uint32_t lobe, const Vec3& wo, const Vec3& wi, const SpecularLobes& s) const;
 
