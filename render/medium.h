@@ -3,7 +3,7 @@
 /// with the medium's box split into pieces, each with a control σc and a majorant μ from the
 /// density's range over the piece (σc ≤ σt ≤ μ on the piece), and three estimators over
 /// them: residual ratio tracking, delta tracking and deterministic marching. Distances are in
-/// world units along a unit-direction ray. render/shading_medium.cpp uses these for camera,
+/// world units along a unit-direction ray. render/medium_transport.cpp uses these for camera,
 /// secondary and shadow rays and for single scattering.
 #pragma once
 

@@ -6,9 +6,9 @@
 #include "csg/tree/motion.h"
 #include "render/camera.h"
 #include "render/film.h"
+#include "render/integrator.h"
 #include "render/sampler.h"
 #include "render/section_cut.h"
-#include "render/shading.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -43,7 +43,7 @@ struct FrameJob {
     const Camera& camera;
     const PixelSampler& sampler;
     const SceneGeometry& geometry;
-    const WhittedIntegrator& integrator;
+    const Integrator& integrator;
     const PrimaryBeams* beams;  ///< null when camera rays start at the eye
     RenderResult& result;       ///< images of the region's size
     int width, height;          ///< the full image
@@ -60,14 +60,64 @@ struct FrameJob {
 /// Rec. 709 luminance: the quantity whose noise adaptive sampling watches.
 double luminance(const Vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
+/// Runs f with the scene's clock (csg/tree/motion.h) at `time`: the one place the render
+/// loop sets the motion-blur time.
+template <class F>
+auto atSceneTime(double time, F&& f) {
+    const SceneTimeScope clock(time);
+    return f();
+}
+
+/// The scene time sample s of the pixel sees: its own point in the shutter interval.
+double sampleTime(const FrameJob& job, uint64_t pixel, int s) {
+    if (!(job.shutterClose > job.shutterOpen)) return job.shutterOpen;
+    return job.shutterOpen +
+           job.sampler.get2D(pixel, s, sample_dim::kTime).x * (job.shutterClose - job.shutterOpen);
+}
+
+/// Adaptive sampling's running estimate of a pixel's noise.
+struct NoiseEstimate {
+    double lumSum = 0.0, lumSum2 = 0.0;
+
+    /// Adds sample c (the taken-th) and tells whether the mean's standard error is below the
+    /// target (the sample variance over-estimates it for stratified samples: the rule errs
+    /// toward more samples).
+    bool addAndConverged(const Vec3& c, int taken, int count, double target) {
+        const double l = luminance(c);
+        lumSum += l;
+        lumSum2 += l * l;
+        if (taken < std::min(kMinAdaptiveSamples, count) || taken < 2) return false;
+        const double variance = std::max(0.0, (lumSum2 - lumSum * lumSum / taken) / (taken - 1));
+        return std::sqrt(variance / taken) < target;
+    }
+};
+
+/// The depth and normal outputs of pixel (i, j) at (oi, oj) of the images, from the
+/// centre ray's hit (traced here unless the camera sample already gave it).
+void writeAovs(const FrameJob& job, int i, int j, double tStart, bool centreServes,
+               std::optional<Hit> centreHit, ShadingContext& ctx) {
+    RenderResult& out = job.result;
+    const int oi = i - job.region.x0, oj = j - job.region.y0;
+    const Ray centreRay = job.camera.rayThrough(i + 0.5, j + 0.5);
+    if (!centreServes) {
+        ++ctx.rays.camera;
+        // The AOVs show the shutter's opening.
+        centreHit = atSceneTime(job.shutterOpen, [&] {
+            return job.geometry.nearestHit(centreRay, tStart, kInf, ctx.trace);
+        });
+    }
+    if (job.wantDepth)
+        out.depth.at(oi, oj, 0) =
+            centreHit ? float(glm::length(centreRay.dir) * centreHit->t) : float(kInf);
+    if (job.wantNormal && centreHit)
+        for (int k = 0; k < 3; ++k) out.normal.at(oi, oj, k) = float(centreHit->normal[k]);
+}
+
 /// tStart: where the pixel's camera rays may start (render/primary_beams.h).
 void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContext& ctx,
                  TileFilm* film, uint64_t& samplesTaken) {
-    RenderResult& out = job.result;
     // Seeds follow the pixel's place in the full image, so a region sees the same samples.
     const uint64_t pixel = uint64_t(j) * uint64_t(job.width) + uint64_t(i);
-    const bool kept = job.region.contains(i, j);  // else traced only for its filtered samples
-    const int oi = i - job.region.x0, oj = j - job.region.y0;
     const bool wantAov = job.wantDepth || job.wantNormal;
     const int count = job.sampler.sampleCount();
 
@@ -79,7 +129,7 @@ void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContex
     std::optional<Hit> centreHit;
     Vec3 sum(0.0);
     int taken = 0;
-    double lumSum = 0.0, lumSum2 = 0.0;
+    NoiseEstimate noise;
     ctx.sampler = &job.sampler;
     ctx.pixel = pixel;
     // Each of n samples stands for 1/n of the pixel: a square about 1/√n of its side.
@@ -97,49 +147,23 @@ void renderPixel(const FrameJob& job, int i, int j, double tStart, ShadingContex
                 lens ? job.sampler.get2D(pixel, s, sample_dim::kLens) : SubPixel{};
             ray = job.camera.rayThrough(i + at.x, j + at.y, lensAt.x, lensAt.y);
         }
-        // Each sample sees the scene at its own time in the shutter interval.
-        const double time =
-            job.shutterClose > job.shutterOpen
-                ? job.shutterOpen + job.sampler.get2D(pixel, s, sample_dim::kTime).x *
-                                        (job.shutterClose - job.shutterOpen)
-                : job.shutterOpen;
-        const SceneTimeScope clock(time);
-        const Vec3 c = job.integrator.traceCamera(
-            ray, ctx, centreServes && wantAov ? &centreHit : nullptr, tStart);
+        const Vec3 c = atSceneTime(sampleTime(job, pixel, s), [&] {
+            return job.integrator.traceCamera(
+                ray, ctx, centreServes && wantAov ? &centreHit : nullptr, tStart);
+        });
         if (film) film->add(i + at.x, j + at.y, c, job.filter);
         sum += c;
         ++taken;
-        if (job.noise > 0.0) {
-            // Stop once the mean's standard error is below the target (the sample variance
-            // over-estimates it for stratified samples: the rule errs toward more samples).
-            const double l = luminance(c);
-            lumSum += l;
-            lumSum2 += l * l;
-            if (taken >= std::min(kMinAdaptiveSamples, count) && taken >= 2) {
-                const double variance =
-                    std::max(0.0, (lumSum2 - lumSum * lumSum / taken) / (taken - 1));
-                if (std::sqrt(variance / taken) < job.noise) break;
-            }
-        }
+        if (job.noise > 0.0 && noise.addAndConverged(c, taken, count, job.noise)) break;
     }
     samplesTaken += uint64_t(taken);
-    if (!kept) return;
+    if (!job.region.contains(i, j)) return;  // traced only for its filtered samples
     if (!film) {
         const Vec3 c = sum / double(taken);
-        for (int k = 0; k < 3; ++k) out.color.at(oi, oj, k) = float(c[k]);
+        const int oi = i - job.region.x0, oj = j - job.region.y0;
+        for (int k = 0; k < 3; ++k) job.result.color.at(oi, oj, k) = float(c[k]);
     }
-
-    if (!wantAov) return;
-    if (!centreServes) {
-        const SceneTimeScope clock(job.shutterOpen);  // the AOVs show the shutter's opening
-        ++ctx.rays.camera;
-        centreHit = job.geometry.nearestHit(centreRay, tStart, kInf, ctx.trace);
-    }
-    if (job.wantDepth)
-        out.depth.at(oi, oj, 0) =
-            centreHit ? float(glm::length(centreRay.dir) * centreHit->t) : float(kInf);
-    if (job.wantNormal && centreHit)
-        for (int k = 0; k < 3; ++k) out.normal.at(oi, oj, k) = float(centreHit->normal[k]);
+    if (wantAov) writeAovs(job, i, j, tStart, centreServes, centreHit, ctx);
 }
 
 void renderTile(const FrameJob& job, int tile, ShadingContext& ctx, BeamStats& beamStats,
@@ -191,6 +215,161 @@ private:
     Clock::time_point mLast;  ///< guarded by mMutex
 };
 
+/// The image size, samples and region a render traces, from the options over the scene's
+/// settings; a bad size or region is an error.
+struct FrameSize {
+    int width = 0, height = 0, spp = 0;
+    PixelRect full, region;
+};
+
+FrameSize resolveFrameSize(const Scene& scene, const RenderOptions& options) {
+    FrameSize f;
+    f.width = options.width > 0 ? options.width : scene.settings.width;
+    f.height = options.height > 0 ? options.height : scene.settings.height;
+    f.spp = options.spp > 0 ? options.spp : scene.settings.spp;
+    if (f.width <= 0 || f.height <= 0)
+        throw std::invalid_argument("render: image size must be positive, got " +
+                                    std::to_string(f.width) + "x" + std::to_string(f.height));
+    f.full = PixelRect{0, 0, f.width, f.height};
+    f.region = options.region.value_or(f.full);
+    if (f.region.empty() || !(intersect(f.region, f.full) == f.region))
+        throw std::invalid_argument("render: the region must be a non-empty part of the " +
+                                    std::to_string(f.width) + "x" + std::to_string(f.height) +
+                                    " image");
+    return f;
+}
+
+/// The scene the render sees: the input, or its section-cut copy (kept in `storage`), so every
+/// consumer below (acceleration, shadows, beams, integrator) sees the cut model. Preparation
+/// of the scene's data for rendering belongs here.
+const Scene& prepareScene(const Scene& input, std::optional<Scene>& storage) {
+    return input.sections.empty() ? input : storage.emplace(cutBySections(input));
+}
+
+/// The octree's options for a render of `height` rows (volume/octree/accelerate.h).
+OctreeOptions octreeOptionsFor(const Scene& scene, const RenderOptions& options, int height) {
+    OctreeOptions o;
+    o.depth = options.accelDepth;
+    o.eye = scene.camera.eye;
+    o.footprintPerDistance =
+        2.0 * std::tan(0.5 * scene.camera.fovDegrees * glm::pi<double>() / 180.0) / height;
+    return o;
+}
+
+/// The accelerated objects, and, when some are marked no_shadow, a second geometry of the
+/// casters that shadow rays use.
+struct RenderGeometry {
+    std::optional<SceneGeometry> all;
+    std::optional<SceneGeometry> casters;
+    const SceneGeometry* shadowGeometry() const { return casters ? &*casters : nullptr; }
+};
+
+void buildGeometry(const Scene& scene, const RenderOptions& options,
+                   const OctreeOptions& octreeOptions, tbb::task_arena& arena, RenderResult& result,
+                   RenderGeometry& out) {
+    const auto accelStart = Clock::now();
+    AcceleratedObjects accelerated;
+    arena.execute([&] { accelerated = accelerate(scene.objects, options.accel, octreeOptions); });
+    result.stats.secondsAccel = secondsSince(accelStart);
+    std::vector<NodePtr> casters;
+    for (size_t k = 0; k < accelerated.objects.size(); ++k)
+        if (k >= scene.objectFlags.size() || scene.objectFlags[k].castsShadow)
+            casters.push_back(accelerated.objects[k]);
+    if (casters.size() != accelerated.objects.size())
+        out.casters.emplace(std::move(casters), accelerated.objectBvh);
+    out.all.emplace(std::move(accelerated.objects), accelerated.objectBvh);
+}
+
+/// What each thread keeps while tracing tiles.
+struct ThreadState {
+    ShadingContext ctx;
+    BeamStats beams;
+    uint64_t samples = 0;
+    std::vector<int> taken;  ///< tiles taken from RenderOptions::nextTile
+};
+
+/// Traces `tiles` on the arena: each tile once, or, with options.nextTile, the tiles the
+/// shared counter hands out.
+void traceTiles(const FrameJob& job, const std::vector<int>& tiles, const RenderOptions& options,
+                tbb::task_arena& arena, tbb::enumerable_thread_specific<ThreadState>& threads) {
+    ProgressReporter progress(options.progress, int(tiles.size()));
+    std::mutex counterMutex;
+    if (options.nextTile)
+        arena.execute([&] {
+            tbb::parallel_for(
+                tbb::blocked_range<int>(0, arena.max_concurrency(), 1),
+                [&](const tbb::blocked_range<int>&) {
+                    ThreadState& t = threads.local();
+                    for (;;) {
+                        int n;
+                        {
+                            std::lock_guard<std::mutex> lock(counterMutex);
+                            n = options.nextTile();
+                        }
+                        if (n < 0 || size_t(n) >= tiles.size()) break;
+                        renderTile(job, tiles[size_t(n)], t.ctx, t.beams, t.samples);
+                        t.taken.push_back(tiles[size_t(n)]);
+                        progress.tileDone();
+                    }
+                },
+                tbb::simple_partitioner());
+        });
+    else
+        arena.execute([&] {
+            // One tile per task: tiles are already coarse, and the simple partitioner keeps the
+            // split independent of timing (the image never depends on it, the load balance does).
+            tbb::parallel_for(
+                tbb::blocked_range<int>(0, int(tiles.size()), 1),
+                [&](const tbb::blocked_range<int>& range) {
+                    ThreadState& t = threads.local();
+                    for (int k = range.begin(); k != range.end(); ++k) {
+                        renderTile(job, tiles[size_t(k)], t.ctx, t.beams, t.samples);
+                        progress.tileDone();
+                    }
+                },
+                tbb::simple_partitioner());
+        });
+    progress.finished();
+}
+
+/// Sums the threads' counters into the stats, and hands over the tiles and films
+/// (nextTile) or resolves the films into the colour image.
+void gatherResults(tbb::enumerable_thread_specific<ThreadState>& threads,
+                   const std::vector<int>& tiles, const RenderOptions& options,
+                   const PixelRect& region, std::vector<TileFilm>& films, RenderResult& result) {
+    for (const ThreadState& t : threads) {
+        result.stats.cameraRays += t.ctx.rays.camera;
+        result.stats.shadowRays += t.ctx.rays.shadow;
+        result.stats.reflectionRays += t.ctx.rays.reflection;
+        result.stats.refractionRays += t.ctx.rays.refraction;
+        result.stats.trace += t.ctx.trace.stats;
+        result.stats.beams += t.beams;
+        result.stats.samplesTaken += t.samples;
+    }
+    if (options.nextTile) {
+        // The driver gathers the tiles: hand them over in increasing order.
+        for (const ThreadState& t : threads)
+            result.tiles.insert(result.tiles.end(), t.taken.begin(), t.taken.end());
+        std::sort(result.tiles.begin(), result.tiles.end());
+        if (!films.empty())
+            for (int tile : result.tiles) result.films.push_back(std::move(films[size_t(tile)]));
+    } else if (!films.empty()) {
+        std::vector<const TileFilm*> inOrder;
+        for (int tile : tiles) inOrder.push_back(&films[size_t(tile)]);
+        resolveTileFilms(inOrder, region, result.color);
+    }
+}
+
+/// The result's images and region for a frame (colour always; depth and normal if asked).
+void allocateImages(const FrameSize& f, const RenderOptions& options, RenderResult& result) {
+    result.region = f.region;
+    result.fullWidth = f.width;
+    result.fullHeight = f.height;
+    result.color = Image(f.region.width(), f.region.height(), 3);
+    if (options.wantDepth) result.depth = Image(f.region.width(), f.region.height(), 1);
+    if (options.wantNormal) result.normal = Image(f.region.width(), f.region.height(), 3);
+}
+
 }  // namespace
 
 /// An eighth of the angle one pixel spans: the image plane at distance 1 is 2·tan(fov/2)
@@ -204,61 +383,27 @@ double defaultTolerance(int height, double fovDegrees) {
 
 RenderResult render(const Scene& input, const RenderOptions& options) {
     const auto setupStart = Clock::now();
-    // Section views: every consumer below (acceleration, shadows, beams) sees the cut model.
     std::optional<Scene> cutScene;
-    const Scene& scene = input.sections.empty() ? input : cutScene.emplace(cutBySections(input));
-    const int width = options.width > 0 ? options.width : scene.settings.width;
-    const int height = options.height > 0 ? options.height : scene.settings.height;
-    const int spp = options.spp > 0 ? options.spp : scene.settings.spp;
-    if (width <= 0 || height <= 0)
-        throw std::invalid_argument("render: image size must be positive, got " +
-                                    std::to_string(width) + "x" + std::to_string(height));
-
-    const PixelRect full{0, 0, width, height};
-    const PixelRect region = options.region.value_or(full);
-    if (region.empty() || !(intersect(region, full) == region))
-        throw std::invalid_argument("render: the region must be a non-empty part of the " +
-                                    std::to_string(width) + "x" + std::to_string(height) +
-                                    " image");
-
+    const Scene& scene = prepareScene(input, cutScene);
+    const FrameSize f = resolveFrameSize(scene, options);
     RenderResult result;
-    result.region = region;
-    result.fullWidth = width;
-    result.fullHeight = height;
+    allocateImages(f, options, result);
     result.stats.tolerance = options.tolerance > 0
                                  ? options.tolerance
-                                 : defaultTolerance(height, scene.camera.fovDegrees);
-    result.color = Image(region.width(), region.height(), 3);
-    if (options.wantDepth) result.depth = Image(region.width(), region.height(), 1);
-    if (options.wantNormal) result.normal = Image(region.width(), region.height(), 3);
+                                 : defaultTolerance(f.height, scene.camera.fovDegrees);
 
-    const Camera camera(scene.camera, width, height);
+    const Camera camera(scene.camera, f.width, f.height);
     tbb::task_arena arena(options.threads > 0 ? options.threads : int(tbb::task_arena::automatic));
-    const auto accelStart = Clock::now();
-    OctreeOptions octreeOptions;
-    octreeOptions.depth = options.accelDepth;
-    octreeOptions.eye = scene.camera.eye;
-    octreeOptions.footprintPerDistance =
-        2.0 * std::tan(0.5 * scene.camera.fovDegrees * glm::pi<double>() / 180.0) / height;
-    AcceleratedObjects accelerated;
-    arena.execute([&] { accelerated = accelerate(scene.objects, options.accel, octreeOptions); });
-    result.stats.secondsAccel = secondsSince(accelStart);
-    // Objects marked no_shadow are left out of a second geometry that shadow rays use.
-    std::optional<SceneGeometry> shadowGeometry;
-    {
-        std::vector<NodePtr> casters;
-        for (size_t k = 0; k < accelerated.objects.size(); ++k)
-            if (k >= scene.objectFlags.size() || scene.objectFlags[k].castsShadow)
-                casters.push_back(accelerated.objects[k]);
-        if (casters.size() != accelerated.objects.size())
-            shadowGeometry.emplace(std::move(casters), accelerated.objectBvh);
-    }
-    const SceneGeometry geometry(std::move(accelerated.objects), accelerated.objectBvh);
-    const PixelSampler sampler(spp, options.sampler.value_or(scene.settings.sampler));
+    const OctreeOptions octreeOptions = octreeOptionsFor(scene, options, f.height);
+    RenderGeometry geometry;
+    buildGeometry(scene, options, octreeOptions, arena, result, geometry);
+    const PixelSampler sampler(f.spp, options.sampler.value_or(scene.settings.sampler));
     result.stats.samplesPerPixel = sampler.sampleCount();
     result.stats.sampler = sampler.kind();
-    const WhittedIntegrator integrator(scene, geometry, scene.settings.maxDepth,
-                                       shadowGeometry ? &*shadowGeometry : nullptr);
+    const IntegratorInputs inputs{scene, *geometry.all, geometry.shadowGeometry()};
+    const std::unique_ptr<Integrator> integrator =
+        options.integrator ? options.integrator(inputs) : makeIntegrator(inputs);
+    if (!integrator) throw std::invalid_argument("render: the integrator factory gave none");
     const PrimaryBeams beams(camera, scene.objects);
     // Beams bound rays from the eye: a lens (issue 10) would start them elsewhere.
     const bool useBeams =
@@ -268,22 +413,23 @@ RenderResult render(const Scene& input, const RenderOptions& options) {
     result.stats.beamsUsed = useBeams;
     const FilterKind filterKind = options.filter.value_or(scene.settings.filter);
     const int tileCount =
-        ((width + kTileSize - 1) / kTileSize) * ((height + kTileSize - 1) / kTileSize);
+        ((f.width + kTileSize - 1) / kTileSize) * ((f.height + kTileSize - 1) / kTileSize);
     const int margin = filterMargin(filterKind);
-    const std::vector<int> tiles = regionTiles(width, height, region, margin);
+    const std::vector<int> tiles = regionTiles(f.width, f.height, f.region, margin);
     std::vector<TileFilm> films;
     if (filterKind != FilterKind::Box) films.resize(size_t(tileCount));
     const PixelRect traced = intersect(
-        {region.x0 - margin, region.y0 - margin, region.x1 + margin, region.y1 + margin}, full);
+        {f.region.x0 - margin, f.region.y0 - margin, f.region.x1 + margin, f.region.y1 + margin},
+        f.full);
     const FrameJob job{camera,
                        sampler,
-                       geometry,
-                       integrator,
+                       *geometry.all,
+                       *integrator,
                        useBeams ? &beams : nullptr,
                        result,
-                       width,
-                       height,
-                       region,
+                       f.width,
+                       f.height,
+                       f.region,
                        traced,
                        options.wantDepth,
                        options.wantNormal,
@@ -298,80 +444,16 @@ RenderResult render(const Scene& input, const RenderOptions& options) {
     const auto traceStart = Clock::now();
     const double tolerance = result.stats.tolerance;
     const TraceMethod method = options.method;
-    tbb::enumerable_thread_specific<BeamStats> beamStats;
-    tbb::enumerable_thread_specific<uint64_t> samples(uint64_t(0));
-    tbb::enumerable_thread_specific<ShadingContext> contexts([tolerance, method] {
-        ShadingContext ctx;
-        ctx.trace.relTolerance = tolerance;
-        ctx.trace.method = method;
-        return ctx;
+    tbb::enumerable_thread_specific<ThreadState> threads([tolerance, method] {
+        ThreadState t;
+        t.ctx.trace.relTolerance = tolerance;
+        t.ctx.trace.method = method;
+        return t;
     });
-    ProgressReporter progress(options.progress, int(tiles.size()));
-    // With a shared tile counter (app/mpi), each thread takes tiles until none is left.
-    tbb::enumerable_thread_specific<std::vector<int>> taken;
-    std::mutex counterMutex;
-    if (options.nextTile)
-        arena.execute([&] {
-            tbb::parallel_for(
-                tbb::blocked_range<int>(0, arena.max_concurrency(), 1),
-                [&](const tbb::blocked_range<int>&) {
-                    ShadingContext& ctx = contexts.local();
-                    for (;;) {
-                        int n;
-                        {
-                            std::lock_guard<std::mutex> lock(counterMutex);
-                            n = options.nextTile();
-                        }
-                        if (n < 0 || size_t(n) >= tiles.size()) break;
-                        renderTile(job, tiles[size_t(n)], ctx, beamStats.local(), samples.local());
-                        taken.local().push_back(tiles[size_t(n)]);
-                        progress.tileDone();
-                    }
-                },
-                tbb::simple_partitioner());
-        });
-    else
-        arena.execute([&] {
-            // One tile per task: tiles are already coarse, and the simple partitioner keeps the
-            // split independent of timing (the image never depends on it, the load balance does).
-            tbb::parallel_for(
-                tbb::blocked_range<int>(0, int(tiles.size()), 1),
-                [&](const tbb::blocked_range<int>& range) {
-                    ShadingContext& ctx = contexts.local();
-                    BeamStats& beamCounts = beamStats.local();
-                    uint64_t& samplesTaken = samples.local();
-                    for (int k = range.begin(); k != range.end(); ++k) {
-                        renderTile(job, tiles[size_t(k)], ctx, beamCounts, samplesTaken);
-                        progress.tileDone();
-                    }
-                },
-                tbb::simple_partitioner());
-        });
-    progress.finished();
-
-    for (const ShadingContext& ctx : contexts) {
-        result.stats.cameraRays += ctx.rays.camera;
-        result.stats.shadowRays += ctx.rays.shadow;
-        result.stats.reflectionRays += ctx.rays.reflection;
-        result.stats.refractionRays += ctx.rays.refraction;
-        result.stats.trace += ctx.trace.stats;
-    }
-    for (const BeamStats& b : beamStats) result.stats.beams += b;
-    for (uint64_t n : samples) result.stats.samplesTaken += n;
-    if (options.nextTile) {
-        // The driver gathers the tiles: hand them over in increasing order.
-        for (const std::vector<int>& t : taken)
-            result.tiles.insert(result.tiles.end(), t.begin(), t.end());
-        std::sort(result.tiles.begin(), result.tiles.end());
-        if (!films.empty())
-            for (int tile : result.tiles) result.films.push_back(std::move(films[size_t(tile)]));
-    } else if (!films.empty()) {
-        std::vector<const TileFilm*> inOrder;
-        for (int tile : tiles) inOrder.push_back(&films[size_t(tile)]);
-        resolveTileFilms(inOrder, region, result.color);
-    }
+    traceTiles(job, tiles, options, arena, threads);
+    gatherResults(threads, tiles, options, f.region, films, result);
     result.stats.secondsTrace = secondsSince(traceStart);
-    result.stats.octree = octreeStats(geometry.objects());
+    result.stats.octree = octreeStats(geometry.all->objects());
     return result;
 }
 

@@ -5,6 +5,7 @@
 #include "csg/trace_context.h"
 #include "io/image.h"
 #include "render/film.h"
+#include "render/integrator.h"
 #include "render/primary_beams.h"
 #include "scene/scene.h"
 #include "volume/octree/accelerate.h"
@@ -71,6 +72,9 @@ struct RenderOptions {
     /// tile regionTiles(…)[n] while n is below their count, and stops at the first n past it.
     /// Called from several threads, one at a time. Empty: this call renders every tile.
     std::function<int()> nextTile;
+    /// Builds the light-transport method (render/integrator.h); empty: makeIntegrator, the
+    /// one the scene's settings ask for. Tests and new integrators plug in here.
+    IntegratorFactory integrator;
 };
 
 struct RenderStats {

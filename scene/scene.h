@@ -134,8 +134,8 @@ struct RenderSettings {
     /// below this, after at least kMinAdaptiveSamples samples; 0: always spp samples.
     double noise = 0.0;
     /// Bounces of reflection and refraction. High by default: paths end when their weight
-    /// falls below kMinRayWeight (render/shading.h) long before, so a closed glass body is not
-    /// darkened by running out of bounces (POV-Ray's max_trace_level 5 darkens its pixels).
+    /// falls below kMinRayWeight (render/whitted_integrator.h) long before, so a closed glass body
+    /// is not darkened by running out of bounces (POV-Ray's max_trace_level 5 darkens its pixels).
     int maxDepth = 64;
 };
 

@@ -4,7 +4,7 @@
 /// few standard errors; the marcher within its own stated bound); single scattering of a
 /// constant slab under a directional light; the same image whatever the thread count.
 #include "render/medium.h"
-#include "render/shading.h"
+#include "render/whitted_integrator.h"
 #include "render_test_util.h"
 
 #include <catch2/catch.hpp>

@@ -1,10 +1,10 @@
 /// @file tests/render/ray_budget_test.cpp
-/// @brief The work per camera ray is bounded whatever the weights (render/shading.h): the
-/// budget's split, a glass whose weights exceed the language's policy (built through the API,
+/// @brief The work per camera ray is bounded whatever the weights (render/whitted_integrator.h):
+/// the budget's split, a glass whose weights exceed the language's policy (built through the API,
 /// which does not check them) in a mirror box finishing with a bounded ray count, and a mirror box
 /// that the language accepts (reflect 1, max_depth 1000) tracing every bounce uncut.
 #include "lang/compile.h"
-#include "render/shading.h"
+#include "render/whitted_integrator.h"
 #include "render_test_util.h"
 
 #include <catch2/catch.hpp>

@@ -1,15 +1,6 @@
-/// @file render/shading_medium.cpp
-/// @brief The Whitted integrator's heterogeneous medium: transmittance of a segment and single
-/// scattering along it (see shading.h and scene/medium.h).
-///
-/// Along a unit ray through the medium up to tEnd, with T(t) the transmittance from the origin:
-///   L = T(tEnd)·behind + ∫ T(t)·σt(t)·(emission + albedo·Σ_lights phase·E·T_light) dt.
-/// Ratio and Delta estimate T(tEnd) by tracking, and the integral with `samples` distances
-/// drawn from the majorant's free flight (so thick media put their samples near the entry),
-/// each weighted by T(t)·σt(t)/pdf(t) with T(t) tracked again: unbiased. The first distance
-/// comes from the pixel sample's own stratified point, so spp samples cover the segment
-/// evenly. March steps deterministically: each step of constant σt adds T·(1 − e^(−σt·h))·S.
-#include "render/shading.h"
+/// @file render/medium_transport.cpp
+/// @brief Transport through the heterogeneous medium (see medium_transport.h).
+#include "render/medium_transport.h"
 
 #include "render/light_sample.h"
 
@@ -17,8 +8,7 @@
 
 namespace kerf {
 
-uint64_t WhittedIntegrator::mediumSeed(const ShadingContext& ctx, const Ray& ray,
-                                       uint32_t purpose) const {
+uint64_t mediumSeed(const ShadingContext& ctx, const Ray& ray, uint32_t purpose) {
     uint64_t h = mixBits(ctx.pixel) ^ (uint64_t(uint32_t(ctx.sample)) << 32 | purpose);
     const double v[6] = {ray.origin.x, ray.origin.y, ray.origin.z, ray.dir.x, ray.dir.y, ray.dir.z};
     for (double x : v) {
@@ -29,8 +19,11 @@ uint64_t WhittedIntegrator::mediumSeed(const ShadingContext& ctx, const Ray& ray
     return h;
 }
 
-Vec3 WhittedIntegrator::scatteredLight(const Vec3& x, const Vec3& d, ShadingContext& ctx,
-                                       MediumRandom& rng) const {
+MediumTransport::MediumTransport(const Scene& scene, const Transmittance& shadows)
+    : mScene(scene), mShadows(shadows), mEnabled(scene.medium.enabled()) {}
+
+Vec3 MediumTransport::scatteredLight(const Vec3& x, const Vec3& d, ShadingContext& ctx,
+                                     MediumRandom& rng) const {
     Vec3 sum(0.0);
     for (const Light& light : mScene.lights) {
         const SubPixel u{rng.next(), rng.next()};
@@ -40,7 +33,7 @@ Vec3 WhittedIntegrator::scatteredLight(const Vec3& x, const Vec3& d, ShadingCont
         Vec3 pass(1.0);
         if (light.shadows) {
             ++ctx.rays.shadow;
-            pass = transmittance(Ray{x, ls.direction}, ls.distance, ctx);
+            pass = mShadows.along(Ray{x, ls.direction}, ls.distance, ctx);
         }
         // Light travels along −l and leaves along −d: the scattering angle's cosine is l·d.
         sum += pass * ls.radiance * henyeyGreenstein(glm::dot(ls.direction, d), mScene.medium.g);
@@ -48,13 +41,13 @@ Vec3 WhittedIntegrator::scatteredLight(const Vec3& x, const Vec3& d, ShadingCont
     return sum;
 }
 
-Vec3 WhittedIntegrator::throughMedium(const Ray& ray, double tEnd, const Vec3& behind, int depth,
-                                      ShadingContext& ctx) const {
+Vec3 MediumTransport::through(const Ray& ray, double tEnd, const Vec3& behind, int depth,
+                              ShadingContext& ctx) const {
     const Medium& m = mScene.medium;
     const MediumPath path(m, ray, 0.0, tEnd);
     if (path.empty()) return behind;
     MediumRandom rng(mediumSeed(ctx, ray, 1));
-    if (m.method == MediumMethod::March) return marchMedium(ray, tEnd, behind, ctx, rng);
+    if (m.method == MediumMethod::March) return march(ray, tEnd, behind, ctx, rng);
     const auto track = [&](double end) {
         return m.method == MediumMethod::Ratio ? ratioTracking(m, ray, path, end, rng)
                                                : deltaTracking(m, ray, path, end, rng);
@@ -76,8 +69,8 @@ Vec3 WhittedIntegrator::throughMedium(const Ray& ray, double tEnd, const Vec3& b
     return L;
 }
 
-Vec3 WhittedIntegrator::marchMedium(const Ray& ray, double tEnd, const Vec3& behind,
-                                    ShadingContext& ctx, MediumRandom& rng) const {
+Vec3 MediumTransport::march(const Ray& ray, double tEnd, const Vec3& behind, ShadingContext& ctx,
+                            MediumRandom& rng) const {
     const Medium& m = mScene.medium;
     const MediumPath path(m, ray, 0.0, tEnd);
     const double step = marchStep(m);
