@@ -4,6 +4,8 @@
 // range's own triangles and tasks write disjoint ranges.
 #include "mesh/triangle_bvh.h"
 
+#include "csg/bvh/bvh_nesting.h"
+#include "csg/check.h"
 #include "mesh/bvh4.h"
 #include "mesh/bvh_split.h"
 
@@ -224,6 +226,7 @@ TriangleBvh::TriangleBvh(const TriangleMesh& mesh, const BvhBuildOptions& option
     mBounds = root->box;
     mNodes.reserve(nodes);
     builder.flatten(*root, mNodes);
+    KERF_DCHECK(childBoxesNest(mNodes, [](const Node& n) { return n.index; }));
     mTris.resize(refCount);
     mTriangleIndex.resize(refCount);
     for (size_t k = 0; k < refCount; ++k) {

@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "csg/bvh/bvh_nesting.h"
+#include "csg/check.h"
+
 namespace kerf {
 
 namespace {
@@ -63,6 +66,7 @@ Bvh::Bvh(const std::vector<Bounds3>& items, Split split)
     this->build(build, 0, static_cast<int>(build.size()), 0);
     mOrder.reserve(build.size());
     for (const BuildItem& b : build) mOrder.push_back(b.index);
+    KERF_DCHECK(childBoxesNest(mNodes, [](const Node& n) { return n.first; }));
 }
 
 void Bvh::setBox(Node& node, const Bounds3& box) {
