@@ -4,12 +4,9 @@
 /// lowered once and every use shares the same NodePtr. All meaning is checked here: types,
 /// ranges, undefined names and cycles, each reported once at its own location.
 ///
-/// The work is split by subject: lower.cpp (definitions and statements), lower_expr.cpp
-/// (arithmetic expressions), lower_values.cpp (booleans, strings, lists, ranges and the
-/// built-in functions on them), lower_calls.cpp (user functions: scopes, memo, call chain),
-/// lower_blocks.cpp (for, if, assert, echo, and loops inside Boolean bodies),
-/// lower_solids.cpp (solids and modifiers), lower_scene.cpp (materials, camera, lights, mist,
-/// render settings).
+/// The work is split by subject: lower.cpp (definitions and statements), one lower_<subject>.cpp
+/// per subject (expressions, values, calls, blocks, solids, modifiers, ...; each file's first
+/// comment says what it lowers).
 ///
 /// Scopes: top-level lets, solids, materials and functions are order-independent. Names made
 /// inside a block (a loop variable, a let in a for or if body, a comprehension variable, a

@@ -6,6 +6,8 @@
 #include "mesh/triangle_bvh.h"
 
 #include "csg/bvh/bvh_builder.h"
+#include "csg/bvh/bvh_nesting.h"
+#include "csg/check.h"
 #include "mesh/bvh4.h"
 #include "mesh/bvh_split.h"
 
@@ -80,6 +82,7 @@ TriangleBvh::TriangleBvh(const TriangleMesh& mesh, const BvhBuildOptions& option
         to.count = uint16_t(from.count);  // at most maxLeafSize ≤ 255
         to.axis = uint16_t(from.axis);
     }
+    KERF_DCHECK(childBoxesNest(mNodes, [](const Node& n) { return n.index; }));
     mTris.resize(refCount);
     mTriangleIndex.resize(refCount);
     for (size_t k = 0; k < refCount; ++k) {

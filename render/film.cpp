@@ -2,6 +2,8 @@
 /// @brief Filtered splatting of samples into tile films, and their sum.
 #include "render/film.h"
 
+#include "csg/check.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -70,6 +72,7 @@ void TileFilm::addInto(std::vector<double>& sums, int width, int height) const {
 }
 
 void TileFilm::addInto(std::vector<double>& sums, int x0, int y0, int width, int height) const {
+    KERF_DCHECK_GE(sums.size(), size_t(width) * size_t(height) * 4);
     for (int y = std::max(mY0, y0); y < std::min(mY0 + mHeight, y0 + height); ++y)
         for (int x = std::max(mX0, x0); x < std::min(mX0 + mWidth, x0 + width); ++x) {
             const double* s = &mSums[(size_t(y - mY0) * size_t(mWidth) + size_t(x - mX0)) * 4];
@@ -80,6 +83,7 @@ void TileFilm::addInto(std::vector<double>& sums, int x0, int y0, int width, int
 
 TileFilm TileFilm::fromParts(int filmX0, int filmY0, int filmWidth, int filmHeight,
                              std::vector<double> sums) {
+    KERF_DCHECK_EQ(sums.size(), size_t(filmWidth) * size_t(filmHeight) * 4);
     TileFilm film;
     film.mX0 = filmX0;
     film.mY0 = filmY0;

@@ -3,6 +3,7 @@
 /// lattice; shuffled per pixel and dimension.
 #include "render/sampler.h"
 
+#include "csg/check.h"
 #include "render/sample_permutation.h"
 
 #include <cmath>
@@ -102,6 +103,7 @@ PixelSampler::PixelSampler(int spp, SamplerKind kind)
 }
 
 SubPixel PixelSampler::get2D(uint64_t pixel, int s, uint32_t dim) const {
+    KERF_DCHECK_LT(uint32_t(s), uint32_t(mCount));  // 0 ≤ s < sampleCount()
     if (dim == sample_dim::kFilm) {
         if (mCount == 1) return SubPixel{};  // one camera ray: through the pixel centre
         return point(pixel, uint32_t(s), dim);

@@ -1,8 +1,8 @@
 /// @file scene/scene.h
-/// @brief The scene description that lang/ builds and render/ (and later slice/, volume
-/// export, kerf check) consume: plain data, validated when it was built. It holds nothing of
-/// the renderer's or the language's machinery, so any consumer can depend on it without a
-/// cycle: lang → scene → csg, render → scene.
+/// @brief The scene description that lang/ builds and render/, slice/, accuracy/ and app/'s
+/// commands (check, mesh, voxelize) consume: plain data, validated when it was built. It holds
+/// nothing of the renderer's or the language's machinery, so any consumer can depend on it
+/// without a cycle: lang → scene → csg, render → scene.
 #pragma once
 
 #include "csg/tree/node.h"
@@ -100,16 +100,16 @@ struct CameraDesc {
     Vec3 lookAt{0.0};
     Vec3 up{0.0, 1.0, 0.0};
     double fovDegrees = 40.0;  ///< vertical field of view, in (0, 180)
-    /// A thin lens (aperture > 0) and a shutter (reserved for motion blur: render/ draws one
-    /// instant yet). The defaults are the pinhole camera at one instant.
+    /// A thin lens (aperture > 0) and a shutter (each sample sees the scene at its own time in
+    /// it: motion blur of `move`/`spin`). The defaults are the pinhole camera at one instant.
     double aperture = 0.0;       ///< lens diameter; 0 is a pinhole
     double focusDistance = 0.0;  ///< 0: the distance from eye to lookAt
     double shutterOpen = 0.0;    ///< shutter interval in scene time; equal ends: one instant
     double shutterClose = 0.0;
 };
 
-/// Homogeneous mist, the only medium yet; heterogeneous media (a density grid from volume/)
-/// will sit beside it in Scene.
+/// Homogeneous mist, the cheap special case; a heterogeneous medium (a density grid) is
+/// Scene::medium (scene/medium.h).
 struct Mist {
     bool enabled = false;
     Vec3 color{0.0};
@@ -117,7 +117,7 @@ struct Mist {
 };
 
 /// A section plane through `point`: the solids are cut by it, the side `normal` points to
-/// removed. render/section_cut.h renders the cut; slice/ may read them too.
+/// removed. render/section_cut.h renders the cut (`kerf render --section` adds more).
 struct SectionPlane {
     Vec3 point{0.0};
     Vec3 normal{0.0, 0.0, 1.0};   ///< unit length

@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "csg/bvh/bvh_nesting.h"
+#include "csg/check.h"
+
 namespace kerf {
 
 namespace {
@@ -71,6 +74,7 @@ Bvh::Bvh(const std::vector<Bounds3>& items, Split split)
         to.axis = uint16_t(from.axis);
     }
     mOrder.assign(tree.order.begin(), tree.order.end());
+    KERF_DCHECK(childBoxesNest(mNodes, [](const Node& n) { return n.first; }));
 }
 
 void Bvh::setBox(Node& node, const Bounds3& box) {

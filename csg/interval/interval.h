@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 
+#include "csg/check.h"
 #include "csg/interval/interval_round.h"
 
 namespace kerf {
@@ -27,7 +28,9 @@ struct Interval {
 
     constexpr Interval() = default;
     constexpr Interval(double v) : lo(v), hi(v) {}  // NOLINT: a point is an interval
-    constexpr Interval(double l, double h, bool nan = false) : lo(l), hi(h), maybeNan(nan) {}
+    constexpr Interval(double l, double h, bool nan = false) : lo(l), hi(h), maybeNan(nan) {
+        KERF_DCHECK(!(l > h) || nan);  // lo ≤ hi (or an end NaN), or flagged
+    }
 
     static Interval entire() {
         return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),

@@ -3,6 +3,7 @@
 // difference are found through a BVH, so a box minus 1000 spheres tests a handful of spheres.
 #include "csg/bvh/bvh.h"
 #include "csg/bvh/clip_ray.h"
+#include "csg/check.h"
 #include "csg/tree/solids.h"
 
 #include <algorithm>
@@ -33,6 +34,7 @@ class BooleanNode final : public Node {
 public:
     BooleanNode(BoolOp op, std::vector<NodePtr> children)
         : mOp(op), mChildren(std::move(children)) {
+        KERF_DCHECK(!mChildren.empty());  // makeBoolean's caller gives the operands
         std::vector<Bounds3> boxes;
         for (const NodePtr& c : mChildren) boxes.push_back(c->bounds());
         mBounds = boxes[0];
@@ -351,7 +353,7 @@ private:
     }
 
     BoolOp mOp;
-    std::vector<NodePtr> mChildren;
+    const std::vector<NodePtr> mChildren;  // set once: trees are immutable
     size_t mFirstSearched = 0;
     int mGuide = -1;  ///< an intersection's closed-form operand that guides the search, or -1
     bool mUseBvh = false;

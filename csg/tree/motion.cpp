@@ -113,7 +113,7 @@ private:
         return m;
     }
 
-    NodePtr mChild;
+    const NodePtr mChild;  // set once: trees are immutable
     Vec3 mVelocity;
     Vec3 mSpin;
 };

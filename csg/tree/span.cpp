@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "csg/check.h"
+
 namespace kerf {
 
 namespace {
@@ -25,6 +27,13 @@ bool evaluate(BoolOp op, bool a, bool b) {
 
 const Boundary& boundaryAt(const SpanList& s, int k) {
     return (k & 1) ? s[k >> 1].out : s[k >> 1].in;
+}
+
+/// Every span list's contract: sorted and disjoint, i.e. its boundaries in t order (NaN fails).
+bool sortedDisjoint(const SpanList& s) {
+    for (int k = 1; k < 2 * s.size(); ++k)
+        if (!(boundaryAt(s, k - 1).t <= boundaryAt(s, k).t)) return false;
+    return true;
 }
 
 /// Whether the stretch between two boundaries is no wider than their own error: rounding for
@@ -64,6 +73,7 @@ void SpanList::grow() {
 
 void combineSpans(BoolOp op, const SpanList& a, const SpanList& b, double relTolerance,
                   SpanList& out) {
+    KERF_DCHECK(sortedDisjoint(a) && sortedDisjoint(b) && &out != &a && &out != &b);
     out.clear();
     const int na = 2 * a.size(), nb = 2 * b.size();
     int ia = 0, ib = 0;
@@ -107,6 +117,7 @@ void combineSpans(BoolOp op, const SpanList& a, const SpanList& b, double relTol
         if (takeB) ++ib;
     }
     dropThinSpans(out, relTolerance);
+    KERF_DCHECK(sortedDisjoint(out));
 }
 
 void dropThinSpans(SpanList& s, double relTolerance) {

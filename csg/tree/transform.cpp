@@ -126,7 +126,7 @@ public:
     }
 
 private:
-    NodePtr mChild;
+    const NodePtr mChild;  // set once: trees are immutable
     int32_t mMaterial;
 };
 
