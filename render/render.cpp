@@ -6,6 +6,7 @@
 #include "csg/tree/motion.h"
 #include "render/camera.h"
 #include "render/film.h"
+#include "render/medium_bake.h"
 #include "render/sampler.h"
 #include "render/section_cut.h"
 #include "render/shading.h"
@@ -206,7 +207,9 @@ RenderResult render(const Scene& input, const RenderOptions& options) {
     const auto setupStart = Clock::now();
     // Section views: every consumer below (acceleration, shadows, beams) sees the cut model.
     std::optional<Scene> cutScene;
-    const Scene& scene = input.sections.empty() ? input : cutScene.emplace(cutBySections(input));
+    const Scene& cut = input.sections.empty() ? input : cutScene.emplace(cutBySections(input));
+    std::optional<Scene> bakedScene;  // a mist's `bake N` is made here (render/medium_bake.h)
+    const Scene& scene = cut.medium.bake ? bakedScene.emplace(withBakedMedium(cut)) : cut;
     const int width = options.width > 0 ? options.width : scene.settings.width;
     const int height = options.height > 0 ? options.height : scene.settings.height;
     const int spp = options.spp > 0 ? options.spp : scene.settings.spp;
