@@ -28,19 +28,30 @@ std::string unreadableReason(const std::string& path) {
 
 }  // namespace
 
+AssetCache& processAssets() {
+    static AssetCache assets;  // lives as long as the process: one compile at a time
+    return assets;
+}
+
 std::optional<Scene> loadModel(const std::string& path, std::ostream& err, bool quiet,
                                SequenceFrame frame) {
+    return loadModel(path, err, processAssets(), quiet, frame);
+}
+
+std::optional<Scene> loadModel(const std::string& path, std::ostream& err, AssetCache& assets,
+                               bool quiet, SequenceFrame frame) {
     const std::string reason = unreadableReason(path);
     if (!reason.empty()) {
         err << "kerf: error: cannot read model file '" << path << "': " << reason << "\n";
         return std::nullopt;
     }
     DiagnosticSink sink;
+    assets.clearInputs();
     // OpenSCAD's exported CSG trees (.csg) have their own reader; everything else is kerf's
     // language.
     std::optional<Scene> scene = isOpenScadCsgPath(path)
-                                     ? compileOpenScadFile(path, sink)
-                                     : compileFile(path, sink, EvalLimits{}, frame);
+                                     ? compileOpenScadFile(path, sink, assets)
+                                     : compileFile(path, sink, assets, EvalLimits{}, frame);
     if (!sink.diagnostics().empty()) err << sink.format(!quiet);  // --quiet silences echo
     if (!scene && !sink.hasErrors()) {
         // The contract says errors are reported; never fail silently if one was not.

@@ -4,6 +4,7 @@
 
 #include "lang/lexer.h"
 #include "lang/lower.h"
+#include "lang/no_assets.h"
 #include "lang/parser.h"
 #include "lang/source.h"
 
@@ -94,14 +95,14 @@ private:
 };
 
 std::optional<Scene> compileSource(const SourceText& source, DiagnosticSink& sink,
-                                   EvalLimits limits, SequenceFrame frame) {
+                                   AssetProvider& assets, EvalLimits limits, SequenceFrame frame) {
     const int errorsBefore = sink.errorCount();
     const size_t diagnosticsBefore = sink.diagnostics().size();
     Program program;
     Loader(sink).addText(source, program);
     // Lowering runs even after syntax errors: broken definitions keep their names, so the
     // semantic errors found are real ones, not echoes of the syntax error.
-    Lowering lowering(sink, limits);
+    Lowering lowering(sink, assets, limits);
     lowering.setSequenceFrame(frame);
     std::optional<Scene> scene = lowering.lower(program);
     sink.sortByLocation(diagnosticsBefore);
@@ -111,8 +112,8 @@ std::optional<Scene> compileSource(const SourceText& source, DiagnosticSink& sin
 
 }  // namespace
 
-std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink, EvalLimits limits,
-                                 SequenceFrame frame) {
+std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink,
+                                 AssetProvider& assets, EvalLimits limits, SequenceFrame frame) {
     std::string why;
     auto bytes = readFileBytes(path, why);
     if (!bytes) {
@@ -122,14 +123,27 @@ std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink, 
     }
     return compileSource(SourceText{std::make_shared<const std::string>(path),
                                     std::make_shared<const std::string>(std::move(*bytes))},
-                         sink, limits, frame);
+                         sink, assets, limits, frame);
+}
+
+std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink, EvalLimits limits,
+                                 SequenceFrame frame) {
+    NoAssets none;
+    return compileFile(path, sink, none, limits, frame);
+}
+
+std::optional<Scene> compileString(const std::string& text, const std::string& name,
+                                   DiagnosticSink& sink, AssetProvider& assets, EvalLimits limits,
+                                   SequenceFrame frame) {
+    return compileSource(SourceText{std::make_shared<const std::string>(name),
+                                    std::make_shared<const std::string>(text)},
+                         sink, assets, limits, frame);
 }
 
 std::optional<Scene> compileString(const std::string& text, const std::string& name,
                                    DiagnosticSink& sink, EvalLimits limits, SequenceFrame frame) {
-    return compileSource(SourceText{std::make_shared<const std::string>(name),
-                                    std::make_shared<const std::string>(text)},
-                         sink, limits, frame);
+    NoAssets none;
+    return compileString(text, name, sink, none, limits, frame);
 }
 
 }  // namespace kerf

@@ -16,12 +16,13 @@
 
 #include "csg/profiles/profile.h"
 #include "csg/tape/expr.h"
-#include "io/font_outline.h"
 #include "lang/ast.h"
 #include "lang/eval_limits.h"
+#include "lang/no_assets.h"
 #include "lang/properties.h"
 #include "lang/sequence_frame.h"
 #include "lang/value.h"
+#include "scene/assets.h"
 #include "scene/limits.h"
 #include "scene/scene.h"
 
@@ -38,8 +39,14 @@ namespace kerf {
 
 class Lowering {
 public:
+    /// Assets (meshes, volumes, textures, fonts) come from `assets` (scene/assets.h).
+    Lowering(DiagnosticSink& sink, AssetProvider& assets, EvalLimits limits = {})
+        : mSink(sink), mAssets(assets), mLimits(limits) {}
+    /// Without assets (lang/no_assets.h): a model that names a file is an error there.
     explicit Lowering(DiagnosticSink& sink, EvalLimits limits = {})
-        : mSink(sink), mLimits(limits) {}
+        : mSink(sink), mAssets(mNoAssets), mLimits(limits) {}
+    Lowering(const Lowering&) = delete;
+    Lowering& operator=(const Lowering&) = delete;
 
     /// Lowers the program; nullopt if it reported any error. The syntax tree of each `solid`
     /// definition and `object` is freed once it is lowered (Statement::releaseTree), so the
@@ -83,6 +90,9 @@ private:
     std::string cycleMessage(const char* what, const std::vector<std::string>& busy,
                              const std::string& name) const;
     bool enter(SourcePos at);
+    /// A file name written at `at`, relative to the folder of the model file it is written in
+    /// (as includes are), unless absolute.
+    std::string resolvedPath(const std::string& written, SourcePos at) const;
     void error(SourcePos loc, std::string message, std::string hint = {});
 
     // lower_expr.cpp
@@ -174,7 +184,7 @@ private:
     NodePtr lowerMesh(const Solid& s);
     /// The shape of the file `written` at `at`, resolved against the model's folder; null
     /// with an error when it cannot be loaded.
-    std::shared_ptr<const MeshShape> meshShape(const std::string& written, SourcePos at);
+    std::shared_ptr<const MeshAsset> meshAsset(const std::string& written, SourcePos at);
     /// False, with an error at the mesh, when one of `operands` is (a transform, material or
     /// motion of) a mesh that is not a solid; `use` says what needs a solid ("an operand of
     /// difference"), written at `at`. Each such mesh is reported once.
@@ -197,10 +207,10 @@ private:
     /// `interior MATERIAL`: makeInterior below any material modifiers (the innermost wins).
     NodePtr interiorOf(const NodePtr& node, int32_t material);
     // lower_text.cpp
-    /// A `text { string … font … size … }` profile laid out (io/font_outline.h); nullopt with
+    /// A `text { string … font … size … }` profile laid out (scene/assets.h); nullopt with
     /// an error at the property at fault (a missing font at `font`, a missing glyph at
     /// `string`). The caller takes the union of `glyphs` when `glyphsOverlap`.
-    std::optional<TextOutline> lowerText(const Solid& s);
+    std::optional<TextShape> lowerText(const Solid& s);
     /// lowerText as a profile: one path, or the union of the glyphs when they overlap.
     std::optional<Profile> textProfile(const Solid& s);
 
@@ -249,12 +259,28 @@ private:
     std::optional<Light> lowerLight(const Statement& s);
     // lower_mist.cpp: homogeneous mist, or a heterogeneous medium when it has a density.
     void lowerMist(const Statement& s, Scene& scene);
+    /// The homogeneous mist (no density).
+    void lowerUniformMist(const PropertyBlock& b, const Statement& s, Scene& scene);
+    /// A medium's scalar properties (extinction, albedo, …), checked; false on error.
+    bool lowerMediumProperties(const PropertyBlock& b, Medium& medium);
+    /// `bounds box { … }` or min and max; false on error, nullopt in `out` when absent.
+    bool lowerMistBounds(const PropertyBlock& b, const Statement& s, std::optional<Bounds3>& out);
+    /// `density volume "file.vdb" [grid "name"]`.
+    bool lowerFogDensity(const PropertyBlock& b, const Statement& s,
+                         const std::optional<Bounds3>& bounds, Medium& medium);
+    /// `density EXPR`, and the `bake N` request (the bake is made by render/).
+    bool lowerExprDensity(const PropertyBlock& b, const std::optional<Bounds3>& bounds,
+                          Medium& medium);
+    /// The density's finite bound and sign over its box; false with an error.
+    bool checkDensity(const Property& density, const Medium& medium);
     void lowerRender(const Statement& s, RenderSettings& settings);
     void lowerBackground(const Statement& s, Scene& scene);
     // lower_sections.cpp
     void lowerSection(const Statement& s, Scene& scene);
 
     DiagnosticSink& mSink;
+    NoAssets mNoAssets;  ///< mAssets when no provider was given
+    AssetProvider& mAssets;
     EvalLimits mLimits;
     SequenceFrame mSequenceFrame;
     std::map<std::string, const Statement*> mFunctions;
@@ -286,12 +312,18 @@ private:
     bool mTooDeepReported = false;
     /// Mesh files by canonical path: each is loaded once and its shape shared by every use
     /// (null after a failed load, which was reported at its first use).
-    std::map<std::string, std::shared_ptr<const MeshShape>> mMeshFiles;
+    std::map<std::string, std::shared_ptr<const MeshAsset>> mMeshFiles;
     /// Level sets by canonical path and grid name (null after a failed load, reported once).
-    std::map<std::pair<std::string, std::string>, std::shared_ptr<const LevelSetGrid>> mVolumeFiles;
+    std::map<std::pair<std::string, std::string>, std::shared_ptr<const LevelSetAsset>>
+        mVolumeFiles;
     /// The leaves of meshes that are not solids, with where they were written (holding the
     /// node keeps its address from being reused).
-    std::unordered_map<const Node*, std::pair<NodePtr, SourcePos>> mOpenMeshes;
+    struct OpenMesh {
+        NodePtr leaf;
+        SourcePos at;
+        std::shared_ptr<const MeshAsset> mesh;
+    };
+    std::unordered_map<const Node*, OpenMesh> mOpenMeshes;
     /// The `mesh` expressions already reported as not solid (file index << 32 | offset): a
     /// loop or a function makes a leaf per pass, the error is given once.
     std::unordered_set<uint64_t> mReportedOpenMeshes;

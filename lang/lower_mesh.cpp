@@ -1,13 +1,11 @@
-// Lowering, part 3d: `mesh "file" smooth B`, a triangle mesh read from a file (mesh/). Each
-// file is loaded once per compile, whatever its transforms: every use is its own leaf over
-// one shared MeshShape (one copy of the triangles, one BVH). A mesh that is not a solid (open,
-// non-manifold, inconsistently oriented) renders as a surface on its own, and is refused
-// wherever a solid is needed: as a Boolean operand, displaced, or cut by a section plane.
+// Lowering, part 3d: `mesh "file" smooth B`, a triangle mesh got from the asset provider
+// (scene/assets.h). Each file is asked for once per compile, whatever its transforms: every use
+// is its own leaf over one shared mesh (one copy of the triangles, one BVH). A mesh that is not a
+// solid (open, non-manifold, inconsistently oriented) renders as a surface on its own, and is
+// refused wherever a solid is needed: as a Boolean operand, displaced, or cut by a section plane.
 #include "lang/lower.h"
 
 #include "csg/primitives/surfaces.h"
-#include "mesh/mesh_loader.h"
-#include "mesh/mesh_shape.h"
 
 #include <filesystem>
 #include <system_error>
@@ -18,13 +16,6 @@ namespace kerf {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// A MeshError's message without the path it starts with (the diagnostic names the file).
-std::string reasonOf(const MeshError& e, const std::string& path) {
-    const std::string message = e.what();
-    const std::string prefix = path + ": ";
-    return message.compare(0, prefix.size(), prefix) == 0 ? message.substr(prefix.size()) : message;
-}
 
 /// The mesh leaf under transforms, materials and motions, or null. Booleans over a mesh that
 /// is not a solid are never made, so a surface can only sit under one-child nodes.
@@ -42,6 +33,13 @@ const Node* meshLeafBelow(const Node* node) {
 }
 
 }  // namespace
+
+std::string Lowering::resolvedPath(const std::string& written, SourcePos at) const {
+    const fs::path model = *mSink.locate(at).file;
+    return fs::path(written).is_absolute()
+               ? written
+               : (model.parent_path() / written).lexically_normal().string();
+}
 
 NodePtr Lowering::lowerMesh(const Solid& s) {
     const PropertyBlock b(s.properties,
@@ -64,35 +62,28 @@ NodePtr Lowering::lowerMesh(const Solid& s) {
         error(at, "the mesh's file name is empty");
         return nullptr;
     }
-    std::shared_ptr<const MeshShape> shape = meshShape(v->string(), at);
-    if (!shape) return nullptr;
-    NodePtr leaf = meshNode(shape, smooth);
-    if (!shape->isSolid()) mOpenMeshes.emplace(leaf.get(), std::make_pair(leaf, s.loc));
+    std::shared_ptr<const MeshAsset> mesh = meshAsset(v->string(), at);
+    if (!mesh) return nullptr;
+    NodePtr leaf = mesh->leaf(smooth);
+    if (!mesh->isSolid()) mOpenMeshes.emplace(leaf.get(), OpenMesh{leaf, s.loc, mesh});
     return leaf;
 }
 
-std::shared_ptr<const MeshShape> Lowering::meshShape(const std::string& written, SourcePos at) {
-    // Relative to the folder of the model file it is written in, as includes and textures are.
-    const fs::path model = *mSink.locate(at).file;
-    const std::string path = fs::path(written).is_absolute()
-                                 ? written
-                                 : (model.parent_path() / written).lexically_normal().string();
+std::shared_ptr<const MeshAsset> Lowering::meshAsset(const std::string& written, SourcePos at) {
+    const std::string path = resolvedPath(written, at);
     std::error_code ec;
     fs::path canonical = fs::weakly_canonical(path, ec);
     const std::string key = ec ? path : canonical.string();
     if (const auto it = mMeshFiles.find(key); it != mMeshFiles.end())
         return it->second;  // failures once
-    std::shared_ptr<const MeshShape> shape;
-    try {
-        shape = loadMeshShape(path);
-    } catch (const MeshError& e) {
-        error(at, "cannot load mesh '" + written + "': " + reasonOf(e, path),
+    Loaded<MeshAsset> mesh = mAssets.mesh(path);
+    if (!mesh)
+        error(at, "cannot load mesh '" + written + "': " + mesh.error.reason,
               path == written
                   ? std::string()
                   : "mesh files are relative to the model file's folder; looked for " + path);
-    }
-    mMeshFiles.emplace(key, shape);
-    return shape;
+    mMeshFiles.emplace(key, mesh.value);
+    return mesh.value;
 }
 
 bool Lowering::checkSolidOperands(const std::vector<NodePtr>& operands, const std::string& use,
@@ -105,16 +96,15 @@ bool Lowering::checkSolidOperands(const std::vector<NodePtr>& operands, const st
         const auto it = leaf ? mOpenMeshes.find(leaf) : mOpenMeshes.end();
         if (it == mOpenMeshes.end()) continue;
         ok = false;
-        const SourcePos meshAt = it->second.second;
+        const SourcePos meshAt = it->second.at;
         if (!mReportedOpenMeshes.insert(uint64_t(meshAt.file) << 32 | meshAt.offset).second)
             continue;
-        const MeshShape& shape = *std::get<MeshParams>(leaf->params()).shape;
-        const MeshReport& report = shape.report();
-        std::string why = report.firstBadEdge ? describeBadEdge(*report.firstBadEdge)
-                                              : std::string("it has no closed surface");
+        const MeshAsset& mesh = *it->second.mesh;
+        std::string why = mesh.whyNotSolid();
+        if (why.empty()) why = "it has no closed surface";
         const SourceLoc used = mSink.locate(at);
         error(
-            meshAt, "mesh '" + shape.source() + "' is not a solid: " + why,
+            meshAt, "mesh '" + mesh.source() + "' is not a solid: " + why,
             "it is " + use + " at line " + std::to_string(used.line) + ", column " +
                 std::to_string(used.col) +
                 ", which needs a closed, consistently oriented mesh; on its own (an object, under "

@@ -2,17 +2,13 @@
 // Mist: colour and distance, the cheap special case). With `density EXPR` (in x, y, z) or
 // `density volume "file.vdb" [grid "name"]` it is a heterogeneous medium (scene/medium.h):
 // bounds, extinction, albedo, emission, g, method and step, samples, and `bake N` to trace an
-// expression's density from bricked storage.
+// expression's density from bricked storage. The bake is only requested here (Medium::bake):
+// render/ makes it when it prepares the medium, so `kerf check` bakes nothing.
 #include "lang/lower.h"
 
 #include "csg/tape/tape.h"
-#include "volume/grids/bricked_field.h"
-#include "volume/grids/vdb_fog.h"
 
-#include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <stdexcept>
 
 namespace kerf {
 namespace {
@@ -85,37 +81,7 @@ void Lowering::lowerMist(const Statement& s, Scene& scene) {
                           "mist", s.loc, mSink);
     if (!b.ok()) return;
     const Property* density = b.find("density");
-    static const char* const kMediumOnly[] = {"bounds", "min",      "max", "extinction",
-                                              "albedo", "emission", "g",   "method",
-                                              "step",   "samples",  "bake"};
-    if (!density) {  // the homogeneous mist
-        Mist& mist = scene.mist;
-        for (const char* name : kMediumOnly)
-            if (const Property* p = b.find(name)) {
-                error(p->loc, std::string("mist ") + name + " needs a density",
-                      "write density EXPR bounds box { min … max … }, or use color and distance "
-                      "for uniform mist");
-                return;
-            }
-        if (!b.find("distance")) {
-            error(s.loc, "mist needs a distance (uniform mist) or a density (a medium)",
-                  "write e.g. mist { color <0.8, 0.85, 0.9> distance 30 }");
-            return;
-        }
-        bool ok = readVector(b, "color", mist.color);
-        ok &= readNumber(b, "distance", mist.distance);
-        if (!ok) return;
-        if (!nonNegative(mist.color))
-            error(b.find("color")->valueLoc(),
-                  "mist color must not have negative components, got " + formatVector(mist.color));
-        if (!(mist.distance > 0))
-            error(b.find("distance")->valueLoc(),
-                  "mist distance must be positive, got " + formatNumber(mist.distance));
-        mist.enabled = true;
-        return;
-    }
-
-    Medium medium;
+    if (!density) return lowerUniformMist(b, s, scene);
     for (const char* name : {"distance", "color"})
         if (const Property* p = b.find(name)) {
             error(p->loc,
@@ -126,6 +92,46 @@ void Lowering::lowerMist(const Statement& s, Scene& scene) {
                   "colour scattered");
             return;
         }
+    Medium medium;
+    std::optional<Bounds3> bounds;
+    if (!lowerMediumProperties(b, medium) || !lowerMistBounds(b, s, bounds)) return;
+    const bool ok = density->solid ? lowerFogDensity(b, s, bounds, medium)
+                                   : lowerExprDensity(b, bounds, medium);
+    // A baked density is clamped at 0 and stored as finite floats: nothing left to check.
+    if (!ok || (!medium.bake && !checkDensity(*density, medium))) return;
+    scene.medium = std::move(medium);
+}
+
+void Lowering::lowerUniformMist(const PropertyBlock& b, const Statement& s, Scene& scene) {
+    static const char* const kMediumOnly[] = {"bounds", "min",      "max", "extinction",
+                                              "albedo", "emission", "g",   "method",
+                                              "step",   "samples",  "bake"};
+    Mist& mist = scene.mist;
+    for (const char* name : kMediumOnly)
+        if (const Property* p = b.find(name)) {
+            error(p->loc, std::string("mist ") + name + " needs a density",
+                  "write density EXPR bounds box { min … max … }, or use color and distance "
+                  "for uniform mist");
+            return;
+        }
+    if (!b.find("distance")) {
+        error(s.loc, "mist needs a distance (uniform mist) or a density (a medium)",
+              "write e.g. mist { color <0.8, 0.85, 0.9> distance 30 }");
+        return;
+    }
+    bool ok = readVector(b, "color", mist.color);
+    ok &= readNumber(b, "distance", mist.distance);
+    if (!ok) return;
+    if (!nonNegative(mist.color))
+        error(b.find("color")->valueLoc(),
+              "mist color must not have negative components, got " + formatVector(mist.color));
+    if (!(mist.distance > 0))
+        error(b.find("distance")->valueLoc(),
+              "mist distance must be positive, got " + formatNumber(mist.distance));
+    mist.enabled = true;
+}
+
+bool Lowering::lowerMediumProperties(const PropertyBlock& b, Medium& medium) {
     bool ok = readNumber(b, "extinction", medium.extinction);
     ok &= readVector(b, "albedo", medium.albedo);
     ok &= readVector(b, "emission", medium.emission);
@@ -134,153 +140,171 @@ void Lowering::lowerMist(const Statement& s, Scene& scene) {
     ok &= readInteger(b, "samples", 1, 64, medium.samples);
     std::string method;
     ok &= readWord(b, "method", {"ratio", "delta", "march"}, method);
-    if (!ok) return;
+    if (!ok) return false;
     const auto at = [&](const char* name) { return b.find(name)->valueLoc(); };
+    const auto fail = [&](SourcePos where, std::string message, std::string hint = {}) {
+        error(where, std::move(message), std::move(hint));
+        return false;
+    };
     if (b.find("extinction") && !(medium.extinction >= 0 && std::isfinite(medium.extinction)))
-        return error(at("extinction"),
-                     "mist extinction must be 0 or more, got " + formatNumber(medium.extinction),
-                     "extinction per unit density per unit length");
+        return fail(at("extinction"),
+                    "mist extinction must be 0 or more, got " + formatNumber(medium.extinction),
+                    "extinction per unit density per unit length");
     if (b.find("albedo") && !(nonNegative(medium.albedo) && medium.albedo.x <= 1 &&
                               medium.albedo.y <= 1 && medium.albedo.z <= 1))
-        return error(at("albedo"),
-                     "mist albedo must be within 0 to 1, got " + formatVector(medium.albedo),
-                     "albedo is the fraction of extinguished light scattered, per channel");
+        return fail(at("albedo"),
+                    "mist albedo must be within 0 to 1, got " + formatVector(medium.albedo),
+                    "albedo is the fraction of extinguished light scattered, per channel");
     if (b.find("emission") &&
         !(nonNegative(medium.emission) && std::isfinite(medium.emission.x) &&
           std::isfinite(medium.emission.y) && std::isfinite(medium.emission.z)))
-        return error(at("emission"), "mist emission must be finite and not negative, got " +
-                                         formatVector(medium.emission));
+        return fail(at("emission"), "mist emission must be finite and not negative, got " +
+                                        formatVector(medium.emission));
     if (b.find("g") && !(medium.g > -1 && medium.g < 1))
-        return error(at("g"),
-                     "mist g must be between -1 and 1 (exclusive), got " + formatNumber(medium.g),
-                     "g is the Henyey-Greenstein asymmetry: 0 scatters evenly, > 0 forward");
+        return fail(at("g"),
+                    "mist g must be between -1 and 1 (exclusive), got " + formatNumber(medium.g),
+                    "g is the Henyey-Greenstein asymmetry: 0 scatters evenly, > 0 forward");
     if (!method.empty())
         medium.method = method == "ratio"   ? MediumMethod::Ratio
                         : method == "delta" ? MediumMethod::Delta
                                             : MediumMethod::March;
     if (b.find("step") && !(medium.step > 0 && std::isfinite(medium.step)))
-        return error(at("step"), "mist step must be positive, got " + formatNumber(medium.step));
+        return fail(at("step"), "mist step must be positive, got " + formatNumber(medium.step));
     if (b.find("step") && medium.method != MediumMethod::March)
-        return error(b.find("step")->loc, "mist step is the march method's step",
-                     "write method march step " + formatNumber(medium.step));
+        return fail(b.find("step")->loc, "mist step is the march method's step",
+                    "write method march step " + formatNumber(medium.step));
+    return true;
+}
 
-    // The box: `bounds box { … }` or min and max.
-    std::optional<Bounds3> bounds;
+bool Lowering::lowerMistBounds(const PropertyBlock& b, const Statement& s,
+                               std::optional<Bounds3>& bounds) {
+    const auto fail = [&](SourcePos where, std::string message) {
+        error(where, std::move(message));
+        return false;
+    };
     if (const Property* p = b.find("bounds")) {
         if (b.find("min") || b.find("max"))
-            return error(p->loc, "mist takes bounds or min and max, not both");
+            return fail(p->loc, "mist takes bounds or min and max, not both");
         if (!p->solid || p->solid->kind != Solid::Kind::Primitive || p->solid->name != "box")
-            return error(p->valueLoc(), "property 'bounds' of mist expects box { min … max … }");
+            return fail(p->valueLoc(), "property 'bounds' of mist expects box { min … max … }");
         bounds = boxBounds(*p->solid, "bounds");
-        if (!bounds) return;
+        if (!bounds) return false;
     } else if (b.find("min") || b.find("max")) {
         if (!b.find("min") || !b.find("max"))
-            return error((b.find("min") ? b.find("min") : b.find("max"))->loc,
-                         "mist needs both min and max");
+            return fail((b.find("min") ? b.find("min") : b.find("max"))->loc,
+                        "mist needs both min and max");
         Bounds3 box{Vec3(0.0), Vec3(0.0)};
-        if (!readVector(b, "min", box.lo) || !readVector(b, "max", box.hi)) return;
+        if (!readVector(b, "min", box.lo) || !readVector(b, "max", box.hi)) return false;
         if (!(box.lo.x < box.hi.x && box.lo.y < box.hi.y && box.lo.z < box.hi.z))
-            return error(at("max"), "empty mist bounds: min " + formatVector(box.lo) +
-                                        " must be less than max " + formatVector(box.hi) +
-                                        " on every axis");
+            return fail(b.find("max")->valueLoc(),
+                        "empty mist bounds: min " + formatVector(box.lo) +
+                            " must be less than max " + formatVector(box.hi) + " on every axis");
         bounds = box;
     }
-    if (bounds && !bounds->finite()) return error(s.loc, "mist bounds must be finite");
+    if (bounds && !bounds->finite()) return fail(s.loc, "mist bounds must be finite");
+    return true;
+}
 
-    if (density->solid) {  // density volume "file.vdb" [grid "name"]
-        const Solid& fog = *density->solid;
-        const Property* file = nullptr;
-        const Property* grid = nullptr;
-        for (const Property& p : fog.properties) (p.name == "file" ? file : grid) = &p;
-        if (fog.name != "volume" || !file)
-            return error(fog.loc,
-                         "property 'density' of mist expects an expression in x, y, z or volume "
-                         "\"file.vdb\"");
-        if (const Property* bake = b.find("bake"))
-            return error(bake->loc, "mist bake is for a density written as an expression",
-                         "a fog volume is already a grid");
-        const auto fileValue = evaluate(*file->expr, nullptr);
-        if (!fileValue) return;
-        std::string gridName;
-        if (grid) {
-            const auto g = evaluate(*grid->expr, nullptr);
-            if (!g) return;
-            gridName = *g->text;
-        }
-        const std::string written = *fileValue->text;
-        namespace fs = std::filesystem;
-        const fs::path model = *mSink.locate(file->valueLoc()).file;
-        const std::string path = fs::path(written).is_absolute()
-                                     ? written
-                                     : (model.parent_path() / written).lexically_normal().string();
-        try {
-            VdbFog v = loadVdbFog(path, gridName);
-            medium.density = v.density;
-            medium.bounds = bounds ? Bounds3::overlap(*bounds, v.bounds) : v.bounds;
-            if (medium.bounds.empty())
-                return error(b.find("bounds") ? b.find("bounds")->loc : s.loc,
-                             "mist bounds do not overlap the fog volume");
-        } catch (const VdbFogError& e) {
-            return error(
-                grid && std::string(e.what()).find("no grid") != std::string::npos
-                    ? grid->loc
-                    : file->valueLoc(),
-                "cannot read fog volume '" + written + "': " + e.what(),
-                path == written
-                    ? std::string()
-                    : "volume files are relative to the model file's folder; looked for " + path);
-        }
-    } else {  // density EXPR
-        if (!bounds)
-            return error(density->loc, "a mist density needs bounds",
-                         "write bounds box { min <x, y, z> max <x, y, z> } around where the "
-                         "density is nonzero");
-        ExprGraph graph;
-        const auto v = evaluate(*density->expr, &graph);
-        if (!v) return;
-        if (v->type != Value::Type::Field && v->type != Value::Type::Number)
-            return error(density->expr->start,
-                         "property 'density' of mist expects a function of x, y, z, got " +
-                             typeName(v->type));
-        const ExprId root = v->type == Value::Type::Field ? v->field : graph.constant(v->number);
-        auto exact = std::make_shared<TapeDensity>(Tape::compile(graph, root));
-        medium.bounds = *bounds;
-        medium.density = exact;
-        if (const Property* bake = b.find("bake")) {
-            // `bake N`: the density sampled at N points along the box's longest side into
-            // bricked storage (volume/grids/bricked_field.h), traced as its trilinear interpolant:
-            // one lookup per point however costly the expression, majorants from the bricks'
-            // maxima.
-            int resolution = 0;
-            if (!readInteger(b, "bake", 2, 4096, resolution)) return;
-            try {
-                medium.density =
-                    bakeField([exact](const Vec3& p) { return std::max(0.0, exact->value(p)); },
-                              medium.bounds, resolution);
-            } catch (const std::invalid_argument& e) {
-                return error(bake->valueLoc(),
-                             std::string("cannot bake the mist density: ") + e.what());
-            }
-        }
+bool Lowering::lowerFogDensity(const PropertyBlock& b, const Statement& s,
+                               const std::optional<Bounds3>& bounds, Medium& medium) {
+    const Solid& fog = *b.find("density")->solid;
+    const Property* file = nullptr;
+    const Property* grid = nullptr;
+    for (const Property& p : fog.properties) (p.name == "file" ? file : grid) = &p;
+    if (fog.name != "volume" || !file) {
+        error(fog.loc,
+              "property 'density' of mist expects an expression in x, y, z or volume "
+              "\"file.vdb\"");
+        return false;
     }
+    if (const Property* bake = b.find("bake")) {
+        error(bake->loc, "mist bake is for a density written as an expression",
+              "a fog volume is already a grid");
+        return false;
+    }
+    const auto fileValue = evaluate(*file->expr, nullptr);
+    if (!fileValue) return false;
+    std::string gridName;
+    if (grid) {
+        const auto g = evaluate(*grid->expr, nullptr);
+        if (!g) return false;
+        gridName = *g->text;
+    }
+    const std::string written = *fileValue->text;
+    const std::string path = resolvedPath(written, file->valueLoc());
+    const Loaded<FogAsset> v = mAssets.fogVolume(path, gridName);
+    if (!v) {
+        error(grid && v.error.subject == AssetError::Subject::Part ? grid->loc : file->valueLoc(),
+              "cannot read fog volume '" + written + "': " + v.error.reason,
+              path == written
+                  ? std::string()
+                  : "volume files are relative to the model file's folder; looked for " + path);
+        return false;
+    }
+    medium.density = v.value->density;
+    medium.bounds = bounds ? Bounds3::overlap(*bounds, v.value->bounds) : v.value->bounds;
+    if (medium.bounds.empty()) {
+        error(b.find("bounds") ? b.find("bounds")->loc : s.loc,
+              "mist bounds do not overlap the fog volume");
+        return false;
+    }
+    return true;
+}
 
+bool Lowering::lowerExprDensity(const PropertyBlock& b, const std::optional<Bounds3>& bounds,
+                                Medium& medium) {
+    const Property& density = *b.find("density");
+    if (!bounds) {
+        error(density.loc, "a mist density needs bounds",
+              "write bounds box { min <x, y, z> max <x, y, z> } around where the density is "
+              "nonzero");
+        return false;
+    }
+    ExprGraph graph;
+    const auto v = evaluate(*density.expr, &graph);
+    if (!v) return false;
+    if (v->type != Value::Type::Field && v->type != Value::Type::Number) {
+        error(density.expr->start,
+              "property 'density' of mist expects a function of x, y, z, got " + typeName(v->type));
+        return false;
+    }
+    const ExprId root = v->type == Value::Type::Field ? v->field : graph.constant(v->number);
+    medium.bounds = *bounds;
+    medium.density = std::make_shared<TapeDensity>(Tape::compile(graph, root));
+    if (const Property* bake = b.find("bake")) {
+        // `bake N`: render/ samples the density at N points along the box's longest side into
+        // bricked storage and traces its trilinear interpolant (scene/medium.h MediumBake).
+        MediumBake request;
+        if (!readInteger(b, "bake", 2, 4096, request.resolution)) return false;
+        const SourceLoc at = mSink.locate(bake->valueLoc());
+        request.where = *at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.col);
+        medium.bake = std::move(request);
+    }
+    return true;
+}
+
+bool Lowering::checkDensity(const Property& density, const Medium& medium) {
     // The majorant needs a finite bound; negative density the bound can prove is an error,
     // anywhere else a negative value is read as 0.
     const Bounds3& box = medium.bounds;
     const Interval r = medium.density->range(
         Interval(box.lo.x, box.hi.x), Interval(box.lo.y, box.hi.y), Interval(box.lo.z, box.hi.z));
-    if (!(std::isfinite(r.lo) && std::isfinite(r.hi)))
-        return error(density->valueLoc(),
-                     "the mist density has no finite bound over its bounds (got [" +
-                         formatNumber(r.lo) + ", " + formatNumber(r.hi) + "])",
-                     "the renderer needs a majorant: write a density bounded over the box");
+    if (!(std::isfinite(r.lo) && std::isfinite(r.hi))) {
+        error(density.valueLoc(),
+              "the mist density has no finite bound over its bounds (got [" + formatNumber(r.lo) +
+                  ", " + formatNumber(r.hi) + "])",
+              "the renderer needs a majorant: write a density bounded over the box");
+        return false;
+    }
     int budget = kNegativeSearchBudget;
-    if (const auto neg = provedNegative(*medium.density, box, 0, budget))
-        return error(density->valueLoc(),
-                     "the mist density is negative in the box from " + formatVector(neg->lo) +
-                         " to " + formatVector(neg->hi),
-                     "density must be 0 or more; e.g. max(0, …) clamps it");
-    scene.medium = std::move(medium);
+    if (const auto neg = provedNegative(*medium.density, box, 0, budget)) {
+        error(density.valueLoc(),
+              "the mist density is negative in the box from " + formatVector(neg->lo) + " to " +
+                  formatVector(neg->hi),
+              "density must be 0 or more; e.g. max(0, …) clamps it");
+        return false;
+    }
+    return true;
 }
 
 }  // namespace kerf

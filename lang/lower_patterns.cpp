@@ -1,14 +1,12 @@
 // Lowering, part 6: solid textures (`pattern KIND { a … b … } transforms` in a material),
 // and image textures (`pattern image { file "…" mapping … } transforms`), whose file is
-// opened here so a bad one is an error at its `file` property before anything renders.
+// opened now (by the asset provider, scene/assets.h) so a bad one is an error at its `file`
+// property before anything renders.
 #include "lang/lower.h"
 
-#include "io/image.h"
-#include "io/texture.h"
 #include "lang/names.h"
 
 #include <cmath>
-#include <filesystem>
 
 namespace kerf {
 
@@ -148,23 +146,20 @@ bool Lowering::lowerImage(const PropertyBlock& b, Pattern& pattern) {
         return false;
     }
     // Relative to the folder of the model file the property is written in, as includes are.
-    namespace fs = std::filesystem;
-    const fs::path model = *mSink.locate(at).file;
-    const std::string path = fs::path(written).is_absolute()
-                                 ? written
-                                 : (model.parent_path() / written).lexically_normal().string();
-    try {
-        map->texture = Texture::open(path);
-    } catch (const TextureError& e) {
-        error(at, "cannot read texture '" + written + "': " + e.reason,
-              path == written
-                  ? std::string()
-                  : "texture files are relative to the model file's folder; looked for " + path);
-        return false;
-    } catch (const ImageSupportError& e) {
-        error(at, e.what());
+    const std::string path = resolvedPath(written, at);
+    Loaded<Texture> texture = mAssets.texture(path);
+    if (!texture) {
+        if (texture.error.standalone)
+            error(at, texture.error.reason);
+        else
+            error(
+                at, "cannot read texture '" + written + "': " + texture.error.reason,
+                path == written
+                    ? std::string()
+                    : "texture files are relative to the model file's folder; looked for " + path);
         return false;
     }
+    map->texture = std::move(texture.value);
     map->path = path;
     pattern.image = std::move(map);
     return true;

@@ -1,14 +1,15 @@
 // Lowering: `text { string "kerf" font "DejaVu Sans" size 1 halign center valign baseline
-// spacing 1 }`, a 2-D profile whose outline is the font's glyphs (io/font_outline.h). The
-// font is looked up now, so a missing font or character is an error at its property.
-#include <filesystem>
-
+// spacing 1 }`, a 2-D profile whose outline is the font's glyphs, laid out by the asset
+// provider (scene/assets.h). The font is looked up now, so a missing font or character is an
+// error at its property.
 #include "csg/profiles/profile.h"
 #include "lang/lower.h"
 
+#include <filesystem>
+
 namespace kerf {
 
-std::optional<TextOutline> Lowering::lowerText(const Solid& s) {
+std::optional<TextShape> Lowering::lowerText(const Solid& s) {
     const PropertyBlock b(s.properties,
                           {{"string", PropertyType::Word, true},
                            {"font", PropertyType::Word},
@@ -18,7 +19,7 @@ std::optional<TextOutline> Lowering::lowerText(const Solid& s) {
                            {"spacing", PropertyType::Number}},
                           "text", s.loc, mSink);
     bool ok = b.ok();
-    TextSpec spec;
+    TextRequest spec;
     // A string property: its value must be a string (written in quotes or computed).
     auto readString = [&](const char* name, std::string& out) {
         const Property* p = b.find(name);
@@ -54,38 +55,35 @@ std::optional<TextOutline> Lowering::lowerText(const Solid& s) {
             return std::nullopt;
         }
     }
-    spec.halign = halign == "center"  ? TextSpec::HAlign::Center
-                  : halign == "right" ? TextSpec::HAlign::Right
-                                      : TextSpec::HAlign::Left;
-    spec.valign = valign == "top"      ? TextSpec::VAlign::Top
-                  : valign == "center" ? TextSpec::VAlign::Center
-                  : valign == "bottom" ? TextSpec::VAlign::Bottom
-                                       : TextSpec::VAlign::Baseline;
+    spec.halign = halign == "center"  ? TextRequest::HAlign::Center
+                  : halign == "right" ? TextRequest::HAlign::Right
+                                      : TextRequest::HAlign::Left;
+    spec.valign = valign == "top"      ? TextRequest::VAlign::Top
+                  : valign == "center" ? TextRequest::VAlign::Center
+                  : valign == "bottom" ? TextRequest::VAlign::Bottom
+                                       : TextRequest::VAlign::Baseline;
 
     // A font file is relative to the model file's folder, as meshes and textures are.
     const Property* fontProp = b.find("font");
     const SourcePos fontAt = fontProp ? fontProp->valueLoc() : s.loc;
-    if (isFontPath(spec.font) && !std::filesystem::path(spec.font).is_absolute()) {
-        const std::filesystem::path model = *mSink.locate(fontAt).file;
-        spec.font = (model.parent_path() / spec.font).lexically_normal().string();
-    }
-    try {
-        TextOutline text = layoutText(spec);
-        if (text.shape.loops.empty()) {
-            error(b.find("string")->valueLoc(), "text '" + spec.text + "' has no visible glyph");
-            return std::nullopt;
-        }
-        return text;
-    } catch (const FontError& e) {
+    spec.folder = std::filesystem::path(*mSink.locate(fontAt).file).parent_path().string();
+    Loaded<TextShape> text = mAssets.text(spec);
+    if (!text) {
         // Font lookups are errors at the font; bad characters and UTF-8 at the string.
-        error(e.subject == FontError::Subject::Font ? fontAt : b.find("string")->valueLoc(),
-              e.message, e.hint);
+        error(
+            text.error.subject == AssetError::Subject::File ? fontAt : b.find("string")->valueLoc(),
+            text.error.reason, text.error.hint);
         return std::nullopt;
     }
+    if (text.value->shape.loops.empty()) {
+        error(b.find("string")->valueLoc(), "text '" + spec.text + "' has no visible glyph");
+        return std::nullopt;
+    }
+    return *text.value;
 }
 
 std::optional<Profile> Lowering::textProfile(const Solid& s) {
-    std::optional<TextOutline> text = lowerText(s);
+    std::optional<TextShape> text = lowerText(s);
     if (!text) return std::nullopt;
     // One even-odd path is the text exactly when no two glyphs share a point; else the
     // overlap would be a hole, so the glyphs are joined by a union.

@@ -1,12 +1,9 @@
 // Lowering, part 3e: `volume "file.vdb" grid "name"`, a level set read from a .vdb file
-// (volume/grids/vdb_level_set.h) as a solid. The path is relative to the model file, as a mesh's
-// is; each (file, grid) is read once per compile and its samples shared by every use. A file that
-// cannot be a solid is an error at the file's string, or at the grid's name when the grid is
+// (by the asset provider, scene/assets.h) as a solid. The path is relative to the model file, as a
+// mesh's is; each (file, grid) is read once per compile and its samples shared by every use. A file
+// that cannot be a solid is an error at the file's string, or at the grid's name when the grid is
 // what is wrong.
 #include "lang/lower.h"
-
-#include "volume/grids/level_set_node.h"
-#include "volume/grids/vdb_level_set.h"
 
 #include <filesystem>
 #include <system_error>
@@ -46,28 +43,23 @@ NodePtr Lowering::lowerVolume(const Solid& s) {
         gridName = g->string();
     }
     const std::string& written = v->string();
-    const fs::path model = *mSink.locate(at).file;
-    const std::string path = fs::path(written).is_absolute()
-                                 ? written
-                                 : (model.parent_path() / written).lexically_normal().string();
+    const std::string path = resolvedPath(written, at);
     std::error_code ec;
     const fs::path canonical = fs::weakly_canonical(path, ec);
     const auto key = std::make_pair(ec ? path : canonical.string(), gridName);
     auto it = mVolumeFiles.find(key);
     if (it == mVolumeFiles.end()) {
-        std::shared_ptr<const LevelSetGrid> grid;
-        try {
-            grid = loadLevelSet(path, gridName);
-        } catch (const VdbError& e) {
-            error(e.aboutGrid() && !gridName.empty() ? gridAt : at,
-                  "cannot use volume '" + written + "' as a solid: " + e.what(),
-                  path == written
-                      ? std::string()
-                      : "volume files are relative to the model file's folder; looked for " + path);
-        }
-        it = mVolumeFiles.emplace(key, grid).first;  // a failure is reported once
+        Loaded<LevelSetAsset> grid = mAssets.levelSet(path, gridName);
+        if (!grid)
+            error(
+                grid.error.subject == AssetError::Subject::Part && !gridName.empty() ? gridAt : at,
+                "cannot use volume '" + written + "' as a solid: " + grid.error.reason,
+                path == written
+                    ? std::string()
+                    : "volume files are relative to the model file's folder; looked for " + path);
+        it = mVolumeFiles.emplace(key, grid.value).first;  // a failure is reported once
     }
-    return it->second ? levelSetSolid(it->second) : nullptr;
+    return it->second ? it->second->leaf() : nullptr;
 }
 
 }  // namespace kerf

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "lang/diagnostic.h"
+#include "scene/assets.h"
 #include "scene/scene.h"
 
 #include <cstdint>
@@ -56,9 +57,14 @@ std::vector<ScadCall> parseOpenScadCsg(const std::string& text, uint32_t file,
 
 /// Reads, parses and lowers a .csg file. On any error returns nullopt with every error found
 /// reported to `sink`; notes and warnings are reported either way.
+/// Fonts (text) and polyhedra's meshes come from `assets`; without it, none can be had.
+std::optional<Scene> compileOpenScadFile(const std::string& path, DiagnosticSink& sink,
+                                         AssetProvider& assets);
 std::optional<Scene> compileOpenScadFile(const std::string& path, DiagnosticSink& sink);
 
 /// The same for text in memory; `name` is used in diagnostics.
+std::optional<Scene> compileOpenScadString(const std::string& text, const std::string& name,
+                                           DiagnosticSink& sink, AssetProvider& assets);
 std::optional<Scene> compileOpenScadString(const std::string& text, const std::string& name,
                                            DiagnosticSink& sink);
 

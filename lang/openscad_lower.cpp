@@ -6,6 +6,7 @@
 
 #include "csg/affine_check.h"
 #include "csg/tree/solids.h"
+#include "lang/no_assets.h"
 #include "lang/source.h"
 
 #include <algorithm>
@@ -426,6 +427,12 @@ void frameScene(Scene& scene, const Bounds3& box) {
 
 std::optional<Scene> compileOpenScadString(const std::string& text, const std::string& name,
                                            DiagnosticSink& sink) {
+    NoAssets none;
+    return compileOpenScadString(text, name, sink, none);
+}
+
+std::optional<Scene> compileOpenScadString(const std::string& text, const std::string& name,
+                                           DiagnosticSink& sink, AssetProvider& assets) {
     const int errorsBefore = sink.errorCount();
     const size_t diagnosticsBefore = sink.diagnostics().size();
     SourceText source{std::make_shared<const std::string>(name),
@@ -436,7 +443,7 @@ std::optional<Scene> compileOpenScadString(const std::string& text, const std::s
     Scene scene;
     scene.materials[0].color = Vec3(0.976, 0.843, 0.173);  // OpenSCAD's default face colour
     scene.materials[0].specular = 0.2;
-    ScadLowering lowering(sink, scene);
+    ScadLowering lowering(sink, scene, assets);
     NodePtr root;
     if (sink.errorCount() == errorsBefore) root = lowering.lowerAll(calls);
     lowering.finish();
@@ -463,6 +470,12 @@ std::optional<Scene> compileOpenScadString(const std::string& text, const std::s
 }
 
 std::optional<Scene> compileOpenScadFile(const std::string& path, DiagnosticSink& sink) {
+    NoAssets none;
+    return compileOpenScadFile(path, sink, none);
+}
+
+std::optional<Scene> compileOpenScadFile(const std::string& path, DiagnosticSink& sink,
+                                         AssetProvider& assets) {
     std::string why;
     auto bytes = readFileBytes(path, why);
     if (!bytes) {
@@ -470,7 +483,7 @@ std::optional<Scene> compileOpenScadFile(const std::string& path, DiagnosticSink
                    "cannot read '" + path + "': " + why);
         return std::nullopt;
     }
-    return compileOpenScadString(*bytes, path, sink);
+    return compileOpenScadString(*bytes, path, sink, assets);
 }
 
 bool isOpenScadCsgPath(const std::string& path) {

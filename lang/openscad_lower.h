@@ -6,6 +6,7 @@
 #pragma once
 
 #include "lang/openscad_csg.h"
+#include "scene/assets.h"
 
 #include <map>
 #include <tuple>
@@ -14,7 +15,9 @@ namespace kerf {
 
 class ScadLowering {
 public:
-    ScadLowering(DiagnosticSink& sink, Scene& scene) : mSink(sink), mScene(scene) {}
+    /// Fonts and polyhedra's meshes come from `assets` (scene/assets.h).
+    ScadLowering(DiagnosticSink& sink, Scene& scene, AssetProvider& assets)
+        : mSink(sink), mScene(scene), mAssets(assets) {}
 
     /// The union of the top-level calls in OpenSCAD's coordinates; null when the model is
     /// empty or had errors (reported).
@@ -39,6 +42,7 @@ public:
     void warning(SourcePos pos, std::string message);
 
     SourceLoc locate(SourcePos pos) const { return mSink.locate(pos); }
+    AssetProvider& assets() { return mAssets; }
     /// An error at a node that cannot be read; past kMaxUnsupportedReports of them only
     /// counted, and summed up in one error by finish().
     void unsupported(const ScadCall& c, const std::string& message);
@@ -68,6 +72,7 @@ private:
 
     DiagnosticSink& mSink;
     Scene& mScene;
+    AssetProvider& mAssets;
     std::map<std::tuple<double, double, double>, int> mColorMaterials;
     static constexpr int kMaxUnsupportedReports = 20;
     int mUnsupported = 0;

@@ -4,8 +4,8 @@
 // round is taken as it is). Convex faces are split into fans; a face that is not convex is
 // cut into ears (a fan of it could fold over itself) in the plane it is most nearly parallel
 // to, and one that has no ear (it crosses itself) is an error naming it.
+#include "lang/no_assets.h"
 #include "lang/openscad_lower.h"
-#include "mesh/mesh_shape.h"
 
 #include <algorithm>
 #include <array>
@@ -107,7 +107,10 @@ NodePtr lowerScadPolyhedron(const ScadCall& c, ScadLowering& lowering) {
         lowering.error(c.pos, "polyhedron needs points and faces");
         return nullptr;
     }
-    TriangleMesh mesh;
+    struct {
+        std::vector<Vec3> positions;
+        std::vector<std::array<uint32_t, 3>> triangles;
+    } mesh;
     if (!readPoints(pointsArg->value, mesh.positions)) {
         lowering.error(pointsArg->value.pos,
                        "polyhedron points must be a vector of [x, y, z] finite numbers");
@@ -155,18 +158,23 @@ NodePtr lowerScadPolyhedron(const ScadCall& c, ScadLowering& lowering) {
     if (volume < 0)
         for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
     const SourceLoc loc = lowering.locate(c.pos);
-    mesh.source = "polyhedron at " + *loc.file + ":" + std::to_string(loc.line);
-    auto shape = std::make_shared<const MeshShape>(std::move(mesh));
+    const std::string source = "polyhedron at " + *loc.file + ":" + std::to_string(loc.line);
+    const std::shared_ptr<const MeshAsset> shape =
+        lowering.assets().meshOf(std::move(mesh.positions), std::move(mesh.triangles), source);
+    if (!shape) {
+        lowering.error(c.pos, "polyhedron needs a mesh from the asset provider: " +
+                                  std::string(NoAssets::kReason));
+        return nullptr;
+    }
     if (!shape->isSolid()) {
-        const MeshReport& report = shape->report();
+        const std::string why = shape->whyNotSolid();
         lowering.error(c.pos,
                        "polyhedron is not a closed solid: " +
-                           (report.firstBadEdge ? describeBadEdge(*report.firstBadEdge)
-                                                : std::string("it has no triangle")),
+                           (why.empty() ? std::string("it has no triangle") : why),
                        "every edge must be shared by exactly two faces that run it opposite ways");
         return nullptr;
     }
-    return meshNode(shape, false);
+    return shape->leaf(false);
 }
 
 }  // namespace kerf

@@ -11,7 +11,6 @@
 // toward +z becomes OpenSCAD's turn from +x toward +y.
 #include "csg/profiles/profile.h"
 #include "csg/tree/solids.h"
-#include "io/font_outline.h"
 #include "lang/openscad_lower.h"
 
 #include <cmath>
@@ -270,7 +269,7 @@ private:
     /// exact. OpenSCAD draws `size` points at 100 dpi against 72, so its em is size / 0.72
     /// ('H' of DejaVu Sans at size 10 is 10.125 high there: 0.729 em).
     std::optional<Profile> text(const ScadCall& c) {
-        TextSpec spec;
+        TextRequest spec;
         spec.font = "Liberation Sans";  // OpenSCAD's default
         spec.acceptSubstitute = true;   // fontconfig's substitute, as OpenSCAD takes it
         double size = 10.0;
@@ -290,14 +289,15 @@ private:
         }
         spec.size = size / 0.72;
         if (spec.font.empty()) spec.font = "Liberation Sans";  // OpenSCAD's default, too
-        const std::map<std::string, TextSpec::HAlign> h = {
-            {"left", TextSpec::HAlign::Left},
-            {"center", TextSpec::HAlign::AdvanceCenter},
-            {"right", TextSpec::HAlign::Right}};
-        const std::map<std::string, TextSpec::VAlign> v = {{"baseline", TextSpec::VAlign::Baseline},
-                                                           {"top", TextSpec::VAlign::Top},
-                                                           {"center", TextSpec::VAlign::Center},
-                                                           {"bottom", TextSpec::VAlign::Bottom}};
+        const std::map<std::string, TextRequest::HAlign> h = {
+            {"left", TextRequest::HAlign::Left},
+            {"center", TextRequest::HAlign::AdvanceCenter},
+            {"right", TextRequest::HAlign::Right}};
+        const std::map<std::string, TextRequest::VAlign> v = {
+            {"baseline", TextRequest::VAlign::Baseline},
+            {"top", TextRequest::VAlign::Top},
+            {"center", TextRequest::VAlign::Center},
+            {"bottom", TextRequest::VAlign::Bottom}};
         if (!h.count(halign) || !v.count(valign)) {
             mL.error(c.pos,
                      "text halign must be left, center or right and valign baseline, top, center "
@@ -306,22 +306,21 @@ private:
         }
         spec.halign = h.at(halign);
         spec.valign = v.at(valign);
-        try {
-            TextOutline outline = layoutText(spec);
-            if (!outline.substitutedFamily.empty())
-                mL.warning(c.pos, "font '" + spec.font + "' is not installed: using '" +
-                                      outline.substitutedFamily +
-                                      "', the font fontconfig (and so OpenSCAD) substitutes");
-            if (outline.shape.loops.empty())
-                return std::nullopt;  // spaces only: empty, as in OpenSCAD
-            if (!outline.glyphsOverlap) return profilePath(std::move(outline.shape));
-            std::vector<Profile> parts;
-            for (PathShape& glyph : outline.glyphs) parts.push_back(profilePath(std::move(glyph)));
-            return profileUnion(std::move(parts));
-        } catch (const FontError& e) {
-            mL.error(c.pos, e.message, e.hint);
+        const Loaded<TextShape> text = mL.assets().text(spec);
+        if (!text) {
+            mL.error(c.pos, text.error.reason, text.error.hint);
             return fail();
         }
+        const TextShape& outline = *text.value;
+        if (!outline.substitutedFamily.empty())
+            mL.warning(c.pos, "font '" + spec.font + "' is not installed: using '" +
+                                  outline.substitutedFamily +
+                                  "', the font fontconfig (and so OpenSCAD) substitutes");
+        if (outline.shape.loops.empty()) return std::nullopt;  // spaces only: empty, as in OpenSCAD
+        if (!outline.glyphsOverlap) return profilePath(outline.shape);
+        std::vector<Profile> parts;
+        for (const PathShape& glyph : outline.glyphs) parts.push_back(profilePath(glyph));
+        return profileUnion(std::move(parts));
     }
 
     /// offset(r): the exact rounded offset (the distance's level set). offset(delta), with

@@ -7,6 +7,7 @@
 #include "render/camera.h"
 #include "render/film.h"
 #include "render/integrator.h"
+#include "render/medium_bake.h"
 #include "render/sampler.h"
 #include "render/section_cut.h"
 
@@ -239,11 +240,15 @@ FrameSize resolveFrameSize(const Scene& scene, const RenderOptions& options) {
     return f;
 }
 
-/// The scene the render sees: the input, or its section-cut copy (kept in `storage`), so every
-/// consumer below (acceleration, shadows, beams, integrator) sees the cut model. Preparation
-/// of the scene's data for rendering belongs here.
-const Scene& prepareScene(const Scene& input, std::optional<Scene>& storage) {
-    return input.sections.empty() ? input : storage.emplace(cutBySections(input));
+/// The scene the render sees: the input, or its section-cut copy (kept in `cut`) and its copy
+/// with the mist baked (kept in `baked`), so every consumer below (acceleration, shadows,
+/// beams, integrator) sees the cut, baked model. Preparation of the scene's data for rendering
+/// belongs here.
+const Scene& prepareScene(const Scene& input, std::optional<Scene>& cut,
+                          std::optional<Scene>& baked) {
+    const Scene& sectioned = input.sections.empty() ? input : cut.emplace(cutBySections(input));
+    // A mist's `bake N` is made here, not while compiling (render/medium_bake.h).
+    return sectioned.medium.bake ? baked.emplace(withBakedMedium(sectioned)) : sectioned;
 }
 
 /// The octree's options for a render of `height` rows (volume/octree/accelerate.h).
@@ -383,8 +388,8 @@ double defaultTolerance(int height, double fovDegrees) {
 
 RenderResult render(const Scene& input, const RenderOptions& options) {
     const auto setupStart = Clock::now();
-    std::optional<Scene> cutScene;
-    const Scene& scene = prepareScene(input, cutScene);
+    std::optional<Scene> cutScene, bakedScene;
+    const Scene& scene = prepareScene(input, cutScene, bakedScene);
     const FrameSize f = resolveFrameSize(scene, options);
     RenderResult result;
     allocateImages(f, options, result);

@@ -10,6 +10,8 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <string>
 
 namespace kerf {
 
@@ -35,6 +37,14 @@ inline const char* mediumMethodName(MediumMethod m) {
     return "?";
 }
 
+/// `mist { … bake N }`: the density is to be sampled into bricked storage
+/// (volume/grids/bricked_field.h) and traced as its trilinear interpolant. Only requested by
+/// the scene: render/medium_bake.h makes the grid when it prepares the medium for rendering.
+struct MediumBake {
+    int resolution = 0;  ///< samples along the box's longest side, in [2, 4096]
+    std::string where;   ///< "file:line:col" of the request, for a bake that fails
+};
+
 /// σt(p) = extinction · density(p), σs = albedo · σt, emitted radiance per unit length
 /// σt(p) · emission (a thick cloud glows with radiance `emission`).
 struct Medium {
@@ -49,6 +59,8 @@ struct Medium {
     MediumMethod method = MediumMethod::Ratio;
     double step = 0.0;  ///< March: the step length; 0: the box's diagonal / 128
     int samples = 1;    ///< in-scattering points per camera segment (Ratio, Delta)
+    /// Set: `density` is the exact field, to be baked before tracing (max(0, density)).
+    std::optional<MediumBake> bake;
 
     bool enabled() const { return density != nullptr; }
 };

@@ -98,9 +98,10 @@ std::string broadcastModel(const Ranks& r, const std::string& path, int& code) {
 std::optional<Scene> compileModel(const Ranks& r, const std::string& path, const std::string& text,
                                   bool quiet, const SequenceFrame& frame) {
     DiagnosticSink sink;
-    std::optional<Scene> scene = isOpenScadCsgPath(path)
-                                     ? compileOpenScadString(text, path, sink)
-                                     : compileString(text, path, sink, EvalLimits{}, frame);
+    std::optional<Scene> scene =
+        isOpenScadCsgPath(path)
+            ? compileOpenScadString(text, path, sink, processAssets())
+            : compileString(text, path, sink, processAssets(), EvalLimits{}, frame);
     if (r.rank == 0 && !sink.diagnostics().empty()) std::cerr << sink.format(!quiet);
     if (!scene) {
         if (r.rank == 0 && !sink.hasErrors())

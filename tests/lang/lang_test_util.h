@@ -2,6 +2,7 @@
 /// @brief Helpers for the lang tests: compile text and look at the diagnostics it produced.
 #pragma once
 
+#include "assets/asset_cache.h"
 #include "lang/compile.h"
 
 #include <catch2/catch.hpp>
@@ -18,7 +19,8 @@ struct Compiled {
 
 inline Compiled compileText(const std::string& text, const std::string& name = "test.kerf") {
     Compiled c;
-    c.scene = compileString(text, name, c.sink);
+    AssetCache assets;  // a fresh cache: each test compile reads its files as before
+    c.scene = compileString(text, name, c.sink, assets);
     return c;
 }
 

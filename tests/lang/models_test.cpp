@@ -21,7 +21,8 @@ std::string modelPath(const std::string& name) { return std::string(KERF_SOURCE_
 
 Scene compileModel(const std::string& path) {
     DiagnosticSink sink;
-    auto scene = compileFile(path, sink);
+    AssetCache assets;
+    auto scene = compileFile(path, sink, assets);
     INFO(sink.format());
     REQUIRE(scene.has_value());
     return std::move(*scene);

@@ -137,7 +137,8 @@ TEST_CASE("openscad/OpenSCAD's examples that use only the nodes read load") {
         const std::string name = entry.path().filename().string();
         INFO(name);
         DiagnosticSink sink;
-        const std::optional<Scene> scene = compileOpenScadFile(entry.path().string(), sink);
+        AssetCache assets;
+        const std::optional<Scene> scene = compileOpenScadFile(entry.path().string(), sink, assets);
         INFO(sink.format());
         REQUIRE(scene.has_value());
         CHECK(scene->objects.size() == 1);
@@ -168,7 +169,8 @@ TEST_CASE("openscad/every truncation of a file is read or refused with located e
         const std::string prefix = text.substr(0, n);
         INFO("first " << n << " bytes");
         DiagnosticSink sink;
-        const std::optional<Scene> scene = compileOpenScadString(prefix, "cut.csg", sink);
+        AssetCache assets;
+        const std::optional<Scene> scene = compileOpenScadString(prefix, "cut.csg", sink, assets);
         // A prefix that ends between statements is a whole (maybe empty) model; any other
         // is refused, each error inside the text (one past its end at most).
         if (scene) {
@@ -210,7 +212,8 @@ TEST_CASE("openscad/OpenSCAD's text and offset examples load, within OpenSCAD's 
         const std::string name = entry.path().filename().string();
         INFO(name);
         DiagnosticSink sink;
-        const std::optional<Scene> scene = compileOpenScadFile(entry.path().string(), sink);
+        AssetCache assets;
+        const std::optional<Scene> scene = compileOpenScadFile(entry.path().string(), sink, assets);
         INFO(sink.format());
         REQUIRE(scene.has_value());
         REQUIRE(scene->objects.size() == 1);

@@ -2,6 +2,7 @@
 /// @brief What the .csg reader's tests share: reading a text, and the spans of its one object.
 #pragma once
 
+#include "assets/asset_cache.h"
 #include "csg/trace_context.h"
 #include "csg/tree/span.h"
 #include "lang/openscad_csg.h"
@@ -20,7 +21,8 @@ struct Read {
 
 inline Read readCsg(const std::string& text) {
     Read r;
-    r.scene = compileOpenScadString(text, "test.csg", r.sink);
+    AssetCache assets;
+    r.scene = compileOpenScadString(text, "test.csg", r.sink, assets);
     return r;
 }
 

@@ -1,6 +1,7 @@
 /// @file tests/render/model_test.cpp
 /// @brief From model text to pixels: a compiled scene shades by the closed form, and every
 /// model in models/ renders small to finite, thread-independent images.
+#include "assets/asset_cache.h"
 #include "lang/compile.h"
 #include "render/camera.h"
 #include "render_test_util.h"
@@ -53,7 +54,8 @@ TEST_CASE("render: every model renders small, finite and thread-independent") {
         ++count;
         INFO(entry.path().string());
         DiagnosticSink sink;
-        const std::optional<Scene> scene = compileFile(entry.path().string(), sink);
+        AssetCache assets;
+        const std::optional<Scene> scene = compileFile(entry.path().string(), sink, assets);
         INFO(sink.format());
         REQUIRE(scene);
         RenderOptions options = smallImage(32, 24, 1);

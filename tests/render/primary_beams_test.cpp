@@ -3,6 +3,7 @@
 // and renders with beams give the same first hits as without, within the tolerance.
 #include "render/primary_beams.h"
 
+#include "assets/asset_cache.h"
 #include "csg/bvh/scene_geometry.h"
 #include "lang/compile.h"
 #include "render/camera.h"
@@ -186,7 +187,8 @@ TEST_CASE("renders with camera beams give the first hits of renders without", "[
         for (const auto& entry : std::filesystem::directory_iterator(models)) {
             if (entry.path().extension() != ".kerf") continue;
             DiagnosticSink sink;
-            std::optional<Scene> scene = compileFile(entry.path().string(), sink);
+            AssetCache assets;
+            std::optional<Scene> scene = compileFile(entry.path().string(), sink, assets);
             INFO(entry.path().filename().string() << sink.format());
             REQUIRE(scene.has_value());
             // Beams start rays at the eye, so a lens turns them off (the showcase has one):

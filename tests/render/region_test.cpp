@@ -3,6 +3,7 @@
 // (whose samples reach neighbouring tiles), adaptive sampling, the AOVs and section views.
 #include "render/render.h"
 
+#include "assets/asset_cache.h"
 #include "lang/compile.h"
 #include "lang/diagnostic.h"
 
@@ -18,8 +19,9 @@ namespace {
 
 Scene model(const std::string& name) {
     DiagnosticSink sink;
+    AssetCache assets;
     std::optional<Scene> scene =
-        compileFile(std::string(KERF_SOURCE_DIR) + "/models/" + name, sink);
+        compileFile(std::string(KERF_SOURCE_DIR) + "/models/" + name, sink, assets);
     REQUIRE(scene);
     return std::move(*scene);
 }

@@ -3,6 +3,7 @@
 /// does not.
 #pragma once
 
+#include "assets/asset_cache.h"
 #include "lang/compile.h"
 
 #include <catch2/catch.hpp>
@@ -14,7 +15,8 @@ namespace kerf::test {
 
 inline Scene compiledScene(const std::string& text, const std::string& name = "test.kerf") {
     DiagnosticSink sink;
-    std::optional<Scene> scene = compileString(text, name, sink);
+    AssetCache assets;
+    std::optional<Scene> scene = compileString(text, name, sink, assets);
     INFO(sink.format());
     REQUIRE(scene.has_value());
     return std::move(*scene);
@@ -22,7 +24,8 @@ inline Scene compiledScene(const std::string& text, const std::string& name = "t
 
 inline Scene compiledSceneFile(const std::string& path) {
     DiagnosticSink sink;
-    std::optional<Scene> scene = compileFile(path, sink);
+    AssetCache assets;
+    std::optional<Scene> scene = compileFile(path, sink, assets);
     INFO(path << "\n" << sink.format());
     REQUIRE(scene.has_value());
     return std::move(*scene);

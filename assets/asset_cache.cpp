@@ -1,0 +1,85 @@
+// The cache of assets across compiles (assets/asset_cache.h): each lookup stats the file, and
+// a file whose identity is the one cached is served without being read.
+#include "assets/asset_cache.h"
+
+#include "assets/asset_loaders.h"
+#include "assets/file_identity.h"
+
+#include <optional>
+
+namespace kerf {
+
+AssetCache::AssetCache() = default;
+AssetCache::~AssetCache() = default;
+
+void AssetCache::clearInputs() {
+    mInputs.clear();
+    mInputPaths.clear();
+}
+
+void AssetCache::noteInput(const AssetFile& file) {
+    if (mInputPaths.insert(file.path).second) mInputs.push_back(file);
+}
+
+template <class T, class Load>
+Loaded<T> AssetCache::cached(Table<T>& table, const std::string& path, const std::string& part,
+                             int& loads, int& reuses, const Load& load) {
+    // Stat before reading: a file changed while it is read keeps the older identity, so the
+    // next compile sees a difference and reads it again.
+    const std::optional<AssetFile> file = fileIdentity(path);
+    if (file) {
+        noteInput(*file);
+        const auto it = table.find({file->path, part});
+        if (it != table.end() && it->second.file == *file) {
+            ++reuses;
+            Loaded<T> hit;
+            hit.value = it->second.value;
+            return hit;
+        }
+    }
+    ++loads;
+    Loaded<T> loaded = load();
+    if (file && loaded.value)
+        table[{file->path, part}] = Entry<T>{*file, loaded.value};
+    else if (file)
+        table.erase({file->path, part});  // a failure is never kept
+    return loaded;
+}
+
+Loaded<MeshAsset> AssetCache::mesh(const std::string& path) {
+    return cached(mMeshes, path, "", mLoads.meshes, mReuses.meshes,
+                  [&] { return loadMeshAsset(path); });
+}
+
+std::shared_ptr<const MeshAsset> AssetCache::meshOf(std::vector<Vec3> positions,
+                                                    std::vector<std::array<uint32_t, 3>> triangles,
+                                                    std::string source) {
+    return meshAssetOf(std::move(positions), std::move(triangles), std::move(source));
+}
+
+Loaded<LevelSetAsset> AssetCache::levelSet(const std::string& path, const std::string& grid) {
+    return cached(mLevelSets, path, grid, mLoads.levelSets, mReuses.levelSets,
+                  [&] { return loadLevelSetAsset(path, grid); });
+}
+
+Loaded<FogAsset> AssetCache::fogVolume(const std::string& path, const std::string& grid) {
+    return cached(mFogs, path, grid, mLoads.fogVolumes, mReuses.fogVolumes,
+                  [&] { return loadFogAsset(path, grid); });
+}
+
+Loaded<Texture> AssetCache::texture(const std::string& path) {
+    return cached(mTextures, path, "", mLoads.textures, mReuses.textures,
+                  [&] { return loadTextureAsset(path); });
+}
+
+Loaded<TextShape> AssetCache::text(const TextRequest& request) {
+    const FontFile font = fontFileOf(request);
+    if (font.file.empty()) {  // the font cannot be found: the layout says why
+        ++mLoads.texts;
+        return layoutTextAsset(request);
+    }
+    return cached(mTexts, font.file, font.key, mLoads.texts, mReuses.texts,
+                  [&] { return layoutTextAsset(request); });
+}
+
+}  // namespace kerf
