@@ -39,7 +39,11 @@
 
 namespace kerf {
 
+struct SolidKind;
+
 class Lowering {
+    friend struct SolidKindRows;  // lang/solid_kinds.cpp: the rows name the lowering functions
+
 public:
     explicit Lowering(DiagnosticSink& sink, EvalLimits limits = {})
         : mSink(sink), mLimits(limits) {}
@@ -163,9 +167,10 @@ private:
     NodePtr lowerReference(const Solid& s);
     NodePtr lowerBoolean(const Solid& s);
     NodePtr lowerPrimitive(const Solid& s);
+    /// A kind lowered by its row in lang/solid_kinds.cpp: properties, checks, factory.
+    NodePtr lowerTabled(const Solid& s, const SolidKind& kind);
     /// Counts one primitive against kMaxPrimitives.
     bool countPrimitive(SourcePos at);
-    NodePtr lowerSphere(const Solid& s);
     NodePtr lowerBox(const Solid& s);
     NodePtr lowerCylinder(const Solid& s);
     NodePtr lowerCone(const Solid& s);
