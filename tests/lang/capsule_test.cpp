@@ -40,7 +40,7 @@ TEST_CASE("lang: capsule errors") {
     requireOneError("object capsule { from <1,2,3> to <1,2,3> };", 1, 8,
                     "capsule has zero length: from and to are the same point");
     requireOneError("object capsule { from <0,0,0> radius 1 };", 1, 8, "to");
-    requireOneError("object capsule { from <0,0,0> to <0,1,0> radius 1 height 2 };", 1, 50,
+    requireOneError("object capsule { from <0,0,0> to <0,1,0> radius 1 height 2 };", 1, 51,
                     "height");
     requireOneError("let capsule = 1;\nobject sphere { };", 1, 5, "'capsule' is a reserved word");
     requireOneError("object capsule;", 1, 8, "'capsule' needs a block");
