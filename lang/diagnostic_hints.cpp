@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "lang/names.h"
+#include "lang/solid_kinds.h"
 
 namespace kerf {
 
@@ -77,26 +78,15 @@ std::string nearMiss(const std::string& name, const std::vector<std::string>& ca
     return best;
 }
 
-std::vector<std::string> allSolidKinds() {
-    std::vector<std::string> all = primitiveKinds();
-    all.insert(all.end(), booleanKinds().begin(), booleanKinds().end());
+std::vector<std::string> allSolidKinds() { return solidKeywords(kListed, true); }
+
+/// The candidates for a near miss: the listed kinds and the primitives left out of the list.
+std::vector<std::string> nearMissKinds() {
+    std::vector<std::string> all = allSolidKinds();
+    for (const std::string& k : solidKeywords(kNeedsBlock))
+        if (std::find(all.begin(), all.end(), k) == all.end()) all.push_back(k);
     return all;
 }
-
-struct PositionalForm {
-    const char* kind;
-    std::vector<const char*> names;  ///< kerf's property for each POV-Ray value, in its order
-    std::vector<const char*> placeholders;  ///< shown when the count does not match
-};
-
-const PositionalForm kPositionalForms[] = {
-    {"sphere", {"center", "radius"}, {"<x, y, z>", "r"}},
-    {"box", {"min", "max"}, {"<x0, y0, z0>", "<x1, y1, z1>"}},
-    {"cylinder", {"from", "to", "radius"}, {"<x0, y0, z0>", "<x1, y1, z1>", "r"}},
-    {"cone", {"from", "radius1", "to", "radius2"}, {"<x0, y0, z0>", "r1", "<x1, y1, z1>", "r2"}},
-    {"torus", {"major", "minor"}, {"R", "r"}},
-    {"halfspace", {"normal", "offset"}, {"<nx, ny, nz>", "d"}},
-};
 
 struct ForeignProperty {
     const char* name;
@@ -125,9 +115,7 @@ const ForeignProperty kForeignProperties[] = {
 }  // namespace
 
 const std::vector<std::string>& primitiveKinds() {
-    static const std::vector<std::string> kinds = {"sphere",   "box",     "cylinder",
-                                                   "cone",     "torus",   "halfspace",
-                                                   "implicit", "extrude", "revolve"};
+    static const std::vector<std::string> kinds = solidKeywords(kListed);
     return kinds;
 }
 
@@ -137,16 +125,13 @@ bool isProfileKind(const std::string& name) {
 }
 
 const std::vector<std::string>& booleanKinds() {
-    static const std::vector<std::string> kinds = {"union", "intersection", "difference", "xor"};
+    static const std::vector<std::string> kinds = solidKeywords(kBoolean, true);
     return kinds;
 }
 
 bool isSolidKind(const std::string& name) {
-    const auto has = [&](const std::vector<std::string>& v) {
-        return std::find(v.begin(), v.end(), name) != v.end();
-    };
-    if (name == "disc" || name == "triangle") return true;  // surfaces (lang/lower_surfaces.cpp)
-    return has(primitiveKinds()) || has(booleanKinds()) || isProfileKind(name);
+    const SolidKind* kind = findSolidKind(name);  // lang/solid_kinds.cpp
+    return (kind && kind->has(kSolidValue)) || isProfileKind(name);
 }
 
 std::string kerfSolidFor(const std::string& foreign) {
@@ -162,7 +147,7 @@ std::string unknownSolidHint(const std::string& name, const std::vector<std::str
             hint = "write '" + form + "' (" + f->note + "). ";
         else
             hint = foreignSolidHint(name) + ". ";
-    } else if (const std::string close = nearMiss(name, allSolidKinds()); !close.empty()) {
+    } else if (const std::string close = nearMiss(name, nearMissKinds()); !close.empty()) {
         hint = "did you mean '" + close + "'? ";
     }
     return hint + (hint.empty() ? "the" : "The") + " solids are: " + joinNames(allSolidKinds());
@@ -198,15 +183,15 @@ std::string foreignPropertyNote(const std::string& property) {
 }
 
 std::string namedForm(const std::string& kind, const std::vector<std::string>& values) {
-    for (const PositionalForm& f : kPositionalForms) {
-        if (kind != f.kind) continue;
-        const bool fill = values.size() == f.names.size();
-        std::string form = kind + " {";
-        for (size_t i = 0; i < f.names.size(); ++i)
-            form += std::string(" ") + f.names[i] + " " + (fill ? values[i] : f.placeholders[i]);
-        return form + " }";
-    }
-    return "";
+    const SolidKind* row = findSolidKind(kind);  // lang/solid_kinds.cpp
+    if (!row || row->positionalNames.empty()) return "";
+    const std::vector<const char*>& names = row->positionalNames;
+    const bool fill = values.size() == names.size();
+    std::string form = kind + " {";
+    for (size_t i = 0; i < names.size(); ++i)
+        form +=
+            std::string(" ") + names[i] + " " + (fill ? values[i] : row->positionalPlaceholders[i]);
+    return form + " }";
 }
 
 std::string positionalHint(const std::string& kind, const std::vector<std::string>& values,

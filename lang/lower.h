@@ -37,7 +37,11 @@
 
 namespace kerf {
 
+struct SolidKind;
+
 class Lowering {
+    friend struct SolidKindRows;  // lang/solid_kinds.cpp: the rows name the lowering functions
+
 public:
     /// Assets (meshes, volumes, textures, fonts) come from `assets` (scene/assets.h).
     Lowering(DiagnosticSink& sink, AssetProvider& assets, EvalLimits limits = {})
@@ -170,9 +174,10 @@ private:
     NodePtr lowerReference(const Solid& s);
     NodePtr lowerBoolean(const Solid& s);
     NodePtr lowerPrimitive(const Solid& s);
+    /// A kind lowered by its row in lang/solid_kinds.cpp: properties, checks, factory.
+    NodePtr lowerTabled(const Solid& s, const SolidKind& kind);
     /// Counts one primitive against kMaxPrimitives.
     bool countPrimitive(SourcePos at);
-    NodePtr lowerSphere(const Solid& s);
     NodePtr lowerBox(const Solid& s);
     NodePtr lowerCylinder(const Solid& s);
     NodePtr lowerCone(const Solid& s);

@@ -8,6 +8,7 @@
 #include "csg/tree/solids.h"
 #include "lang/diagnostic_hints.h"
 #include "lang/names.h"
+#include "lang/solid_kinds.h"
 
 #include <algorithm>
 #include <array>
@@ -16,10 +17,6 @@
 namespace kerf {
 
 namespace {
-
-const std::vector<std::string> kPrimitiveKinds = {"sphere", "box",       "cylinder", "cone",
-                                                  "torus",  "halfspace", "implicit"};
-const std::vector<std::string> kBooleanKinds = {"union", "intersection", "difference", "xor"};
 
 bool finiteVector(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -42,8 +39,8 @@ bool degenerateSegment(const Vec3& a, const Vec3& b) {
            length <= 1e-12 * std::max(glm::length(scaled(a)), glm::length(scaled(b)));
 }
 
-/// The error for an axis `from`–`to` that is not usable, or empty: an endpoint or their
-/// difference not finite, or no length.
+}  // namespace
+
 std::string axisProblem(const char* what, const Vec3& from, const Vec3& to) {
     for (const auto& [name, v] : {std::pair<const char*, Vec3>{"from", from}, {"to", to}})
         if (!finiteVector(v))
@@ -56,8 +53,6 @@ std::string axisProblem(const char* what, const Vec3& from, const Vec3& to) {
                formatVector(from);
     return "";
 }
-
-}  // namespace
 
 NodePtr Lowering::lowerSolid(const Solid& s) {
     if (!enter(s.loc)) return nullptr;
@@ -94,10 +89,8 @@ NodePtr Lowering::lowerSolid(const Solid& s) {
 }
 
 NodePtr Lowering::lowerReference(const Solid& s) {
-    const bool isKind =
-        std::find(kPrimitiveKinds.begin(), kPrimitiveKinds.end(), s.name) !=
-            kPrimitiveKinds.end() ||
-        std::find(kBooleanKinds.begin(), kBooleanKinds.end(), s.name) != kBooleanKinds.end();
+    const SolidKind* row = findSolidKind(s.name);
+    const bool isKind = row && row->has(kNeedsBlock);
     if (const Value* v = local(s.name)) {
         NodePtr node;
         bool empty = false;
@@ -128,8 +121,8 @@ NodePtr Lowering::solidByName(const std::string& name, SourcePos use) {
         std::vector<std::string> candidates;
         for (const auto& [n, entry] : mSolids) candidates.push_back(n);
         std::string hint = didYouMean(name, candidates);
-        if (hint.empty()) hint = didYouMean(name, kPrimitiveKinds);
-        if (hint.empty()) hint = didYouMean(name, kBooleanKinds);
+        if (hint.empty()) hint = didYouMean(name, solidKeywords(kNeedsBlock));
+        if (hint.empty()) hint = didYouMean(name, solidKeywords(kBoolean, true));
         if (hint.empty()) hint = foreignSolidHint(name);  // `object cube;`
         error(use, "undefined solid '" + name + "'", hint);
         return nullptr;
@@ -164,10 +157,8 @@ NodePtr Lowering::lowerBoolean(const Solid& s) {
     }
     std::vector<NodePtr> written;
     if (!expandChildren(s.children, written)) return nullptr;
-    const BoolOp op = s.name == "union"          ? BoolOp::Union
-                      : s.name == "intersection" ? BoolOp::Intersection
-                      : s.name == "difference"   ? BoolOp::Difference
-                                                 : BoolOp::Xor;
+    const SolidKind* row = findSolidKind(s.name);
+    const BoolOp op = booleanOp(row ? row->node : NodeKind::Union);
     // Empty solids: an intersection with one is empty, a difference whose body is empty is
     // empty, elsewhere they are dropped; nothing left is the empty solid.
     std::vector<NodePtr> children;
@@ -221,22 +212,8 @@ bool Lowering::countPrimitive(SourcePos at) {
 
 NodePtr Lowering::lowerPrimitive(const Solid& s) {
     if (!countPrimitive(s.loc)) return nullptr;
-    if (s.name == "sphere") return lowerSphere(s);
-    if (s.name == "box") {
-        const auto b = boxBounds(s, "box");
-        return b ? makeBox(b->lo, b->hi) : nullptr;
-    }
-    if (s.name == "cylinder") return lowerCylinder(s);
-    if (s.name == "cone") return lowerCone(s);
-    if (s.name == "torus") return lowerTorus(s);
-    if (s.name == "halfspace") return lowerHalfSpace(s);
-    if (s.name == "implicit") return lowerImplicit(s);
-    if (s.name == "mesh") return lowerMesh(s);
-    if (s.name == "volume") return lowerVolume(s);
-    if (s.name == "disc" || s.name == "triangle" || s.name == "surface" || s.name == "clip")
-        return lowerSurface(s);
-    if (s.name == "extrude") return lowerExtrude(s);
-    if (s.name == "revolve") return lowerRevolve(s);
+    if (const SolidKind* row = findSolidKind(s.name); row && !row->has(kBoolean))
+        return row->lower ? (this->*row->lower)(s) : lowerTabled(s, *row);
     if (isProfileKind(s.name)) {
         error(s.loc, "'" + s.name + "' is a 2-D profile, not a solid",
               "make a solid of it: extrude { profile " + s.name +
@@ -248,21 +225,43 @@ NodePtr Lowering::lowerPrimitive(const Solid& s) {
     return nullptr;
 }
 
-NodePtr Lowering::lowerSphere(const Solid& s) {
-    const PropertyBlock b(s.properties,
-                          {{"center", PropertyType::Vector}, {"radius", PropertyType::Number}},
-                          "sphere", s.loc, mSink);
-    Vec3 center{0.0};
-    double radius = 1.0;
+NodePtr Lowering::lowerTabled(const Solid& s, const SolidKind& kind) {
+    std::vector<PropertySpec> specs;
+    for (const SolidProperty& p : kind.properties) specs.push_back({p.name, p.type, p.required});
+    const PropertyBlock b(s.properties, std::move(specs), kind.keyword, s.loc, mSink);
+    PropertyValues values(kind.properties.size());
     bool ok = b.ok();
-    ok &= readVector(b, "center", center);
-    ok &= readNumber(b, "radius", radius);
-    if (ok && !(radius > 0)) {
-        error(b.find("radius")->valueLoc(),
-              "sphere radius must be positive, got " + formatNumber(radius));
-        ok = false;
+    for (size_t i = 0; i < values.size(); ++i) {
+        const SolidProperty& p = kind.properties[i];
+        PropertyValue& v = values[i];
+        v = {p.number, p.vector, p.number != 0.0};
+        if (p.type == PropertyType::Number) ok &= readNumber(b, p.name, v.number);
+        if (p.type == PropertyType::Vector) ok &= readVector(b, p.name, v.vector);
+        if (p.type == PropertyType::Bool) ok &= readBool(b, p.name, v.flag);
     }
-    return ok ? makeSphere(center, radius) : nullptr;
+    if (!ok) return nullptr;
+    for (size_t i = 0; i < values.size(); ++i) {
+        const SolidProperty& p = kind.properties[i];
+        if (p.check == PropertyCheck::Positive && !(values[i].number > 0)) {
+            error(b.find(p.name)->valueLoc(), std::string(kind.keyword) + " " + p.name +
+                                                  " must be positive, got " +
+                                                  formatNumber(values[i].number));
+            ok = false;
+        }
+    }
+    if (!ok) return nullptr;
+    if (kind.problem) {
+        if (const std::string problem = kind.problem(values); !problem.empty()) {
+            error(s.loc, problem);
+            return nullptr;
+        }
+    }
+    return kind.make(values);
+}
+
+NodePtr Lowering::lowerBox(const Solid& s) {
+    const auto b = boxBounds(s, "box");
+    return b ? makeBox(b->lo, b->hi) : nullptr;
 }
 
 std::optional<Bounds3> Lowering::boxBounds(const Solid& s, const char* what) {

@@ -2,6 +2,7 @@
 // comparisons, ranges, + -, * / %, unary -, ^, postfix [i] and .x, primaries). Expressions are
 // built as values and their operands copied into the arena side by side.
 #include "lang/parser_impl.h"
+#include "lang/solid_kinds.h"
 
 namespace kerf::parser_detail {
 
@@ -180,11 +181,8 @@ Expr Parser::binary(const Token& op, const Expr& lhs, const Expr& rhs, char code
 }
 
 bool Parser::isSolidWord(const std::string& w) {
-    static const std::array<const char*, 9> kPrimitives = {"sphere",   "box",     "cylinder",
-                                                           "cone",     "torus",   "halfspace",
-                                                           "implicit", "extrude", "revolve"};
-    if (w == "disc" || w == "triangle") return true;  // surfaces (lower_surfaces.cpp)
-    return contains(kPrimitives, w) || contains(kBooleanWords, w);
+    const SolidKind* kind = findSolidKind(w);  // lang/solid_kinds.cpp
+    return kind && kind->has(kSolidValue);
 }
 
 Expr Parser::parsePrimary() {

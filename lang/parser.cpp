@@ -3,6 +3,7 @@
 // catches before resynchronising. Expressions are in parse_expr.cpp, modifiers in
 // parse_modifiers.cpp.
 #include "lang/parser_impl.h"
+#include "lang/solid_kinds.h"
 
 namespace kerf {
 
@@ -475,10 +476,10 @@ using parser_detail::kStatementWords;
 using parser_detail::Parser;
 
 bool isReservedWord(const std::string& word) {
-    static const std::array<const char*, 24> kOther = {
-        "sphere", "box",   "cylinder",     "cone",       "torus", "halfspace", "implicit", "mesh",
-        "pi",     "union", "intersection", "difference", "xor",   "matrix",    "for",      "in",
-        "if",     "else",  "step",         "and",        "or",    "not",       "true",     "false"};
+    static const std::array<const char*, 12> kOther = {
+        "pi", "matrix", "for", "in", "if", "else", "step", "and", "or", "not", "true", "false"};
+    if (const SolidKind* kind = findSolidKind(word); kind && kind->has(kReserved))
+        return true;  // lang/solid_kinds.cpp
     return contains(kStatementWords, word) || contains(kModifierWords, word) ||
            contains(kOther, word);
 }

@@ -8,6 +8,8 @@
 #include "csg/tape/expr.h"
 #include "csg/tree/node.h"
 
+#include <memory>
+
 namespace kerf {
 
 class Tape;
@@ -26,6 +28,19 @@ public:
     virtual double lipschitz() const { return 1.0; }
     /// The implicit form already compiled, if the primitive holds it (an implicit), else null.
     virtual const Tape* compiledForm() const { return nullptr; }
+
+    /// The three evaluations default to implicitExpr() compiled once to a tape, so a new
+    /// primitive writes its formula once. The older leaves override them with hand-written
+    /// forms; tests/csg/derived_values_test.cpp checks each against the derived ones.
+    double value(const Vec3& p) const override { return derivedValue(p); }
+    long double valueExtended(const LVec3& p) const override { return derivedValueExtended(p); }
+    Interval valueInterval(const IntervalVec3& box) const override {
+        return derivedValueInterval(box);
+    }
+    /// The evaluations of implicitExpr() through its tape, whatever the overrides.
+    double derivedValue(const Vec3& p) const;
+    long double derivedValueExtended(const LVec3& p) const;
+    Interval derivedValueInterval(const IntervalVec3& box) const;
 
 protected:
     Primitive() : mId(nextPrimitiveId()) {}
@@ -56,7 +71,11 @@ protected:
     }
 
 private:
+    /// implicitExpr() compiled on first use; compiled twice at worst when two threads race.
+    const Tape& derivedTape() const;
+
     uint32_t mId;
+    mutable std::shared_ptr<const Tape> mDerivedTape;  ///< read and set atomically
 };
 
 }  // namespace kerf

@@ -4,6 +4,7 @@
 #include "csg/bvh/bvh.h"
 #include "csg/bvh/clip_ray.h"
 #include "csg/check.h"
+#include "csg/tree/kind_registry.h"
 #include "csg/tree/solids.h"
 
 #include <algorithm>
@@ -160,8 +161,7 @@ private:
     /// Whether finding where the ray crosses `node` takes root isolation (an implicit or a
     /// torus below it), as opposed to closed forms only.
     static bool hasRootFoundLeaf(const Node& node) {
-        const NodeKind k = node.kind();
-        if (k == NodeKind::Implicit || k == NodeKind::Torus) return true;
+        if (kindTraits(node.kind()).rootFound) return true;
         for (const NodePtr& c : node.children())
             if (hasRootFoundLeaf(*c)) return true;
         return false;

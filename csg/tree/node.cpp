@@ -1,5 +1,5 @@
 // The default first-surface search (all spans, then the first surface boundary after tmin),
-// and the names of the node kinds.
+// and the Boolean kinds (the kinds' names: csg/tree/kind_registry.cpp).
 #include "csg/tree/node.h"
 
 namespace kerf {
@@ -33,34 +33,6 @@ bool Node::firstSurface(const Ray& ray, double tmin, double tmax, TraceContext& 
 }  // namespace kerf
 
 namespace kerf {
-
-const char* nodeKindName(NodeKind kind) {
-    switch (kind) {
-        case NodeKind::Sphere: return "sphere";
-        case NodeKind::Box: return "box";
-        case NodeKind::Cylinder: return "cylinder";
-        case NodeKind::Cone: return "cone";
-        case NodeKind::Torus: return "torus";
-        case NodeKind::HalfSpace: return "halfspace";
-        case NodeKind::Implicit: return "implicit";
-        case NodeKind::Volume: return "volume";
-        case NodeKind::Mesh: return "mesh";
-        case NodeKind::Transform: return "transform";
-        case NodeKind::Material: return "material";
-        case NodeKind::Motion: return "motion";
-        case NodeKind::Union: return "union";
-        case NodeKind::Intersection: return "intersection";
-        case NodeKind::Difference: return "difference";
-        case NodeKind::Xor: return "xor";
-        case NodeKind::Disc: return "disc";
-        case NodeKind::Triangle: return "triangle";
-        case NodeKind::OpenCone: return "open cone";
-        case NodeKind::SurfaceOf: return "surface";
-        case NodeKind::Clip: return "clip";
-        case NodeKind::Interior: return "interior";
-    }
-    return "?";
-}
 
 NodeKind booleanKind(BoolOp op) {
     switch (op) {

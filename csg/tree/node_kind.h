@@ -46,19 +46,18 @@ enum class NodeKind : uint8_t {
     SurfaceOf,
     Clip,
     Interior,
+    // Leaves added later: appended, so the earlier kinds keep their values.
+    Capsule,
 };
 // clang-format on
 
+// The three below read the kind's row in csg/tree/kind_registry.cpp.
 /// "sphere", "box", …, "xor": the language's keywords for the kinds.
 const char* nodeKindName(NodeKind kind);
 /// True for the primitives (nodes without children).
-inline bool isLeaf(NodeKind kind) {
-    return kind <= NodeKind::Mesh || (kind >= NodeKind::Disc && kind <= NodeKind::OpenCone);
-}
+bool isLeaf(NodeKind kind);
 /// True for the kinds that make a surface rather than a solid (csg/primitives/surfaces.h).
-inline bool isSurfaceKind(NodeKind kind) {
-    return kind >= NodeKind::Disc && kind <= NodeKind::Clip;
-}
+bool isSurfaceKind(NodeKind kind);
 /// The Boolean kind of an operator, and back.
 NodeKind booleanKind(BoolOp op);
 BoolOp booleanOp(NodeKind kind);  ///< kind must be Union, Intersection, Difference or Xor
@@ -77,6 +76,11 @@ struct CylinderParams {
 struct ConeParams {
     Vec3 a, b;
     double r1, r2;
+};
+/// The points within radius of the segment a–b.
+struct CapsuleParams {
+    Vec3 a, b;
+    double radius;
 };
 struct TorusParams {
     double majorRadius, minorRadius;
@@ -145,7 +149,7 @@ using NodeParams =
     std::variant<SphereParams, BoxParams, CylinderParams, ConeParams, TorusParams, HalfSpaceParams,
                  ImplicitParams, MeshParams, TransformParams, MaterialParams, BooleanParams,
                  MotionParams, DiscParams, TriangleParams, OpenConeParams, SurfaceParams,
-                 InteriorParams, VolumeParams>;
+                 InteriorParams, VolumeParams, CapsuleParams>;
 
 /// A node's children: a view of the NodePtrs it holds, valid while the node lives.
 class NodeSpan {

@@ -126,7 +126,11 @@ void dump(const NodePtr& n, std::string& out, std::map<const Node*, int>& ids) {
                 out += std::to_string(p.material);
             } else if constexpr (std::is_same_v<P, VolumeParams>) {
             }  // the grid: no model reads one
-            else {
+            else if constexpr (std::is_same_v<P, CapsuleParams>) {
+                bits(out, p.a);
+                bits(out, p.b);
+                bits(out, p.radius);
+            } else {
                 out += std::to_string(static_cast<int>(p.op));
             }
         },

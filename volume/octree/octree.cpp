@@ -6,7 +6,7 @@
 
 #include "csg/bvh/clip_ray.h"
 #include "csg/tape/tape.h"
-#include "csg/tree/node_kind.h"
+#include "csg/tree/kind_registry.h"
 #include "volume/octree/cell_grid.h"
 #include "volume/octree/octree_build.h"
 
@@ -400,7 +400,7 @@ private:
 
 bool hasImplicitLeaf(const NodePtr& node) {
     bool found = false;
-    forEachDistinct(node, [&](const Node& n) { found = found || n.kind() == NodeKind::Implicit; });
+    forEachDistinct(node, [&](const Node& n) { found = found || kindTraits(n.kind()).octreeLeaf; });
     return found;
 }
 
@@ -408,8 +408,8 @@ bool hasExternalField(const NodePtr& node) {
     bool found = false;
     forEachDistinct(node, [&](const Node& n) {
         if (found) return;
-        if (n.kind() == NodeKind::Mesh || n.kind() == NodeKind::Volume) found = true;  // own walks
-        if (n.kind() != NodeKind::Implicit) return;
+        if (kindTraits(n.kind()).ownWalk) found = true;
+        if (n.kind() != NodeKind::Implicit) return;  // the fields an implicit's tape calls
         for (const TapeInstr& in : std::get<ImplicitParams>(n.params()).tape->instrs())
             if (in.op == Op::Field) found = true;
     });
@@ -438,7 +438,7 @@ double largestImplicitExtent(const NodePtr& object) {
             const Mat3 m = std::get<TransformParams>(n->params()).worldFromLocal.linear;
             childScale *= std::max({glm::length(m[0]), glm::length(m[1]), glm::length(m[2])});
         }
-        if (n->kind() == NodeKind::Implicit) {
+        if (kindTraits(n->kind()).octreeLeaf) {
             const Vec3 e = n->bounds().extent();
             largest = std::max(largest, scale * std::max({e.x, e.y, e.z}));
         }
