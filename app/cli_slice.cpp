@@ -145,6 +145,174 @@ void printStats(const SliceResult& r, const std::string& label, std::ostream& ou
     out << buf;
 }
 
+bool someLayers(const SliceCommandLine& line) {
+    return line.layersOption && line.layersOption->count() > 0;
+}
+
+/// Options first, then outputs, then the model: no work for a run that cannot succeed.
+void checkSliceOptions(const SliceCommandLine& line) {
+    const int planeForms =
+        !line.plane.empty() + (!line.point.empty() || !line.normal.empty()) + !line.stack.empty();
+    if (planeForms != 1)
+        throw UsageError("give exactly one of --plane, --point with --normal, or --stack");
+    if (!(line.tolerance > 0.0 && line.tolerance < 1.0))
+        throw UsageError("--tolerance must be between 0 and 1, exclusive (got " +
+                         formatDouble("%g", line.tolerance) + ")");
+    if (line.tolerance < 1e-13)
+        throw UsageError("--tolerance must be at least 1e-13 (finer than doubles resolve; got " +
+                         formatDouble("%g", line.tolerance) + ")");
+    if (line.widthOption->count() && line.pixelOption->count())
+        throw UsageError("--width and --pixel: give one of them");
+    if (line.widthOption->count() && (line.width < 1 || line.width > 65536))
+        throw UsageError("--width must be between 1 and 65536 (got " + std::to_string(line.width) +
+                         ")");
+    if (line.pixelOption->count() && !(line.pixel > 0.0 && std::isfinite(line.pixel)))
+        throw UsageError("--pixel must be a positive size");
+    if (someLayers(line) && line.stack.empty()) throw UsageError("--layers goes with --stack");
+}
+
+/// The planes to cut: one family of parallel planes and the offsets along its normal.
+struct SlicePlan {
+    SlicePlane family;
+    std::vector<double> offsets;
+    std::vector<int> layerNumbers;  // with --stack: each offset's layer number in the full stack
+};
+
+/// --stack A=FROM:TO:STEP, narrowed by --layers and by this job's share (part of parts).
+SlicePlan stackPlan(const SliceCommandLine& line) {
+    SlicePlan plan;
+    std::string rest;
+    const int axis = parseAxis(line.stack, "--stack", rest);
+    plan.family = SlicePlane::axisAligned(axis, 0.0);
+    const size_t c1 = rest.find(':'), c2 = c1 == std::string::npos ? c1 : rest.find(':', c1 + 1);
+    if (c2 == std::string::npos)
+        throw UsageError("--stack must look like z=0:2.4:0.05, got '" + line.stack + "'");
+    const double from = parseNumber(rest.substr(0, c1), "--stack");
+    const double to = parseNumber(rest.substr(c1 + 1, c2 - c1 - 1), "--stack");
+    const double step = parseNumber(rest.substr(c2 + 1), "--stack");
+    if (!(step > 0.0) || !(to >= from))
+        throw UsageError("--stack: the step must be positive and FROM ≤ TO, got '" + line.stack +
+                         "'");
+    const double count = std::floor((to - from) / step * (1.0 + 1e-12)) + 1.0;
+    if (count > 100000) throw UsageError("--stack: more than 100000 layers");
+    // The range picks layers of the full stack: the same offsets and numbers as without it.
+    NumberRange kept{0, int64_t(count) - 1};
+    if (someLayers(line)) {
+        kept = parseNumberRange(line.layers, "--layers");
+        if (kept.last >= int64_t(count))
+            throw UsageError("--layers " + line.layers + ": the stack " + line.stack +
+                             " has layers 0 to " + std::to_string(int64_t(count) - 1));
+    }
+    for (int64_t i = kept.first; i <= kept.last; ++i) {
+        if ((i - kept.first) % line.parts != line.part) continue;
+        plan.offsets.push_back(from + double(i) * step);
+        plan.layerNumbers.push_back(int(i));
+    }
+    return plan;
+}
+
+/// One plane, from --plane x=V or from --point with --normal.
+SlicePlan singlePlan(const SliceCommandLine& line) {
+    SlicePlan plan;
+    if (!line.plane.empty()) {
+        std::string rest;
+        const int axis = parseAxis(line.plane, "--plane", rest);
+        plan.family = SlicePlane::axisAligned(axis, 0.0);
+        plan.offsets.push_back(parseNumber(rest, "--plane"));
+        return plan;
+    }
+    if (line.point.empty() || line.normal.empty())
+        throw UsageError("--point and --normal go together");
+    const Vec3 n = parseVector(line.normal, "--normal");
+    const double len = glm::length(n);
+    if (!(len > 0.0) || !std::isfinite(len))
+        throw UsageError("--normal must be a non-zero finite vector");
+    plan.family = SlicePlane::throughPoint(parseVector(line.point, "--point"), n);
+    plan.offsets.push_back(0.0);
+    return plan;
+}
+
+/// The output file of each offset, checked before the model is loaded.
+std::vector<std::string> outputPaths(const SliceCommandLine& line, const SlicePlan& plan) {
+    std::vector<std::string> paths;
+    if (!line.stack.empty()) {
+        checkLayerPattern(line.output);
+        for (size_t i = 0; i < plan.offsets.size(); ++i)
+            paths.push_back(layerPath(line.output, plan.layerNumbers[i]));
+    } else {
+        paths.push_back(line.output);
+    }
+    for (const std::string& p : {paths.front(), paths.back()}) {
+        checkNotInput(p, line.model);
+        checkOutputWritable(p);
+    }
+    return paths;
+}
+
+void reportSectionNotes(const std::vector<SliceResult>& results,
+                        const std::vector<std::string>& paths, bool quiet) {
+    for (size_t i = 0; i < results.size(); ++i) {
+        if (results[i].stats.contour.budgetExceeded)
+            std::cerr
+                << "kerf: warning: " << paths[i]
+                << ": the section needed more quadtree cells than allowed; parts are drawn coarser "
+                   "than --tolerance\n";
+        if (results[i].stats.contour.flatCells > 0 && !quiet)
+            std::cerr
+                << "kerf: note: " << paths[i]
+                << ": the plane holds a face of the model, or faces coincide, where the section is "
+                   "decided by the sign of f within rounding\n";
+        if (results[i].drawing.layers.empty())
+            std::cerr << "kerf: note: " << paths[i] << ": the section is empty\n";
+    }
+}
+
+void writeSections(const std::vector<SliceResult>& results, const std::vector<std::string>& paths,
+                   Format format, const SliceCommandLine& line) {
+    // A stack's files are independent: vector files are written a few at a time, so one
+    // file's fsync does not wait for the last. Images go one by one (the image plug-in is
+    // loaded on the first).
+    if (format == Format::Png || results.size() == 1) {
+        for (size_t i = 0; i < results.size(); ++i)
+            writeSection(results[i].drawing, paths[i], format, line);
+    } else {
+        tbb::task_arena writers(8);
+        writers.execute([&] {
+            tbb::parallel_for(size_t(0), results.size(), [&](size_t i) {
+                writeSection(results[i].drawing, paths[i], format, line);
+            });
+        });
+    }
+}
+
+/// The moments of a run, for --stats.
+struct SliceTimes {
+    std::chrono::steady_clock::time_point start, loaded, sliced, written;
+};
+
+void printRunStats(const std::vector<SliceResult>& results, const std::vector<std::string>& paths,
+                   const SlicePlan& plan, const SceneSlicer& slicer, const SliceTimes& t,
+                   const SliceCommandLine& line) {
+    auto ms = [](auto a, auto b) { return 1e3 * std::chrono::duration<double>(b - a).count(); };
+    if (results.size() == 1) {
+        printStats(results[0], "", std::cerr);
+    } else {
+        for (size_t i = 0; i < results.size(); ++i)
+            printStats(results[i],
+                       "layer " + std::to_string(plan.layerNumbers[i]) + " (" + paths[i] + "): ",
+                       std::cerr);
+    }
+    char buf[256];
+    std::snprintf(buf, sizeof buf,
+                  "tolerance %.3g (absolute %.3g); time: load %.3f ms, tapes %.3f ms, slice %.3f "
+                  "ms (%zu layers), write %.3f ms\n",
+                  line.tolerance, slicer.absoluteTolerance(), ms(t.start, t.loaded),
+                  1e3 * slicer.compileSeconds(),
+                  ms(t.loaded, t.sliced) - 1e3 * slicer.compileSeconds(), results.size(),
+                  ms(t.sliced, t.written));
+    std::cerr << buf;
+}
+
 }  // namespace
 
 CLI::App* addSliceCommand(CLI::App& parent, SliceCommandLine& line) {
@@ -180,149 +348,28 @@ CLI::App* addSliceCommand(CLI::App& parent, SliceCommandLine& line) {
 }
 
 int runSlice(const SliceCommandLine& line) {
-    const auto t0 = std::chrono::steady_clock::now();
-    // Options first, then outputs, then the model: no work for a run that cannot succeed.
-    const int planeForms =
-        !line.plane.empty() + (!line.point.empty() || !line.normal.empty()) + !line.stack.empty();
-    if (planeForms != 1)
-        throw UsageError("give exactly one of --plane, --point with --normal, or --stack");
-    if (!(line.tolerance > 0.0 && line.tolerance < 1.0))
-        throw UsageError("--tolerance must be between 0 and 1, exclusive (got " +
-                         formatDouble("%g", line.tolerance) + ")");
-    if (line.tolerance < 1e-13)
-        throw UsageError("--tolerance must be at least 1e-13 (finer than doubles resolve; got " +
-                         formatDouble("%g", line.tolerance) + ")");
-    if (line.widthOption->count() && line.pixelOption->count())
-        throw UsageError("--width and --pixel: give one of them");
-    if (line.widthOption->count() && (line.width < 1 || line.width > 65536))
-        throw UsageError("--width must be between 1 and 65536 (got " + std::to_string(line.width) +
-                         ")");
-    if (line.pixelOption->count() && !(line.pixel > 0.0 && std::isfinite(line.pixel)))
-        throw UsageError("--pixel must be a positive size");
-
-    const bool someLayers = line.layersOption && line.layersOption->count() > 0;
-    if (someLayers && line.stack.empty()) throw UsageError("--layers goes with --stack");
-    SlicePlane family;
-    std::vector<double> offsets;
-    std::vector<int> layerNumbers;  // with --stack: each offset's layer number in the full stack
-    if (!line.plane.empty()) {
-        std::string rest;
-        const int axis = parseAxis(line.plane, "--plane", rest);
-        family = SlicePlane::axisAligned(axis, 0.0);
-        offsets.push_back(parseNumber(rest, "--plane"));
-    } else if (!line.stack.empty()) {
-        std::string rest;
-        const int axis = parseAxis(line.stack, "--stack", rest);
-        family = SlicePlane::axisAligned(axis, 0.0);
-        const size_t c1 = rest.find(':'),
-                     c2 = c1 == std::string::npos ? c1 : rest.find(':', c1 + 1);
-        if (c2 == std::string::npos)
-            throw UsageError("--stack must look like z=0:2.4:0.05, got '" + line.stack + "'");
-        const double from = parseNumber(rest.substr(0, c1), "--stack");
-        const double to = parseNumber(rest.substr(c1 + 1, c2 - c1 - 1), "--stack");
-        const double step = parseNumber(rest.substr(c2 + 1), "--stack");
-        if (!(step > 0.0) || !(to >= from))
-            throw UsageError("--stack: the step must be positive and FROM ≤ TO, got '" +
-                             line.stack + "'");
-        const double count = std::floor((to - from) / step * (1.0 + 1e-12)) + 1.0;
-        if (count > 100000) throw UsageError("--stack: more than 100000 layers");
-        // The range picks layers of the full stack: the same offsets and numbers as without it.
-        NumberRange kept{0, int64_t(count) - 1};
-        if (someLayers) {
-            kept = parseNumberRange(line.layers, "--layers");
-            if (kept.last >= int64_t(count))
-                throw UsageError("--layers " + line.layers + ": the stack " + line.stack +
-                                 " has layers 0 to " + std::to_string(int64_t(count) - 1));
-        }
-        for (int64_t i = kept.first; i <= kept.last; ++i) {
-            if ((i - kept.first) % line.parts != line.part) continue;
-            offsets.push_back(from + double(i) * step);
-            layerNumbers.push_back(int(i));
-        }
-    } else {
-        if (line.point.empty() || line.normal.empty())
-            throw UsageError("--point and --normal go together");
-        const Vec3 n = parseVector(line.normal, "--normal");
-        const double len = glm::length(n);
-        if (!(len > 0.0) || !std::isfinite(len))
-            throw UsageError("--normal must be a non-zero finite vector");
-        family = SlicePlane::throughPoint(parseVector(line.point, "--point"), n);
-        offsets.push_back(0.0);
-    }
-    if (offsets.empty()) return kExitSuccess;  // a share of a stack with no layer left in it
+    SliceTimes times;
+    times.start = std::chrono::steady_clock::now();
+    checkSliceOptions(line);
+    const SlicePlan plan = line.stack.empty() ? singlePlan(line) : stackPlan(line);
+    if (plan.offsets.empty()) return kExitSuccess;  // a share of a stack with no layer left in it
     const Format format = formatOf(line.output);
-    std::vector<std::string> paths;
-    if (!line.stack.empty()) {
-        checkLayerPattern(line.output);
-        for (size_t i = 0; i < offsets.size(); ++i)
-            paths.push_back(layerPath(line.output, layerNumbers[i]));
-    } else {
-        paths.push_back(line.output);
-    }
-    for (const std::string& p : {paths.front(), paths.back()}) {
-        checkNotInput(p, line.model);
-        checkOutputWritable(p);
-    }
+    const std::vector<std::string> paths = outputPaths(line, plan);
 
     const std::optional<Scene> scene = loadModel(line.model, std::cerr, line.quiet);
     if (!scene) return kExitUsage;
-    const auto tLoaded = std::chrono::steady_clock::now();
+    times.loaded = std::chrono::steady_clock::now();
 
     SliceOptions options;
     options.tolerance = line.tolerance;
-    SceneSlicer slicer(*scene, family, options);
+    SceneSlicer slicer(*scene, plan.family, options);
     for (const std::string& note : slicer.notes()) std::cerr << "kerf: note: " << note << "\n";
-    const std::vector<SliceResult> results = slicer.sliceMany(offsets);
-    const auto tSliced = std::chrono::steady_clock::now();
-    for (size_t i = 0; i < results.size(); ++i) {
-        if (results[i].stats.contour.budgetExceeded)
-            std::cerr
-                << "kerf: warning: " << paths[i]
-                << ": the section needed more quadtree cells than allowed; parts are drawn coarser "
-                   "than --tolerance\n";
-        if (results[i].stats.contour.flatCells > 0 && !line.quiet)
-            std::cerr
-                << "kerf: note: " << paths[i]
-                << ": the plane holds a face of the model, or faces coincide, where the section is "
-                   "decided by the sign of f within rounding\n";
-        if (results[i].drawing.layers.empty())
-            std::cerr << "kerf: note: " << paths[i] << ": the section is empty\n";
-    }
-    // A stack's files are independent: vector files are written a few at a time, so one
-    // file's fsync does not wait for the last. Images go one by one (the image plug-in is
-    // loaded on the first).
-    if (format == Format::Png || results.size() == 1) {
-        for (size_t i = 0; i < results.size(); ++i)
-            writeSection(results[i].drawing, paths[i], format, line);
-    } else {
-        tbb::task_arena writers(8);
-        writers.execute([&] {
-            tbb::parallel_for(size_t(0), results.size(), [&](size_t i) {
-                writeSection(results[i].drawing, paths[i], format, line);
-            });
-        });
-    }
-    const auto tWritten = std::chrono::steady_clock::now();
-    if (line.stats) {
-        auto ms = [](auto a, auto b) { return 1e3 * std::chrono::duration<double>(b - a).count(); };
-        if (results.size() == 1) {
-            printStats(results[0], "", std::cerr);
-        } else {
-            for (size_t i = 0; i < results.size(); ++i)
-                printStats(results[i],
-                           "layer " + std::to_string(layerNumbers[i]) + " (" + paths[i] + "): ",
-                           std::cerr);
-        }
-        char buf[256];
-        std::snprintf(
-            buf, sizeof buf,
-            "tolerance %.3g (absolute %.3g); time: load %.3f ms, tapes %.3f ms, slice %.3f ms "
-            "(%zu layers), write %.3f ms\n",
-            line.tolerance, slicer.absoluteTolerance(), ms(t0, tLoaded),
-            1e3 * slicer.compileSeconds(), ms(tLoaded, tSliced) - 1e3 * slicer.compileSeconds(),
-            results.size(), ms(tSliced, tWritten));
-        std::cerr << buf;
-    }
+    const std::vector<SliceResult> results = slicer.sliceMany(plan.offsets);
+    times.sliced = std::chrono::steady_clock::now();
+    reportSectionNotes(results, paths, line.quiet);
+    writeSections(results, paths, format, line);
+    times.written = std::chrono::steady_clock::now();
+    if (line.stats) printRunStats(results, paths, plan, slicer, times, line);
     return kExitSuccess;
 }
 

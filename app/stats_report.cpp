@@ -23,6 +23,45 @@ std::string count(uint64_t n) { return std::to_string(n); }
 
 std::string seconds(double s) { return formatDouble("%.3f s", s); }
 
+/// The octree's size, memory and pruning, for scenes that trace through one.
+void printOctree(const RenderStats& s, uint64_t rays, std::ostream& out) {
+    const OctreeStats& o = s.octree;
+    out << line("octree objects", count(uint64_t(o.objects)) + ", finest level " +
+                                      std::to_string(o.maxDepth) +
+                                      formatDouble(", finest cell %.3g", o.finestCell));
+    out << line("octree bricks", count(o.bricksBuilt) + " of " + count(o.bricks) +
+                                     " built (8³ cells each, on first use)");
+    out << line("octree cells", count(o.boundaryCells) + " boundary, " + count(o.fullBlocks) +
+                                    " full blocks, " + count(o.cellsClassified) + " classified");
+    out << line("octree memory", formatDouble("%.3g MB", double(o.memoryBytes) / 1e6) +
+                                     " in grid and cells, besides " + count(o.distinctNodes) +
+                                     " distinct pruned trees");
+    if (o.fullTapeOps > 0)
+        out << line("pruned tape length",
+                    formatDouble("%.3g", double(o.prunedTapeOps) / double(o.boundaryCells)) +
+                        formatDouble(" of %.3g ops per cell",
+                                     double(o.fullTapeOps) / double(o.boundaryCells)));
+    out << line(
+        "cells visited / ray",
+        formatDouble("%.3g", double(s.trace.cellsVisited) / double(std::max<uint64_t>(rays, 1))));
+    out << line("octree build", seconds(s.secondsAccel) + " (coarse levels; bricks during trace)");
+}
+
+/// The phases' times and the ray rate.
+void printTimes(const RunReport& report, uint64_t rays, std::ostream& out) {
+    const RenderStats& s = report.render;
+    out << line("parse + compile", seconds(report.secondsCompile));
+    out << line("setup", seconds(s.secondsSetup));
+    out << line("trace", seconds(s.secondsTrace));
+    out << line("write", seconds(report.secondsWrite));
+    const double total =
+        report.secondsCompile + s.secondsSetup + s.secondsTrace + report.secondsWrite;
+    out << line("total", seconds(total));
+    if (s.secondsTrace > 0) {
+        out << line("rays per second", formatDouble("%.4g", double(rays) / s.secondsTrace));
+    }
+}
+
 }  // namespace
 
 void printStats(const RunReport& report, std::ostream& out) {
@@ -53,30 +92,7 @@ void printStats(const RunReport& report, std::ostream& out) {
     out << line("bounds tests", count(s.trace.boundsTests));
     out << line("root-finder steps", count(s.trace.rootSteps));
     out << line("interval evaluations", count(s.trace.intervalEvals));
-    if (s.octree.objects > 0) {
-        const OctreeStats& o = s.octree;
-        out << line("octree objects", count(uint64_t(o.objects)) + ", finest level " +
-                                          std::to_string(o.maxDepth) +
-                                          formatDouble(", finest cell %.3g", o.finestCell));
-        out << line("octree bricks", count(o.bricksBuilt) + " of " + count(o.bricks) +
-                                         " built (8³ cells each, on first use)");
-        out << line("octree cells", count(o.boundaryCells) + " boundary, " + count(o.fullBlocks) +
-                                        " full blocks, " + count(o.cellsClassified) +
-                                        " classified");
-        out << line("octree memory", formatDouble("%.3g MB", double(o.memoryBytes) / 1e6) +
-                                         " in grid and cells, besides " + count(o.distinctNodes) +
-                                         " distinct pruned trees");
-        if (o.fullTapeOps > 0)
-            out << line("pruned tape length",
-                        formatDouble("%.3g", double(o.prunedTapeOps) / double(o.boundaryCells)) +
-                            formatDouble(" of %.3g ops per cell",
-                                         double(o.fullTapeOps) / double(o.boundaryCells)));
-        out << line("cells visited / ray",
-                    formatDouble("%.3g", double(s.trace.cellsVisited) /
-                                             double(std::max<uint64_t>(rays, 1))));
-        out << line("octree build",
-                    seconds(s.secondsAccel) + " (coarse levels; bricks during trace)");
-    }
+    if (s.octree.objects > 0) printOctree(s, rays, out);
     if (s.beamsUsed && s.beams.pixels > 0)
         out << line(
             "camera beams",
@@ -97,16 +113,7 @@ void printStats(const RunReport& report, std::ostream& out) {
     if (rays > 0)
         out << line("interval evals / ray",
                     formatDouble("%.3g", double(s.trace.intervalEvals) / double(rays)));
-    out << line("parse + compile", seconds(report.secondsCompile));
-    out << line("setup", seconds(s.secondsSetup));
-    out << line("trace", seconds(s.secondsTrace));
-    out << line("write", seconds(report.secondsWrite));
-    const double total =
-        report.secondsCompile + s.secondsSetup + s.secondsTrace + report.secondsWrite;
-    out << line("total", seconds(total));
-    if (s.secondsTrace > 0) {
-        out << line("rays per second", formatDouble("%.4g", double(rays) / s.secondsTrace));
-    }
+    printTimes(report, rays, out);
 }
 
 }  // namespace kerf::app

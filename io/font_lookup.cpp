@@ -47,19 +47,58 @@ using PatternPtr = std::unique_ptr<FcPattern, PatternDeleter>;
 
 const char* const kListHint = "list the installed fonts with `fc-list : family style`";
 
+FontLocation fontFileLocation(const std::string& font) {
+    struct stat st {};
+    if (::stat(font.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
+        throw FontError(FontError::Subject::Font,
+                        "font file '" + font + "' does not exist or is not a regular file");
+    }
+    return {font, 0, {}};
+}
+
+/// Whether one of the match's family names is `wanted`; `got` is its first.
+bool matchHasFamily(FcPattern* match, const std::string& wanted, std::string& got) {
+    // A match may carry several family names (e.g. "DejaVu Sans" and "DejaVu Sans
+    // Condensed"); the wanted family must be one of them.
+    bool same = false;
+    FcChar8* name = nullptr;
+    for (int i = 0; FcPatternGetString(match, FC_FAMILY, i, &name) == FcResultMatch; ++i) {
+        std::string n = reinterpret_cast<const char*>(name);
+        if (i == 0) got = n;
+        if (familyKey(n) == familyKey(wanted)) same = true;
+    }
+    return same;
+}
+
+void checkMatchedStyle(FcPattern* match, const std::string& font, const std::string& wanted,
+                       int wantedWeight, int wantedSlant) {
+    // A style the family lacks is also substituted silently (a regular face for "bold"); the
+    // outlines would be the regular ones, so it is refused too. Near weights are accepted
+    // ("light" finds ExtraLight), a weight on the other side of regular is not.
+    int gotWeight = FC_WEIGHT_REGULAR, gotSlant = FC_SLANT_ROMAN;
+    FcPatternGetInteger(match, FC_WEIGHT, 0, &gotWeight);
+    FcPatternGetInteger(match, FC_SLANT, 0, &gotSlant);
+    FcChar8* gotStyle = nullptr;
+    FcPatternGetString(match, FC_STYLE, 0, &gotStyle);
+    const std::string style = gotStyle ? reinterpret_cast<const char*>(gotStyle) : "?";
+    const bool heavyWanted = wantedWeight >= FC_WEIGHT_DEMIBOLD;
+    const bool lightWanted = wantedWeight >= 0 && wantedWeight <= FC_WEIGHT_LIGHT;
+    if ((heavyWanted && gotWeight < FC_WEIGHT_DEMIBOLD) ||
+        (lightWanted && gotWeight > FC_WEIGHT_LIGHT) ||
+        (wantedSlant > FC_SLANT_ROMAN && gotSlant == FC_SLANT_ROMAN)) {
+        throw FontError(FontError::Subject::Font,
+                        "font '" + font + "' has no such style (fontconfig would use '" +
+                            (wanted.empty() ? std::string() : wanted + " ") + style + "')",
+                        kListHint);
+    }
+}
+
 }  // namespace
 
 FontLocation findFont(const std::string& font, bool acceptSubstitute) {
     if (font.empty())
         throw FontError(FontError::Subject::Font, "the font name is empty", kListHint);
-    if (isFontPath(font)) {
-        struct stat st {};
-        if (::stat(font.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
-            throw FontError(FontError::Subject::Font,
-                            "font file '" + font + "' does not exist or is not a regular file");
-        }
-        return {font, 0, {}};
-    }
+    if (isFontPath(font)) return fontFileLocation(font);
 
     // fontconfig's default configuration is shared process state: one lookup at a time.
     static std::mutex mutex;
@@ -93,17 +132,8 @@ FontLocation findFont(const std::string& font, bool acceptSubstitute) {
     }
 
     if (!wanted.empty()) {
-        // A match may carry several family names (e.g. "DejaVu Sans" and "DejaVu Sans
-        // Condensed"); the wanted family must be one of them.
         std::string got;
-        bool same = false;
-        FcChar8* name = nullptr;
-        for (int i = 0; FcPatternGetString(match.get(), FC_FAMILY, i, &name) == FcResultMatch;
-             ++i) {
-            std::string n = reinterpret_cast<const char*>(name);
-            if (i == 0) got = n;
-            if (familyKey(n) == familyKey(wanted)) same = true;
-        }
+        const bool same = matchHasFamily(match.get(), wanted, got);
         if (!same && acceptSubstitute) {
             int index = 0;
             FcPatternGetInteger(match.get(), FC_INDEX, 0, &index);
@@ -117,25 +147,7 @@ FontLocation findFont(const std::string& font, bool acceptSubstitute) {
         }
     }
 
-    // A style the family lacks is also substituted silently (a regular face for "bold"); the
-    // outlines would be the regular ones, so it is refused too. Near weights are accepted
-    // ("light" finds ExtraLight), a weight on the other side of regular is not.
-    int gotWeight = FC_WEIGHT_REGULAR, gotSlant = FC_SLANT_ROMAN;
-    FcPatternGetInteger(match.get(), FC_WEIGHT, 0, &gotWeight);
-    FcPatternGetInteger(match.get(), FC_SLANT, 0, &gotSlant);
-    FcChar8* gotStyle = nullptr;
-    FcPatternGetString(match.get(), FC_STYLE, 0, &gotStyle);
-    const std::string style = gotStyle ? reinterpret_cast<const char*>(gotStyle) : "?";
-    const bool heavyWanted = wantedWeight >= FC_WEIGHT_DEMIBOLD;
-    const bool lightWanted = wantedWeight >= 0 && wantedWeight <= FC_WEIGHT_LIGHT;
-    if ((heavyWanted && gotWeight < FC_WEIGHT_DEMIBOLD) ||
-        (lightWanted && gotWeight > FC_WEIGHT_LIGHT) ||
-        (wantedSlant > FC_SLANT_ROMAN && gotSlant == FC_SLANT_ROMAN)) {
-        throw FontError(FontError::Subject::Font,
-                        "font '" + font + "' has no such style (fontconfig would use '" +
-                            (wanted.empty() ? std::string() : wanted + " ") + style + "')",
-                        kListHint);
-    }
+    checkMatchedStyle(match.get(), font, wanted, wantedWeight, wantedSlant);
     int index = 0;
     FcPatternGetInteger(match.get(), FC_INDEX, 0, &index);
     return {reinterpret_cast<const char*>(file), index, {}};

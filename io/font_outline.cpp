@@ -213,7 +213,10 @@ InkBounds segmentBounds(const PathSegment& s) {
     return b;
 }
 
-TextOutline layoutText(const TextSpec& spec) {
+namespace {
+
+/// The text's code points, after checking the size, the spacing and that it is one line.
+std::u32string checkedText(const TextSpec& spec) {
     if (!(std::isfinite(spec.size) && spec.size > 0.0)) {
         throw FontError(FontError::Subject::Text, "text size must be finite and greater than 0");
     }
@@ -226,25 +229,26 @@ TextOutline layoutText(const TextSpec& spec) {
             throw FontError(FontError::Subject::Text,
                             "text must be one line (it has a line break)");
     }
+    return chars;
+}
 
-    TextOutline out;
-    const FontLocation location = findFont(spec.font, spec.acceptSubstitute);
-    out.fontFile = location.file;
-    out.substitutedFamily = location.substitutedFamily;
-    FreeTypeFace ft;
+/// Opens the font's face with FreeType; it must have scalable outlines.
+void openFace(FreeTypeFace& ft, const FontLocation& location, const TextSpec& spec) {
     if (FT_Init_FreeType(&ft.library) != 0)
         throw FontError(FontError::Subject::Font, "cannot initialise FreeType");
-    if (FT_New_Face(ft.library, out.fontFile.c_str(), location.index, &ft.face) != 0) {
-        throw FontError(FontError::Subject::Font, "cannot read font file '" + out.fontFile +
+    if (FT_New_Face(ft.library, location.file.c_str(), location.index, &ft.face) != 0) {
+        throw FontError(FontError::Subject::Font, "cannot read font file '" + location.file +
                                                       "' (for font '" + spec.font + "')");
     }
-    FT_Face face = ft.face;
-    if (!FT_IS_SCALABLE(face) || face->units_per_EM == 0) {
-        throw FontError(FontError::Subject::Font, "font '" + spec.font + "' (" + out.fontFile +
+    if (!FT_IS_SCALABLE(ft.face) || ft.face->units_per_EM == 0) {
+        throw FontError(FontError::Subject::Font, "font '" + spec.font + "' (" + location.file +
                                                       ") has no outlines (a bitmap font)");
     }
-    out.fontHasKerning = FT_HAS_KERNING(face);
+}
 
+/// Lays the glyphs out along the baseline, kerned and spaced; returns each inked glyph's bounds.
+std::vector<InkBounds> layOutGlyphs(FT_Face face, const TextSpec& spec, const std::u32string& chars,
+                                    TextOutline& out) {
     FT_Outline_Funcs funcs{};
     funcs.move_to = moveTo;
     funcs.line_to = lineTo;
@@ -296,25 +300,32 @@ TextOutline layoutText(const TextSpec& spec) {
         previous = index;
     }
     out.advance = sink.pen.x * sink.scale;
+    return glyphInk;
+}
 
+/// Whether any two glyphs' outlines may overlap.
+bool anyGlyphsOverlap(const std::vector<InkBounds>& glyphInk,
+                      const std::vector<PathShape>& glyphs) {
     // Pairs whose ink bounds meet, by a sweep in x (a long line is not quadratic in its
     // length), then the exact test of their outlines.
     std::vector<size_t> order(glyphInk.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::sort(order.begin(), order.end(),
               [&](size_t a, size_t b) { return glyphInk[a].lo.x < glyphInk[b].lo.x; });
-    for (size_t k = 0; k < order.size() && !out.glyphsOverlap; ++k) {
+    for (size_t k = 0; k < order.size(); ++k) {
         const InkBounds& a = glyphInk[order[k]];
         for (size_t m = k + 1; m < order.size() && glyphInk[order[m]].lo.x <= a.hi.x; ++m) {
             const InkBounds& b = glyphInk[order[m]];
             if (a.lo.y <= b.hi.y && b.lo.y <= a.hi.y &&
-                outlinesMayOverlap(out.glyphs[order[k]], out.glyphs[order[m]])) {
-                out.glyphsOverlap = true;
-                break;
-            }
+                outlinesMayOverlap(glyphs[order[k]], glyphs[order[m]]))
+                return true;
         }
     }
+    return false;
+}
 
+/// Moves the laid-out text so the anchor the alignment names is at the origin; returns the shift.
+Vec2 alignText(const TextSpec& spec, TextOutline& out) {
     // Alignment: one translation of everything.
     Vec2 shift{0.0, 0.0};
     bool ink = !out.ink.empty();
@@ -345,7 +356,23 @@ TextOutline layoutText(const TextSpec& spec) {
             out.ink.hi += shift;
         }
     }
-    out.penStart = shift.x;
+    return shift;
+}
+
+}  // namespace
+
+TextOutline layoutText(const TextSpec& spec) {
+    const std::u32string chars = checkedText(spec);
+    TextOutline out;
+    const FontLocation location = findFont(spec.font, spec.acceptSubstitute);
+    out.fontFile = location.file;
+    out.substitutedFamily = location.substitutedFamily;
+    FreeTypeFace ft;
+    openFace(ft, location, spec);
+    out.fontHasKerning = FT_HAS_KERNING(ft.face);
+    const std::vector<InkBounds> glyphInk = layOutGlyphs(ft.face, spec, chars, out);
+    out.glyphsOverlap = anyGlyphsOverlap(glyphInk, out.glyphs);
+    out.penStart = alignText(spec, out).x;
     for (const auto& g : out.glyphs) {
         out.shape.loops.insert(out.shape.loops.end(), g.loops.begin(), g.loops.end());
     }

@@ -122,21 +122,8 @@ private:
     unsigned mNextHandle = 0x20;
 };
 
-}  // namespace
-
-std::string sectionDxf(const SectionDrawing& drawing) {
-    DxfText body;  // tables and entities first: the header needs the next free handle
-    size_t points = 0;
-    for (const SectionLayer& layer : drawing.layers)
-        for (const SectionLoop& loop : layer.loops) points += loop.points.size();
-    body.reserve(4096 + points * 48);
-    std::set<std::string> used = {"0"};
-    std::vector<std::string> names;
-    for (const SectionLayer& layer : drawing.layers)
-        names.push_back(uniqueLayerName(layer.name, used));
-
-    body.pair(0, "SECTION");
-    body.pair(2, "TABLES");
+/// The line-type table: CONTINUOUS only.
+void writeLineTypeTable(DxfText& body) {
     body.pair(0, "TABLE");
     body.pair(2, "LTYPE");
     body.handle();
@@ -153,7 +140,11 @@ std::string sectionDxf(const SectionDrawing& drawing) {
     body.integer(73, 0);
     body.pair(40, 0.0);
     body.pair(0, "ENDTAB");
+}
 
+/// The layer table: the default layer "0" and one layer per section layer.
+void writeLayerTable(DxfText& body, const SectionDrawing& drawing,
+                     const std::vector<std::string>& names) {
     body.pair(0, "TABLE");
     body.pair(2, "LAYER");
     body.handle();
@@ -178,10 +169,11 @@ std::string sectionDxf(const SectionDrawing& drawing) {
         layerRecord(names[l], &rgb);
     }
     body.pair(0, "ENDTAB");
-    body.pair(0, "ENDSEC");
+}
 
-    body.pair(0, "SECTION");
-    body.pair(2, "ENTITIES");
+/// One closed LWPOLYLINE per loop, on its layer.
+void writeEntities(DxfText& body, const SectionDrawing& drawing,
+                   const std::vector<std::string>& names) {
     for (size_t l = 0; l < drawing.layers.size(); ++l) {
         for (const SectionLoop& loop : drawing.layers[l].loops) {
             // A loop of fewer than three points encloses nothing; readers choke on it.
@@ -199,9 +191,10 @@ std::string sectionDxf(const SectionDrawing& drawing) {
             }
         }
     }
-    body.pair(0, "ENDSEC");
-    body.pair(0, "EOF");
+}
 
+/// The HEADER section: version, next free handle, units and extent.
+std::string headerSection(const SectionDrawing& drawing, unsigned nextHandle) {
     DxfText header;
     header.pair(0, "SECTION");
     header.pair(2, "HEADER");
@@ -209,7 +202,7 @@ std::string sectionDxf(const SectionDrawing& drawing) {
     header.pair(1, "AC1015");
     header.pair(9, "$HANDSEED");
     char seed[24];
-    std::snprintf(seed, sizeof seed, "%X", body.nextHandle());
+    std::snprintf(seed, sizeof seed, "%X", nextHandle);
     header.pair(5, seed);
     // kerf's models have no unit; 0 is DXF's "unitless", so a reader keeps the numbers as
     // they are instead of converting from a guessed unit.
@@ -224,7 +217,34 @@ std::string sectionDxf(const SectionDrawing& drawing) {
     header.pair(20, drawing.maxV);
     header.pair(30, 0.0);
     header.pair(0, "ENDSEC");
-    return header.text() + body.text();
+    return header.text();
+}
+
+}  // namespace
+
+std::string sectionDxf(const SectionDrawing& drawing) {
+    DxfText body;  // tables and entities first: the header needs the next free handle
+    size_t points = 0;
+    for (const SectionLayer& layer : drawing.layers)
+        for (const SectionLoop& loop : layer.loops) points += loop.points.size();
+    body.reserve(4096 + points * 48);
+    std::set<std::string> used = {"0"};
+    std::vector<std::string> names;
+    for (const SectionLayer& layer : drawing.layers)
+        names.push_back(uniqueLayerName(layer.name, used));
+
+    body.pair(0, "SECTION");
+    body.pair(2, "TABLES");
+    writeLineTypeTable(body);
+    writeLayerTable(body, drawing, names);
+    body.pair(0, "ENDSEC");
+
+    body.pair(0, "SECTION");
+    body.pair(2, "ENTITIES");
+    writeEntities(body, drawing, names);
+    body.pair(0, "ENDSEC");
+    body.pair(0, "EOF");
+    return headerSection(drawing, body.nextHandle()) + body.text();
 }
 
 }  // namespace kerf

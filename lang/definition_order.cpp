@@ -85,13 +85,11 @@ private:
     std::vector<const Solid*> mSolidStack;
 };
 
-}  // namespace
-
-std::vector<OrderedDefinition> definitionOrder(
+/// Definitions in statement order (line and column), so the walk (and what it reports)
+/// follows the file.
+std::vector<const Statement*> definitionsInFileOrder(
     const std::map<std::string, const Statement*>& lets,
     const std::map<std::string, const Statement*>& solids, const DiagnosticSink& sink) {
-    // Definitions in statement order (line and column), so the walk (and what it reports)
-    // follows the file.
     std::vector<std::pair<std::pair<int, int>, const Statement*>> keyed;
     for (const auto* table : {&lets, &solids})
         for (const auto& [name, def] : *table) {
@@ -103,79 +101,114 @@ std::vector<OrderedDefinition> definitionOrder(
     std::vector<const Statement*> defs;
     defs.reserve(keyed.size());
     for (const auto& k : keyed) defs.push_back(k.second);
-    keyed = {};
+    return defs;
+}
+
+/// Tarjan's algorithm over the use graph; `frames` is the call stack (vertex, next use to
+/// follow). Emits each definition outside every cycle after all it uses; a definition in a
+/// cycle, or using one, is left out.
+class DependencyOrder {
+public:
+    DependencyOrder(const std::vector<const Statement*>& defs,
+                    const std::vector<std::vector<Use>>& uses)
+        : mDefs(defs),
+          mUses(uses),
+          mOrder(defs.size(), -1),
+          mLow(defs.size(), 0),
+          mOnStack(defs.size(), 0),
+          mTainted(defs.size(), 0),
+          mLevel(defs.size(), 1) {}
+
+    std::vector<OrderedDefinition> run() {
+        const int n = static_cast<int>(mDefs.size());
+        for (int root = 0; root < n; ++root) {
+            if (mOrder[root] >= 0) continue;
+            enter(root);
+            while (!mFrames.empty()) {
+                auto& [v, next] = mFrames.back();
+                if (next < mUses[v].size()) {
+                    const int w = mUses[v][next++].target;
+                    if (mOrder[w] < 0) {
+                        enter(w);
+                    } else if (mOnStack[w]) {
+                        mLow[v] = std::min(mLow[v], mOrder[w]);
+                    }
+                    continue;
+                }
+                const int done = v;
+                mFrames.pop_back();
+                if (!mFrames.empty())
+                    mLow[mFrames.back().first] = std::min(mLow[mFrames.back().first], mLow[done]);
+                if (mLow[done] == mOrder[done]) closeComponent(done);
+            }
+        }
+        return std::move(mOut);
+    }
+
+private:
+    void enter(int v) {
+        mOrder[v] = mLow[v] = mCounter++;
+        mSccStack.push_back(v);
+        mOnStack[v] = 1;
+        mFrames.push_back({v, 0});
+    }
+
+    /// `done` roots a component: every definition it uses is already emitted.
+    void closeComponent(int done) {
+        std::vector<int> component;
+        int w;
+        do {
+            w = mSccStack.back();
+            mSccStack.pop_back();
+            mOnStack[w] = 0;
+            component.push_back(w);
+        } while (w != done);
+        const bool selfUse = std::any_of(mUses[done].begin(), mUses[done].end(),
+                                         [&](const Use& u) { return u.target == done; });
+        bool bad = component.size() > 1 || selfUse;
+        for (const int c : component)
+            for (const Use& u : mUses[c]) bad = bad || mTainted[u.target];
+        if (bad) {
+            for (const int c : component) mTainted[c] = 1;
+            return;
+        }
+        OrderedDefinition d;
+        d.def = mDefs[done];
+        for (const Use& u : mUses[done]) {
+            d.uses.push_back(mDefs[u.target]);
+            if (mLevel[u.target] + 1 > d.level) {
+                d.level = mLevel[u.target] + 1;
+                d.tooDeepAt = u.loc;
+            }
+        }
+        mLevel[done] = d.level;
+        d.firstTooDeep = d.level == kMaxNameDepth + 1;
+        mOut.push_back(std::move(d));
+    }
+
+    const std::vector<const Statement*>& mDefs;
+    const std::vector<std::vector<Use>>& mUses;
+    std::vector<int> mOrder, mLow;
+    std::vector<char> mOnStack, mTainted;
+    std::vector<int> mSccStack, mLevel;
+    std::vector<std::pair<int, size_t>> mFrames;
+    std::vector<OrderedDefinition> mOut;
+    int mCounter = 0;
+};
+
+}  // namespace
+
+std::vector<OrderedDefinition> definitionOrder(
+    const std::map<std::string, const Statement*>& lets,
+    const std::map<std::string, const Statement*>& solids, const DiagnosticSink& sink) {
+    const std::vector<const Statement*> defs = definitionsInFileOrder(lets, solids, sink);
     std::unordered_map<const Statement*, int> index;
     for (size_t i = 0; i < defs.size(); ++i) index[defs[i]] = static_cast<int>(i);
     const int n = static_cast<int>(defs.size());
     std::vector<std::vector<Use>> uses(n);
     UseCollector collector(lets, solids, index);
     for (int i = 0; i < n; ++i) uses[i] = collector.collect(*defs[i]);
-
-    // Tarjan's algorithm; `frames` is the call stack (vertex, next use to follow).
-    std::vector<int> order(n, -1), low(n, 0);
-    std::vector<char> onStack(n, 0), tainted(n, 0);
-    std::vector<int> sccStack, level(n, 1);
-    std::vector<std::pair<int, size_t>> frames;
-    std::vector<OrderedDefinition> out;
-    int counter = 0;
-    for (int root = 0; root < n; ++root) {
-        if (order[root] >= 0) continue;
-        frames.push_back({root, 0});
-        order[root] = low[root] = counter++;
-        sccStack.push_back(root);
-        onStack[root] = 1;
-        while (!frames.empty()) {
-            auto& [v, next] = frames.back();
-            if (next < uses[v].size()) {
-                const int w = uses[v][next++].target;
-                if (order[w] < 0) {
-                    order[w] = low[w] = counter++;
-                    sccStack.push_back(w);
-                    onStack[w] = 1;
-                    frames.push_back({w, 0});
-                } else if (onStack[w]) {
-                    low[v] = std::min(low[v], order[w]);
-                }
-                continue;
-            }
-            const int done = v;
-            frames.pop_back();
-            if (!frames.empty())
-                low[frames.back().first] = std::min(low[frames.back().first], low[done]);
-            if (low[done] != order[done]) continue;
-            // `done` roots a component: every definition it uses is already emitted.
-            std::vector<int> component;
-            int w;
-            do {
-                w = sccStack.back();
-                sccStack.pop_back();
-                onStack[w] = 0;
-                component.push_back(w);
-            } while (w != done);
-            const bool selfUse = std::any_of(uses[done].begin(), uses[done].end(),
-                                             [&](const Use& u) { return u.target == done; });
-            bool bad = component.size() > 1 || selfUse;
-            for (const int c : component)
-                for (const Use& u : uses[c]) bad = bad || tainted[u.target];
-            if (bad) {
-                for (const int c : component) tainted[c] = 1;
-                continue;
-            }
-            OrderedDefinition d;
-            d.def = defs[done];
-            for (const Use& u : uses[done]) {
-                d.uses.push_back(defs[u.target]);
-                if (level[u.target] + 1 > d.level) {
-                    d.level = level[u.target] + 1;
-                    d.tooDeepAt = u.loc;
-                }
-            }
-            level[done] = d.level;
-            d.firstTooDeep = d.level == kMaxNameDepth + 1;
-            out.push_back(std::move(d));
-        }
-    }
-    return out;
+    return DependencyOrder(defs, uses).run();
 }
 
 }  // namespace kerf

@@ -283,6 +283,74 @@ private:
     // lower_sections.cpp
     void lowerSection(const Statement& s, Scene& scene);
 
+    // lower_calls.cpp: the steps of callFunction
+    /// The parameter slot a named argument binds to, or nullopt with an error.
+    std::optional<size_t> namedSlot(const Statement& fn, const Expr& a,
+                                    const std::vector<std::optional<Value>>& bound);
+    /// Binds a call's arguments, evaluated in the caller's scope, by position then by name;
+    /// false, with an error, when one is unknown, repeated or missing without a default.
+    bool bindArguments(const Statement& fn, const Expr& call, ExprGraph* field,
+                       std::vector<std::optional<Value>>& bound);
+    /// Evaluates fn's body in a frame of its parameters (defaults evaluated there first),
+    /// returning a memoised result for a call seen before.
+    std::optional<Value> runCall(const Statement& fn, const Expr& call, ExprGraph* field,
+                                 std::vector<std::optional<Value>>& bound);
+
+    // lower_expr.cpp: the steps of evaluateCall
+    /// len, dot, cross, … (builtinValue) on arguments evaluated here, none a field.
+    std::optional<Value> callValueBuiltin(const Expr& e, ExprGraph* field);
+    /// The error for a call of a name that is no function, with a hint.
+    void reportUnknownFunction(const Expr& e);
+    /// A math function (sin, pow, mix, noise, …, by its index in lower_expr.cpp's table) on
+    /// numbers or fields.
+    std::optional<Value> applyMathFunction(const Expr& e, int function,
+                                           const std::vector<Value>& args, ExprGraph* field);
+
+    // lower_lights.cpp: the steps of lowerLight
+    /// The light's kind from its name, and the properties that kind takes; false, with an
+    /// error, for an unknown kind.
+    bool lightKind(const Statement& s, Light& light, std::vector<PropertySpec>& specs);
+    /// Reads the properties of the light's kind; false on any error.
+    bool readLight(const PropertyBlock& b, Light& light);
+    /// Checks the values read (colour, power, fade, direction, edges, radius), reporting each
+    /// one at fault.
+    bool checkLight(const PropertyBlock& b, const Light& light);
+
+    // lower_profiles.cpp: the profiles of lowerProfile and the steps of lowerPath
+    std::optional<Profile> profileBoolean(const Solid& s);
+    std::optional<Profile> circleProfile(const Solid& s);
+    std::optional<Profile> rectProfile(const Solid& s);
+    std::optional<Profile> polygonProfile(const Solid& s);
+    std::optional<Profile> offsetProfile(const Solid& s);
+    /// The `count` points of path step `name` (one point, or a list of `count`); false with
+    /// an error.
+    bool readPathPoints(const Property& p, const std::string& name, int count,
+                        std::vector<Vec2>& pts);
+    /// The segment of path step `name` from `at`; an arc's ends must be equally far from its
+    /// center.
+    std::optional<PathSegment> pathSegment(const Property& p, const std::string& name, Vec2 at,
+                                           const std::vector<Vec2>& pts);
+
+    // lower_scene.cpp: the steps of lowerCamera
+    /// Reads and checks the shutter, aperture and focus distance; `ok` false on any error
+    /// (the checks run only while it is true).
+    void readCameraLens(const PropertyBlock& b, CameraDesc& camera, bool& ok);
+    /// Checks the field of view, and that eye, look_at and up make a view (finite, apart, not
+    /// parallel); reports the first fault of the view.
+    void checkCameraView(const Statement& s, const PropertyBlock& b, const CameraDesc& camera);
+
+    // lower_surfaces.cpp: the kinds of lowerSurface
+    NodePtr lowerDisc(const Solid& s);
+    NodePtr lowerTriangle(const Solid& s);
+
+    // lower_values.cpp: the steps of builtinValue
+    /// True when argument i of call e has type t; false with an error naming both types.
+    bool expectArgument(const Expr& e, const std::vector<Value>& args, size_t i, Value::Type t);
+    /// random(seed, index): a hash of two whole numbers into [0, 1), the same on every machine.
+    std::optional<Value> randomValue(const Expr& e, const std::vector<Value>& args);
+    /// str(a, b, …): the values written out and joined.
+    std::optional<Value> joinedString(const Expr& e, const std::vector<Value>& args);
+
     DiagnosticSink& mSink;
     NoAssets mNoAssets;  ///< mAssets when no provider was given
     AssetProvider& mAssets;

@@ -70,57 +70,77 @@ std::optional<Value> Lowering::callFunction(const Statement& fn, const Expr& cal
         }
         return std::nullopt;
     }
+    std::vector<std::optional<Value>> bound(fn.properties.size());
+    if (!bindArguments(fn, call, field, bound)) return std::nullopt;
+    return runCall(fn, call, field, bound);
+}
+
+std::optional<size_t> Lowering::namedSlot(const Statement& fn, const Expr& a,
+                                          const std::vector<std::optional<Value>>& bound) {
+    const ArenaList<Property>& params = fn.properties;
+    size_t slot = params.size();
+    for (size_t i = 0; i < params.size(); ++i)
+        if (params[i].name.str() == a.name().str()) slot = i;
+    if (slot == params.size()) {
+        std::vector<std::string> names;
+        for (const Property& p : params) names.push_back(p.name);
+        std::string hint = didYouMean(a.name(), names);
+        error(a.loc, "'" + fn.name + "' has no parameter '" + a.name() + "'",
+              hint.empty() ? (names.empty() ? "it takes no arguments"
+                                            : "its parameters are " + joinNames(names))
+                           : hint);
+        return std::nullopt;
+    }
+    if (bound[slot]) {
+        error(a.loc, "argument '" + a.name() + "' given twice in call to " + fn.name);
+        return std::nullopt;
+    }
+    return slot;
+}
+
+bool Lowering::bindArguments(const Statement& fn, const Expr& call, ExprGraph* field,
+                             std::vector<std::optional<Value>>& bound) {
     // Bind the arguments, evaluated in the caller's scope.
     const ArenaList<Property>& params = fn.properties;
-    std::vector<std::optional<Value>> bound(params.size());
     bool named = false;
     size_t position = 0;
     for (const Expr& a : call.args()) {
         size_t slot = 0;
         if (a.kind == Expr::Kind::NamedArg) {
             named = true;
-            slot = params.size();
-            for (size_t i = 0; i < params.size(); ++i)
-                if (params[i].name.str() == a.name().str()) slot = i;
-            if (slot == params.size()) {
-                std::vector<std::string> names;
-                for (const Property& p : params) names.push_back(p.name);
-                std::string hint = didYouMean(a.name(), names);
-                error(a.loc, "'" + fn.name + "' has no parameter '" + a.name() + "'",
-                      hint.empty() ? (names.empty() ? "it takes no arguments"
-                                                    : "its parameters are " + joinNames(names))
-                                   : hint);
-                return std::nullopt;
-            }
-            if (bound[slot]) {
-                error(a.loc, "argument '" + a.name() + "' given twice in call to " + fn.name);
-                return std::nullopt;
-            }
+            const std::optional<size_t> found = namedSlot(fn, a, bound);
+            if (!found) return false;
+            slot = *found;
         } else {
             if (named) {
                 error(a.start, "a positional argument after a named one in call to " + fn.name);
-                return std::nullopt;
+                return false;
             }
             if (position >= params.size()) {
                 error(a.start, "'" + fn.name + "' takes " + std::to_string(params.size()) +
                                    " argument" + (params.size() == 1 ? "" : "s") + ", got " +
                                    std::to_string(call.args().size()));
-                return std::nullopt;
+                return false;
             }
             slot = position++;
         }
         auto v = evaluate(a.kind == Expr::Kind::NamedArg ? a.args()[0] : a, field);
-        if (!v) return std::nullopt;
+        if (!v) return false;
         bound[slot] = std::move(*v);
     }
     for (size_t i = 0; i < params.size(); ++i) {
         if (!bound[i] && !params[i].expr) {
             error(call.loc, "missing argument '" + params[i].name + "' in call to " + fn.name,
                   "pass it as " + params[i].name.str() + " = …, or give the parameter a default");
-            return std::nullopt;
+            return false;
         }
     }
+    return true;
+}
 
+std::optional<Value> Lowering::runCall(const Statement& fn, const Expr& call, ExprGraph* field,
+                                       std::vector<std::optional<Value>>& bound) {
+    const ArenaList<Property>& params = fn.properties;
     // A frame that sees the parameters and the top level.
     const size_t mark = mLocals.size();
     const size_t frameBase = std::exchange(mFrameBase, mark);

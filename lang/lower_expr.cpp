@@ -33,6 +33,23 @@ const std::array<Function, 20> kFunctions = {{
     {"noise", 3, Op::Noise}, {"pi", 0, Op::Const},  // pi is not callable
 }};
 
+/// The built-in functions of values (lower_values.cpp's builtinValue), not of x, y, z.
+const char* const kValueBuiltins[] = {"len", "dot", "cross",  "length", "normalize",
+                                      "deg", "rad", "random", "str"};
+
+/// The math functions by name (their index in kFunctions), and the value built-ins as -1.
+/// One hash instead of a string compare per built-in: calls are the inner loop of models.
+const std::unordered_map<std::string, int>& builtinIndex() {
+    static const std::unordered_map<std::string, int> kIndex = [] {
+        std::unordered_map<std::string, int> index;
+        for (size_t i = 0; i < kFunctions.size(); ++i)
+            if (kFunctions[i].arity > 0) index.emplace(kFunctions[i].name, static_cast<int>(i));
+        for (const char* b : kValueBuiltins) index.emplace(b, -1);
+        return index;
+    }();
+    return kIndex;
+}
+
 double applyConstant(Op op, double a, double b) {
     switch (op) {
         case Op::Neg: return -a;
@@ -298,51 +315,17 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
             return std::nullopt;
         }
     }
-    // One hash instead of a string compare per built-in: calls are the inner loop of models.
-    static const std::unordered_map<std::string, int> kBuiltinIndex = [] {
-        std::unordered_map<std::string, int> index;
-        for (size_t i = 0; i < kFunctions.size(); ++i)
-            if (kFunctions[i].arity > 0) index.emplace(kFunctions[i].name, static_cast<int>(i));
-        for (const char* b :
-             {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
-            index.emplace(b, -1);
-        return index;
-    }();
-    const auto builtin = kBuiltinIndex.find(e.name());
-    {
-        if (builtin != kBuiltinIndex.end() && builtin->second < 0) {
-            std::vector<Value> args;
-            for (const Expr& a : e.args()) {
-                auto v = evaluate(a, field);
-                if (!v) return std::nullopt;
-                if (v->type == Value::Type::Field) {
-                    error(a.start, "'" + e.name() + "' cannot take a function of x, y, z");
-                    return std::nullopt;
-                }
-                args.push_back(std::move(*v));
-            }
-            bool handled = false;
-            return builtinValue(e, args, handled);
-        }
-    }
-    const Function* fn = builtin != kBuiltinIndex.end() ? &kFunctions[builtin->second] : nullptr;
-    if (!fn) {
-        std::vector<std::string> names;
-        for (const Function& f : kFunctions)
-            if (f.arity > 0) names.emplace_back(f.name);
-        for (const char* b :
-             {"len", "dot", "cross", "length", "normalize", "deg", "rad", "random", "str"})
-            names.emplace_back(b);
-        for (const auto& [name, def] : mFunctions) names.push_back(name);
-        std::string hint = callSyntaxHint(e.name());  // OpenSCAD's cube([…]) and the like
-        if (hint.empty()) hint = didYouMean(e.name(), names);
-        error(e.loc, "unknown function '" + e.name() + "'",
-              hint.empty() ? "the functions are " + joinNames(names) : hint);
+    const auto& index = builtinIndex();
+    const auto builtin = index.find(e.name());
+    if (builtin != index.end() && builtin->second < 0) return callValueBuiltin(e, field);
+    if (builtin == index.end()) {
+        reportUnknownFunction(e);
         return std::nullopt;
     }
-    if (static_cast<int>(e.args().size()) != fn->arity) {
-        error(e.loc, "'" + e.name() + "' takes " + std::to_string(fn->arity) + " argument" +
-                         (fn->arity == 1 ? "" : "s") + ", got " + std::to_string(e.args().size()));
+    const Function& fn = kFunctions[builtin->second];
+    if (static_cast<int>(e.args().size()) != fn.arity) {
+        error(e.loc, "'" + e.name() + "' takes " + std::to_string(fn.arity) + " argument" +
+                         (fn.arity == 1 ? "" : "s") + ", got " + std::to_string(e.args().size()));
         return std::nullopt;
     }
     std::vector<Value> args;
@@ -353,7 +336,39 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
         ok = ok && v.has_value();
     }
     if (!ok) return std::nullopt;
+    return applyMathFunction(e, builtin->second, args, field);
+}
 
+std::optional<Value> Lowering::callValueBuiltin(const Expr& e, ExprGraph* field) {
+    std::vector<Value> args;
+    for (const Expr& a : e.args()) {
+        auto v = evaluate(a, field);
+        if (!v) return std::nullopt;
+        if (v->type == Value::Type::Field) {
+            error(a.start, "'" + e.name() + "' cannot take a function of x, y, z");
+            return std::nullopt;
+        }
+        args.push_back(std::move(*v));
+    }
+    bool handled = false;
+    return builtinValue(e, args, handled);
+}
+
+void Lowering::reportUnknownFunction(const Expr& e) {
+    std::vector<std::string> names;
+    for (const Function& f : kFunctions)
+        if (f.arity > 0) names.emplace_back(f.name);
+    for (const char* b : kValueBuiltins) names.emplace_back(b);
+    for (const auto& [name, def] : mFunctions) names.push_back(name);
+    std::string hint = callSyntaxHint(e.name());  // OpenSCAD's cube([…]) and the like
+    if (hint.empty()) hint = didYouMean(e.name(), names);
+    error(e.loc, "unknown function '" + e.name() + "'",
+          hint.empty() ? "the functions are " + joinNames(names) : hint);
+}
+
+std::optional<Value> Lowering::applyMathFunction(const Expr& e, int function,
+                                                 const std::vector<Value>& args, ExprGraph* field) {
+    const Function& fn = kFunctions[function];
     const std::string name = e.name();
     if (name == "mix") {  // a + (b - a)·t, which also mixes vectors
         const auto d = arithmetic('-', args[1], args[0], e.loc, field);
@@ -373,11 +388,11 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
             const double r = applyConstant(op, a.number, b.number);
             return finiteLazy(Value::ofNumber(r), e.loc, [&] {
                 std::string call = name + "(" + formatNumber(a.number);
-                if (fn->arity > 1) call += ", " + formatNumber(b.number);
+                if (fn.arity > 1) call += ", " + formatNumber(b.number);
                 return call + ") = " + formatNumber(r);
             });
         }
-        if (fn->arity == 1) return Value::ofField(field->unary(op, a.field));
+        if (fn.arity == 1) return Value::ofField(field->unary(op, a.field));
         return Value::ofField(field->binary(op, asField(a, *field), asField(b, *field)));
     };
     if (name == "noise") {  // gradient noise at (a, b, c), seed 0 (csg/tape/noise.h)
@@ -392,7 +407,7 @@ std::optional<Value> Lowering::evaluateCall(const Expr& e, ExprGraph* field) {
         const auto lower = apply(Op::Max, args[0], args[1]);
         return lower ? apply(Op::Min, *lower, args[2]) : std::nullopt;
     }
-    return apply(fn->op, args[0], fn->arity > 1 ? args[1] : Value::ofNumber(0.0));
+    return apply(fn.op, args[0], fn.arity > 1 ? args[1] : Value::ofNumber(0.0));
 }
 
 std::optional<Value> Lowering::propertyValue(const PropertyBlock& block, const std::string& name) {

@@ -17,6 +17,16 @@ bool nonNegative(const Vec3& v) { return v.x >= 0 && v.y >= 0 && v.z >= 0; }
 std::optional<Light> Lowering::lowerLight(const Statement& s) {
     Light light;
     std::vector<PropertySpec> specs{{"color", PropertyType::Vector}};
+    if (!lightKind(s, light, specs)) return std::nullopt;
+    specs.push_back({"shadows", PropertyType::Bool});
+    const PropertyBlock b(s.properties, specs, s.name + " light", s.loc, mSink);
+    bool ok = b.ok();
+    ok &= readLight(b, light);
+    if (!ok) return std::nullopt;
+    return checkLight(b, light) ? std::optional<Light>(light) : std::nullopt;
+}
+
+bool Lowering::lightKind(const Statement& s, Light& light, std::vector<PropertySpec>& specs) {
     const bool positioned = s.name == "point" || s.name == "area" || s.name == "sphere";
     if (s.name == "point") {
         light.kind = Light::Kind::Point;
@@ -39,16 +49,18 @@ std::optional<Light> Lowering::lowerLight(const Statement& s) {
         std::string hint = didYouMean(s.name, {"point", "directional", "area", "sphere"});
         error(s.nameLoc, "unknown light kind '" + s.name + "'",
               hint.empty() ? "lights are point, directional, area or sphere" : hint);
-        return std::nullopt;
+        return false;
     }
     if (positioned) {
         specs.push_back({"power", PropertyType::Number});
         specs.push_back({"falloff", PropertyType::Word});
         specs.push_back({"fade_distance", PropertyType::Number});
     }
-    specs.push_back({"shadows", PropertyType::Bool});
-    const PropertyBlock b(s.properties, specs, s.name + " light", s.loc, mSink);
-    bool ok = b.ok();
+    return true;
+}
+
+bool Lowering::readLight(const PropertyBlock& b, Light& light) {
+    bool ok = true;
     ok &= readVector(b, "color", light.color);
     ok &= readBool(b, "shadows", light.shadows);
     ok &= readInteger(b, "samples", 1, 4096, light.samples);
@@ -68,7 +80,11 @@ std::optional<Light> Lowering::lowerLight(const Statement& s) {
         ok &= readVector(b, "edge2", light.edgeV);
     }
     if (light.kind == Light::Kind::Sphere) ok &= readNumber(b, "radius", light.radius);
-    if (!ok) return std::nullopt;
+    return ok;
+}
+
+bool Lowering::checkLight(const PropertyBlock& b, const Light& light) {
+    bool ok = true;
     if (!nonNegative(light.color)) {
         error(b.find("color")->valueLoc(),
               "light color must not have negative components, got " + formatVector(light.color));
@@ -104,7 +120,7 @@ std::optional<Light> Lowering::lowerLight(const Statement& s) {
               "a point light is a sphere light of radius 0: write light point { … }");
         ok = false;
     }
-    return ok ? std::optional<Light>(light) : std::nullopt;
+    return ok;
 }
 
 void Lowering::lowerBackground(const Statement& s, Scene& scene) {

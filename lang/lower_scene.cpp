@@ -132,6 +132,16 @@ void Lowering::lowerCamera(const Statement& s, CameraDesc& camera) {
                            {"shutter_close", PropertyType::Number}},
                           "camera", s.loc, mSink);
     bool ok = b.ok();
+    readCameraLens(b, camera, ok);
+    ok &= readVector(b, "eye", camera.eye);
+    ok &= readVector(b, "look_at", camera.lookAt);
+    ok &= readVector(b, "up", camera.up);
+    ok &= readNumber(b, "fov", camera.fovDegrees);
+    if (!ok) return;
+    checkCameraView(s, b, camera);
+}
+
+void Lowering::readCameraLens(const PropertyBlock& b, CameraDesc& camera, bool& ok) {
     ok &= readNumber(b, "shutter_open", camera.shutterOpen);
     ok &= readNumber(b, "shutter_close", camera.shutterClose);
     if (b.find("shutter_open") && !b.find("shutter_close"))
@@ -161,11 +171,10 @@ void Lowering::lowerCamera(const Statement& s, CameraDesc& camera) {
               "the distance from the eye, along the view, of the plane in focus");
         ok = false;
     }
-    ok &= readVector(b, "eye", camera.eye);
-    ok &= readVector(b, "look_at", camera.lookAt);
-    ok &= readVector(b, "up", camera.up);
-    ok &= readNumber(b, "fov", camera.fovDegrees);
-    if (!ok) return;
+}
+
+void Lowering::checkCameraView(const Statement& s, const PropertyBlock& b,
+                               const CameraDesc& camera) {
     const auto at = [&](const char* name) {
         return b.find(name) ? b.find(name)->valueLoc() : s.loc;
     };

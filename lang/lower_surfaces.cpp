@@ -47,71 +47,8 @@ NodePtr Lowering::noteSurface(NodePtr surface, SourcePos at) {
 }
 
 NodePtr Lowering::lowerSurface(const Solid& s) {
-    if (s.name == "disc") {
-        const PropertyBlock b(s.properties,
-                              {{"center", PropertyType::Vector},
-                               {"normal", PropertyType::Vector},
-                               {"radius", PropertyType::Number},
-                               {"inner", PropertyType::Number}},
-                              "disc", s.loc, mSink);
-        Vec3 center(0.0), normal(0.0, 1.0, 0.0);
-        double radius = 1.0, inner = 0.0;
-        bool ok = b.ok();
-        ok &= readVector(b, "center", center);
-        ok &= readVector(b, "normal", normal);
-        ok &= readNumber(b, "radius", radius);
-        ok &= readNumber(b, "inner", inner);
-        if (!ok) return nullptr;
-        if (!(radius > 0) || !std::isfinite(radius)) {
-            error(b.find("radius")->valueLoc(),
-                  "disc radius must be positive and finite, got " + formatNumber(radius));
-            return nullptr;
-        }
-        if (!(inner >= 0 && inner < radius)) {
-            error(b.find("inner")->valueLoc(),
-                  "disc inner radius must be at least 0 and less than the radius " +
-                      formatNumber(radius) + ", got " + formatNumber(inner));
-            return nullptr;
-        }
-        if (!finite3(center)) {
-            error(b.find("center")->valueLoc(),
-                  "disc center is not finite, got " + formatVector(center));
-            return nullptr;
-        }
-        if (!finite3(normal) || !(glm::length(normal) > 0) || !std::isfinite(glm::length(normal))) {
-            error(b.find("normal") ? b.find("normal")->valueLoc() : s.loc,
-                  "disc normal must be a finite, non-zero vector, got " + formatVector(normal));
-            return nullptr;
-        }
-        return noteSurface(makeDisc(center, normal, radius, inner), s.loc);
-    }
-    if (s.name == "triangle") {
-        const PropertyBlock b(s.properties,
-                              {{"a", PropertyType::Vector, true},
-                               {"b", PropertyType::Vector, true},
-                               {"c", PropertyType::Vector, true}},
-                              "triangle", s.loc, mSink);
-        Vec3 p[3];
-        bool ok = b.ok();
-        ok &= readVector(b, "a", p[0]);
-        ok &= readVector(b, "b", p[1]);
-        ok &= readVector(b, "c", p[2]);
-        if (!ok) return nullptr;
-        for (int i = 0; i < 3; ++i)
-            if (!finite3(p[i])) {
-                error(s.loc, std::string("triangle corner ") + char('a' + i) +
-                                 " is not finite, got " + formatVector(p[i]));
-                return nullptr;
-            }
-        const Vec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
-        if (!(glm::length(n) > 0) || !std::isfinite(glm::length(n))) {
-            error(s.loc, "triangle has no area: its corners " + formatVector(p[0]) + ", " +
-                             formatVector(p[1]) + " and " + formatVector(p[2]) +
-                             " are on one line");
-            return nullptr;
-        }
-        return noteSurface(makeTriangle(p[0], p[1], p[2]), s.loc);
-    }
+    if (s.name == "disc") return lowerDisc(s);
+    if (s.name == "triangle") return lowerTriangle(s);
     if (s.name == "surface") {
         NodePtr solid = lowerSolid(s.children[0]);
         if (!solid || solid == emptySolid()) return nullptr;
@@ -130,6 +67,72 @@ NodePtr Lowering::lowerSurface(const Solid& s) {
     }
     if (!checkSolidOperands({solid}, "what 'clip' cuts by", s.loc)) return nullptr;
     return noteSurface(limitDepth(makeClip(std::move(surface), std::move(solid)), s.loc), s.loc);
+}
+
+NodePtr Lowering::lowerDisc(const Solid& s) {
+    const PropertyBlock b(s.properties,
+                          {{"center", PropertyType::Vector},
+                           {"normal", PropertyType::Vector},
+                           {"radius", PropertyType::Number},
+                           {"inner", PropertyType::Number}},
+                          "disc", s.loc, mSink);
+    Vec3 center(0.0), normal(0.0, 1.0, 0.0);
+    double radius = 1.0, inner = 0.0;
+    bool ok = b.ok();
+    ok &= readVector(b, "center", center);
+    ok &= readVector(b, "normal", normal);
+    ok &= readNumber(b, "radius", radius);
+    ok &= readNumber(b, "inner", inner);
+    if (!ok) return nullptr;
+    if (!(radius > 0) || !std::isfinite(radius)) {
+        error(b.find("radius")->valueLoc(),
+              "disc radius must be positive and finite, got " + formatNumber(radius));
+        return nullptr;
+    }
+    if (!(inner >= 0 && inner < radius)) {
+        error(b.find("inner")->valueLoc(),
+              "disc inner radius must be at least 0 and less than the radius " +
+                  formatNumber(radius) + ", got " + formatNumber(inner));
+        return nullptr;
+    }
+    if (!finite3(center)) {
+        error(b.find("center")->valueLoc(),
+              "disc center is not finite, got " + formatVector(center));
+        return nullptr;
+    }
+    if (!finite3(normal) || !(glm::length(normal) > 0) || !std::isfinite(glm::length(normal))) {
+        error(b.find("normal") ? b.find("normal")->valueLoc() : s.loc,
+              "disc normal must be a finite, non-zero vector, got " + formatVector(normal));
+        return nullptr;
+    }
+    return noteSurface(makeDisc(center, normal, radius, inner), s.loc);
+}
+
+NodePtr Lowering::lowerTriangle(const Solid& s) {
+    const PropertyBlock b(s.properties,
+                          {{"a", PropertyType::Vector, true},
+                           {"b", PropertyType::Vector, true},
+                           {"c", PropertyType::Vector, true}},
+                          "triangle", s.loc, mSink);
+    Vec3 p[3];
+    bool ok = b.ok();
+    ok &= readVector(b, "a", p[0]);
+    ok &= readVector(b, "b", p[1]);
+    ok &= readVector(b, "c", p[2]);
+    if (!ok) return nullptr;
+    for (int i = 0; i < 3; ++i)
+        if (!finite3(p[i])) {
+            error(s.loc, std::string("triangle corner ") + char('a' + i) + " is not finite, got " +
+                             formatVector(p[i]));
+            return nullptr;
+        }
+    const Vec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+    if (!(glm::length(n) > 0) || !std::isfinite(glm::length(n))) {
+        error(s.loc, "triangle has no area: its corners " + formatVector(p[0]) + ", " +
+                         formatVector(p[1]) + " and " + formatVector(p[2]) + " are on one line");
+        return nullptr;
+    }
+    return noteSurface(makeTriangle(p[0], p[1], p[2]), s.loc);
 }
 
 bool Lowering::checkSurfaceOperands(const std::vector<NodePtr>& operands, const std::string& use,

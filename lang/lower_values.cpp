@@ -359,12 +359,7 @@ std::optional<Value> Lowering::builtinValue(const Expr& e, const std::vector<Val
                          (arity == 1 ? "" : "s") + ", got " + std::to_string(args.size()));
         return std::nullopt;
     }
-    const auto expect = [&](size_t i, Value::Type t) {
-        if (args[i].type == t) return true;
-        error(e.args()[i].start,
-              "'" + name + "' expects " + typeName(t) + ", got " + typeName(args[i].type));
-        return false;
-    };
+    const auto expect = [&](size_t i, Value::Type t) { return expectArgument(e, args, i, t); };
     using T = Value::Type;
     if (name == "len") {
         const Value& a = args[0];
@@ -400,23 +395,38 @@ std::optional<Value> Lowering::builtinValue(const Expr& e, const std::vector<Val
         return Value::ofNumber(name == "deg" ? args[0].number * (180.0 / M_PI)
                                              : args[0].number * (M_PI / 180.0));
     }
-    if (name == "random") {
-        // Integer hashing only, no library distribution: the same stream on every machine.
-        for (size_t i = 0; i < 2; ++i) {
-            if (!expect(i, T::Number)) return std::nullopt;
-            const double v = args[i].number;
-            if (v != std::floor(v) || std::fabs(v) > 9007199254740992.0) {
-                error(e.args()[i].start, std::string("random's ") + (i == 0 ? "seed" : "index") +
-                                             " must be a whole number of at most 2^53, got " +
-                                             formatNumber(v));
-                return std::nullopt;
-            }
+    if (name == "random") return randomValue(e, args);
+    return joinedString(e, args);
+}
+
+bool Lowering::expectArgument(const Expr& e, const std::vector<Value>& args, size_t i,
+                              Value::Type t) {
+    if (args[i].type == t) return true;
+    error(e.args()[i].start,
+          "'" + e.name() + "' expects " + typeName(t) + ", got " + typeName(args[i].type));
+    return false;
+}
+
+std::optional<Value> Lowering::randomValue(const Expr& e, const std::vector<Value>& args) {
+    // Integer hashing only, no library distribution: the same stream on every machine.
+    for (size_t i = 0; i < 2; ++i) {
+        if (!expectArgument(e, args, i, Value::Type::Number)) return std::nullopt;
+        const double v = args[i].number;
+        if (v != std::floor(v) || std::fabs(v) > 9007199254740992.0) {
+            error(e.args()[i].start, std::string("random's ") + (i == 0 ? "seed" : "index") +
+                                         " must be a whole number of at most 2^53, got " +
+                                         formatNumber(v));
+            return std::nullopt;
         }
-        const uint64_t seed = static_cast<uint64_t>(static_cast<int64_t>(args[0].number));
-        const uint64_t i = static_cast<uint64_t>(static_cast<int64_t>(args[1].number));
-        const uint64_t h = mix64(mix64(seed) ^ i);
-        return Value::ofNumber(static_cast<double>(h >> 11) * 0x1.0p-53);  // 53 bits in [0, 1)
     }
+    const uint64_t seed = static_cast<uint64_t>(static_cast<int64_t>(args[0].number));
+    const uint64_t i = static_cast<uint64_t>(static_cast<int64_t>(args[1].number));
+    const uint64_t h = mix64(mix64(seed) ^ i);
+    return Value::ofNumber(static_cast<double>(h >> 11) * 0x1.0p-53);  // 53 bits in [0, 1)
+}
+
+std::optional<Value> Lowering::joinedString(const Expr& e, const std::vector<Value>& args) {
+    using T = Value::Type;
     // str(a, b, …): the values written out and joined, for messages.
     std::string out;
     for (const Value& a : args) out += a.type == T::String ? a.string() : show(a);

@@ -48,26 +48,9 @@ void Parser::parseStatementBody(Statement& s) {
     } else if (word == "fn") {
         parseFunction(s);
     } else if (word == "assert") {
-        s.kind = Statement::Kind::Assert;
-        s.expr = store(parseExpr());
-        if (accept(TokenKind::Comma)) {
-            Property message;
-            message.loc = peek().pos;
-            message.expr = store(parseExpr());
-            s.properties = list(&message, 1);
-        }
-        expect(TokenKind::Semicolon, "after the assert statement");
+        parseAssert(s);
     } else if (word == "echo") {
-        s.kind = Statement::Kind::Echo;
-        std::vector<Property> values;
-        do {
-            Property v;
-            v.loc = peek().pos;
-            v.expr = store(parseExpr());
-            values.push_back(v);
-        } while (accept(TokenKind::Comma));
-        s.properties = list(values);
-        expect(TokenKind::Semicolon, "after the echo statement");
+        parseEcho(s);
     } else if (word == "default") {
         s.kind = Statement::Kind::DefaultMaterial;
         if (!checkWord("material"))
@@ -89,13 +72,7 @@ void Parser::parseStatementBody(Statement& s) {
         s.solid = store(parseSolid(true));
         expect(TokenKind::Semicolon, "after the solid statement");
     } else if (word == "object") {
-        s.kind = Statement::Kind::Object;
-        s.solid = store(parseSolid(true));
-        if (checkWord("no_shadow")) {  // the object casts no shadow
-            s.nameLoc = peek().pos;
-            s.name = next().text;
-        }
-        expect(TokenKind::Semicolon, "after the object statement");
+        parseObject(s);
     } else if (word == "material") {
         s.kind = Statement::Kind::Material;
         parseDefinedName(s, "material");
@@ -113,20 +90,59 @@ void Parser::parseStatementBody(Statement& s) {
                                     : Statement::Kind::Section;
         parseBlock(s.properties);
     } else if (word == "background") {
-        s.kind = Statement::Kind::Background;
-        if (checkWord("gradient") && peek(1).kind == TokenKind::LBrace) {  // a gradient sky
-            s.nameLoc = peek().pos;
-            s.name = next().text;
-            parseBlock(s.properties);
-        } else {
-            s.expr = store(parseExpr());
-            expect(TokenKind::Semicolon, "after the background statement");
-        }
+        parseBackground(s);
     } else {  // include
         s.kind = Statement::Kind::Include;
         s.nameLoc = peek().pos;
         s.name = expect(TokenKind::String, "after include (the file name in quotes)").text;
         expect(TokenKind::Semicolon, "after the include statement");
+    }
+}
+
+void Parser::parseAssert(Statement& s) {
+    s.kind = Statement::Kind::Assert;
+    s.expr = store(parseExpr());
+    if (accept(TokenKind::Comma)) {
+        Property message;
+        message.loc = peek().pos;
+        message.expr = store(parseExpr());
+        s.properties = list(&message, 1);
+    }
+    expect(TokenKind::Semicolon, "after the assert statement");
+}
+
+void Parser::parseEcho(Statement& s) {
+    s.kind = Statement::Kind::Echo;
+    std::vector<Property> values;
+    do {
+        Property v;
+        v.loc = peek().pos;
+        v.expr = store(parseExpr());
+        values.push_back(v);
+    } while (accept(TokenKind::Comma));
+    s.properties = list(values);
+    expect(TokenKind::Semicolon, "after the echo statement");
+}
+
+void Parser::parseObject(Statement& s) {
+    s.kind = Statement::Kind::Object;
+    s.solid = store(parseSolid(true));
+    if (checkWord("no_shadow")) {  // the object casts no shadow
+        s.nameLoc = peek().pos;
+        s.name = next().text;
+    }
+    expect(TokenKind::Semicolon, "after the object statement");
+}
+
+void Parser::parseBackground(Statement& s) {
+    s.kind = Statement::Kind::Background;
+    if (checkWord("gradient") && peek(1).kind == TokenKind::LBrace) {  // a gradient sky
+        s.nameLoc = peek().pos;
+        s.name = next().text;
+        parseBlock(s.properties);
+    } else {
+        s.expr = store(parseExpr());
+        expect(TokenKind::Semicolon, "after the background statement");
     }
 }
 

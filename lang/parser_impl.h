@@ -162,6 +162,13 @@ private:
     // ---- statements, blocks and solids (parser.cpp) ----
     void parseStatement(Program& program);
     void parseStatementBody(Statement& s);
+    /// The statements of parseStatementBody that take more than a line: `assert EXPR [,
+    /// MESSAGE];`, `echo EXPR, …;`, `object SOLID [no_shadow];` and `background EXPR;` or
+    /// `background gradient { … }`.
+    void parseAssert(Statement& s);
+    void parseEcho(Statement& s);
+    void parseObject(Statement& s);
+    void parseBackground(Statement& s);
     /// `for NAME in EXPR { statements }` or `if EXPR { … } else if … else { … }` at statement
     /// level. The nested statements keep their nodes in the scratch arena; the outermost
     /// statement's takeTree moves them all.

@@ -106,17 +106,17 @@ struct VertexKeyHash {
     }
 };
 
-}  // namespace
-
-TriangleMesh loadMesh(const std::string& path) {
+void checkMeshFile(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) fail(path, "no such file");
     if (!std::filesystem::is_regular_file(path, ec)) fail(path, "not a regular file");
     if (!std::ifstream(path, std::ios::binary)) fail(path, "cannot be opened for reading");
     if (std::filesystem::file_size(path, ec) == 0) fail(path, "empty file");
     if (const auto why = binaryMeshTruncation(path)) fail(path, *why);
+}
 
-    Assimp::Importer importer;
+/// The scene Assimp reads, triangulated and checked for the parts read later.
+const aiScene& importScene(Assimp::Importer& importer, const std::string& path) {
     const aiScene* scene = nullptr;
     // ValidateDataStructure runs before the other steps and is load-bearing: without it,
     // Assimp 5.2's Triangulate read out of bounds (valgrind) on garbage indices of a short PLY.
@@ -132,9 +132,98 @@ TriangleMesh loadMesh(const std::string& path) {
     }
     if (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) fail(path, "incomplete scene (no mesh data)");
     if (scene->mRootNode == nullptr) fail(path, "the scene has no root node");
+    return *scene;
+}
+
+/// Copies the placed meshes' triangles into one mesh, joining vertices equal in position,
+/// normal and UV (each kept only when every mesh has it).
+class MeshJoiner {
+public:
+    MeshJoiner(const std::string& path, bool keepNormals, bool keepUvs)
+        : mPath(path), mKeepNormals(keepNormals), mKeepUvs(keepUvs) {
+        mOut.source = path;
+    }
+
+    void add(const Placement& p) {
+        const aiMesh& m = *p.mesh;
+        mLocal.assign(m.mNumVertices, std::numeric_limits<uint32_t>::max());
+        for (unsigned f = 0; f < m.mNumFaces; ++f) {
+            if (m.mFaces == nullptr) fail(mPath, "a mesh has faces without indices");
+            const aiFace& face = m.mFaces[f];
+            if (face.mNumIndices != 3) continue;  // points and lines
+            if (face.mIndices == nullptr) fail(mPath, "a face has no indices");
+            std::array<uint32_t, 3> tri{};
+            for (int c = 0; c < 3; ++c) {
+                const unsigned i = face.mIndices[c];
+                if (i >= m.mNumVertices)
+                    fail(mPath, "vertex index " + std::to_string(i) +
+                                    " out of range (the mesh has " +
+                                    std::to_string(m.mNumVertices) + " vertices)");
+                if (mLocal[i] == std::numeric_limits<uint32_t>::max())
+                    mLocal[i] = joinedVertex(m, p.transform, i);
+                tri[c] = mLocal[i];
+            }
+            if (p.transform.mirrors) std::swap(tri[1], tri[2]);
+            mOut.triangles.push_back(tri);
+        }
+    }
+
+    TriangleMesh take() { return std::move(mOut); }
+
+private:
+    /// The joined index of vertex i of m, placed by its node.
+    uint32_t joinedVertex(const aiMesh& m, const NodeTransform& transform, unsigned i) {
+        const aiVector3D& a = m.mVertices[i];
+        const Vec3 raw(a.x, a.y, a.z);
+        if (!finite(raw))
+            fail(mPath, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+        const Vec3 pos = Vec3(transform.worldFromMesh * glm::dvec4(raw, 1.0));
+        if (!finite(pos))
+            fail(mPath, "vertex " + std::to_string(i) + " is not finite once placed by its node");
+        VertexKey key{{pos.x, pos.y, pos.z, 0, 0, 0, 0, 0}};
+        Vec3 normal(0.0);
+        std::array<double, 2> uv{0.0, 0.0};
+        if (mKeepNormals) {
+            const aiVector3D& n = m.mNormals[i];
+            normal = transform.normalWorldFromMesh * Vec3(n.x, n.y, n.z);
+            const double len = glm::length(normal);
+            // A zero or broken normal is kept as zero: shading falls back to the face.
+            normal = (std::isfinite(len) && len > 0.0) ? normal / len : Vec3(0.0);
+            key.v[3] = normal.x, key.v[4] = normal.y, key.v[5] = normal.z;
+        }
+        if (mKeepUvs) {
+            const aiVector3D& t = m.mTextureCoords[0][i];
+            uv = {std::isfinite(t.x) ? t.x : 0.0, std::isfinite(t.y) ? t.y : 0.0};
+            key.v[6] = uv[0], key.v[7] = uv[1];
+        }
+        auto [it, inserted] =
+            mJoined.try_emplace(key, static_cast<uint32_t>(mOut.positions.size()));
+        if (inserted) {
+            if (mOut.positions.size() == std::numeric_limits<uint32_t>::max())
+                fail(mPath, "more than 2^32 - 1 vertices");
+            mOut.positions.push_back(pos);
+            if (mKeepNormals) mOut.normals.push_back(normal);
+            if (mKeepUvs) mOut.uvs.push_back(uv);
+        }
+        return it->second;
+    }
+
+    const std::string& mPath;
+    const bool mKeepNormals, mKeepUvs;
+    TriangleMesh mOut;
+    std::unordered_map<VertexKey, uint32_t, VertexKeyHash> mJoined;
+    std::vector<uint32_t> mLocal;  // the current mesh's vertex -> joined index
+};
+
+}  // namespace
+
+TriangleMesh loadMesh(const std::string& path) {
+    checkMeshFile(path);
+    Assimp::Importer importer;
+    const aiScene& scene = importScene(importer, path);
 
     std::vector<Placement> placements;
-    collect(*scene, *scene->mRootNode, glm::dmat4(1.0), placements, path, 0);
+    collect(scene, *scene.mRootNode, glm::dmat4(1.0), placements, path, 0);
 
     // STL normals are per facet, not smooth-shading normals: dropping them joins by position.
     const bool isStl = lowerExtension(path) == ".stl";
@@ -146,67 +235,9 @@ TriangleMesh loadMesh(const std::string& path) {
         keepUvs = keepUvs && p.mesh->mTextureCoords[0] != nullptr;
     }
 
-    TriangleMesh out;
-    out.source = path;
-    std::unordered_map<VertexKey, uint32_t, VertexKeyHash> joined;
-    std::vector<uint32_t> local;  // this mesh's vertex -> joined index
-    for (const Placement& p : placements) {
-        const aiMesh& m = *p.mesh;
-        local.assign(m.mNumVertices, std::numeric_limits<uint32_t>::max());
-        for (unsigned f = 0; f < m.mNumFaces; ++f) {
-            if (m.mFaces == nullptr) fail(path, "a mesh has faces without indices");
-            const aiFace& face = m.mFaces[f];
-            if (face.mNumIndices != 3) continue;  // points and lines
-            if (face.mIndices == nullptr) fail(path, "a face has no indices");
-            std::array<uint32_t, 3> tri{};
-            for (int c = 0; c < 3; ++c) {
-                const unsigned i = face.mIndices[c];
-                if (i >= m.mNumVertices)
-                    fail(path, "vertex index " + std::to_string(i) +
-                                   " out of range (the mesh has " + std::to_string(m.mNumVertices) +
-                                   " vertices)");
-                if (local[i] == std::numeric_limits<uint32_t>::max()) {
-                    const aiVector3D& a = m.mVertices[i];
-                    const Vec3 raw(a.x, a.y, a.z);
-                    if (!finite(raw))
-                        fail(path, "vertex " + std::to_string(i) + " has a non-finite coordinate");
-                    const Vec3 pos = Vec3(p.transform.worldFromMesh * glm::dvec4(raw, 1.0));
-                    if (!finite(pos))
-                        fail(path, "vertex " + std::to_string(i) +
-                                       " is not finite once placed by its node");
-                    VertexKey key{{pos.x, pos.y, pos.z, 0, 0, 0, 0, 0}};
-                    Vec3 normal(0.0);
-                    std::array<double, 2> uv{0.0, 0.0};
-                    if (keepNormals) {
-                        const aiVector3D& n = m.mNormals[i];
-                        normal = p.transform.normalWorldFromMesh * Vec3(n.x, n.y, n.z);
-                        const double len = glm::length(normal);
-                        // A zero or broken normal is kept as zero: shading falls back to the face.
-                        normal = (std::isfinite(len) && len > 0.0) ? normal / len : Vec3(0.0);
-                        key.v[3] = normal.x, key.v[4] = normal.y, key.v[5] = normal.z;
-                    }
-                    if (keepUvs) {
-                        const aiVector3D& t = m.mTextureCoords[0][i];
-                        uv = {std::isfinite(t.x) ? t.x : 0.0, std::isfinite(t.y) ? t.y : 0.0};
-                        key.v[6] = uv[0], key.v[7] = uv[1];
-                    }
-                    auto [it, inserted] =
-                        joined.try_emplace(key, static_cast<uint32_t>(out.positions.size()));
-                    if (inserted) {
-                        if (out.positions.size() == std::numeric_limits<uint32_t>::max())
-                            fail(path, "more than 2^32 - 1 vertices");
-                        out.positions.push_back(pos);
-                        if (keepNormals) out.normals.push_back(normal);
-                        if (keepUvs) out.uvs.push_back(uv);
-                    }
-                    local[i] = it->second;
-                }
-                tri[c] = local[i];
-            }
-            if (p.transform.mirrors) std::swap(tri[1], tri[2]);
-            out.triangles.push_back(tri);
-        }
-    }
+    MeshJoiner joiner(path, keepNormals, keepUvs);
+    for (const Placement& p : placements) joiner.add(p);
+    TriangleMesh out = joiner.take();
     if (out.triangles.empty()) fail(path, "no triangles");
     return out;
 }

@@ -48,6 +48,100 @@ PlaneRect padded(PlaneRect r, double tolerance) {
     return {r.minU - pad, r.minV - pad, r.maxU + pad, r.maxV + pad};
 }
 
+/// The section's loops as regions: each hole goes with the smallest outer loop holding it.
+struct Regions {
+    std::vector<double> area;                  ///< signed: outer loops positive, holes negative
+    std::vector<size_t> outers;                ///< the loops that begin a region
+    std::vector<std::vector<size_t>> holesOf;  ///< by outer loop
+};
+
+Regions groupRegions(const std::vector<SectionLoop>& loops) {
+    Regions r;
+    r.area.resize(loops.size());
+    for (size_t i = 0; i < loops.size(); ++i) {
+        r.area[i] = loopArea(loops[i]);
+        if (r.area[i] > 0.0) r.outers.push_back(i);
+    }
+    r.holesOf.resize(loops.size());
+    for (size_t i = 0; i < loops.size(); ++i) {
+        if (r.area[i] > 0.0) continue;
+        const auto& p = loops[i].points[0];
+        size_t best = SIZE_MAX;
+        for (const size_t o : r.outers)
+            if ((best == SIZE_MAX || r.area[o] < r.area[best]) && pointInLoop(loops[o], p[0], p[1]))
+                best = o;
+        if (best != SIZE_MAX)
+            r.holesOf[best].push_back(i);
+        else
+            r.outers.push_back(i);  // no outer around it (should not happen): keep it alone
+    }
+    return r;
+}
+
+/// The material just inside an outer loop: probed left of its longest segment, at growing
+/// distances until the point is inside the object (0 if none is).
+int32_t materialInside(const SectionLoop& outer, const Node& node, const SlicePlane& plane,
+                       double tolerance) {
+    const auto& pts = outer.points;
+    size_t longest = 0;
+    double len = -1.0;
+    for (size_t i = 0; i < pts.size(); ++i) {
+        const auto& a = pts[i];
+        const auto& b = pts[(i + 1) % pts.size()];
+        const double l = std::hypot(b[0] - a[0], b[1] - a[1]);
+        if (l > len) {
+            len = l;
+            longest = i;
+        }
+    }
+    const auto& a = pts[longest];
+    const auto& b = pts[(longest + 1) % pts.size()];
+    const double nu = -(b[1] - a[1]) / len, nv = (b[0] - a[0]) / len;
+    for (double d = 4.0 * tolerance; d < 0.5 * len + 8.0 * tolerance; d *= 4.0) {
+        const Vec3 p = plane.at(0.5 * (a[0] + b[0]) + d * nu, 0.5 * (a[1] + b[1]) + d * nv);
+        if (node.value(p) <= 0.0) return materialAt(node, p);
+    }
+    return 0;
+}
+
+/// The drawing's layer of a material, added (named and coloured after it) on first use.
+SectionLayer& layerFor(int32_t material, const Scene& scene, std::map<int32_t, size_t>& layerOf,
+                       SectionDrawing& drawing) {
+    auto [it, added] = layerOf.emplace(material, drawing.layers.size());
+    if (added) {
+        SectionLayer layer;
+        const bool known = material >= 0 && size_t(material) < scene.materials.size();
+        layer.name = known ? scene.materials[material].name : "material" + std::to_string(material);
+        if (known) {
+            const Vec3 c = scene.materials[material].color;
+            layer.color = {c.x, c.y, c.z};
+        }
+        drawing.layers.push_back(std::move(layer));
+    }
+    return drawing.layers[it->second];
+}
+
+/// Moves region `o` (its outer loop and holes) into `layer` and counts it.
+void addRegion(std::vector<SectionLoop>& loops, const Regions& regions, size_t o,
+               SectionLayer& layer, SliceStats& stats) {
+    RegionStats region;
+    region.material = layer.name;
+    region.area = regions.area[o];
+    region.perimeter = loopLength(loops[o]);
+    layer.loops.push_back(std::move(loops[o]));
+    for (const size_t h : regions.holesOf[o]) {
+        region.area += regions.area[h];
+        region.perimeter += loopLength(loops[h]);
+        ++region.holes;
+        layer.loops.push_back(std::move(loops[h]));
+    }
+    stats.area += region.area;
+    stats.perimeter += region.perimeter;
+    stats.contours += 1 + region.holes;
+    stats.holes += region.holes;
+    stats.regions.push_back(std::move(region));
+}
+
 }  // namespace
 
 SceneSlicer::SceneSlicer(const Scene& scene, const SlicePlane& family, const SliceOptions& options)
@@ -122,80 +216,11 @@ SliceResult SceneSlicer::slice(double w) const {
         stats.contourSeconds += secondsSince(t0);
         t0 = std::chrono::steady_clock::now();
 
-        // Regions: each hole goes with the smallest outer loop holding it.
-        std::vector<double> area(loops.size());
-        std::vector<size_t> outers;
-        for (size_t i = 0; i < loops.size(); ++i) {
-            area[i] = loopArea(loops[i]);
-            if (area[i] > 0.0) outers.push_back(i);
-        }
-        std::vector<std::vector<size_t>> holesOf(loops.size());
-        for (size_t i = 0; i < loops.size(); ++i) {
-            if (area[i] > 0.0) continue;
-            const auto& p = loops[i].points[0];
-            size_t best = SIZE_MAX;
-            for (const size_t o : outers)
-                if ((best == SIZE_MAX || area[o] < area[best]) && pointInLoop(loops[o], p[0], p[1]))
-                    best = o;
-            if (best != SIZE_MAX)
-                holesOf[best].push_back(i);
-            else
-                outers.push_back(i);  // no outer around it (should not happen): keep it alone
-        }
-        for (const size_t o : outers) {
-            // A point just inside the outer loop: left of its longest segment.
-            const auto& pts = loops[o].points;
-            size_t longest = 0;
-            double len = -1.0;
-            for (size_t i = 0; i < pts.size(); ++i) {
-                const auto& a = pts[i];
-                const auto& b = pts[(i + 1) % pts.size()];
-                const double l = std::hypot(b[0] - a[0], b[1] - a[1]);
-                if (l > len) {
-                    len = l;
-                    longest = i;
-                }
-            }
-            const auto& a = pts[longest];
-            const auto& b = pts[(longest + 1) % pts.size()];
-            const double nu = -(b[1] - a[1]) / len, nv = (b[0] - a[0]) / len;
-            int32_t material = 0;
-            for (double d = 4.0 * mTolerance; d < 0.5 * len + 8.0 * mTolerance; d *= 4.0) {
-                const Vec3 p = plane.at(0.5 * (a[0] + b[0]) + d * nu, 0.5 * (a[1] + b[1]) + d * nv);
-                if (object.node->value(p) <= 0.0) {
-                    material = materialAt(*object.node, p);
-                    break;
-                }
-            }
-            auto [it, added] = layerOf.emplace(material, result.drawing.layers.size());
-            if (added) {
-                SectionLayer layer;
-                const bool known = material >= 0 && size_t(material) < mScene.materials.size();
-                layer.name =
-                    known ? mScene.materials[material].name : "material" + std::to_string(material);
-                if (known) {
-                    const Vec3 c = mScene.materials[material].color;
-                    layer.color = {c.x, c.y, c.z};
-                }
-                result.drawing.layers.push_back(std::move(layer));
-            }
-            SectionLayer& layer = result.drawing.layers[it->second];
-            RegionStats region;
-            region.material = layer.name;
-            region.area = area[o];
-            region.perimeter = loopLength(loops[o]);
-            layer.loops.push_back(std::move(loops[o]));
-            for (const size_t h : holesOf[o]) {
-                region.area += area[h];
-                region.perimeter += loopLength(loops[h]);
-                ++region.holes;
-                layer.loops.push_back(std::move(loops[h]));
-            }
-            stats.area += region.area;
-            stats.perimeter += region.perimeter;
-            stats.contours += 1 + region.holes;
-            stats.holes += region.holes;
-            stats.regions.push_back(std::move(region));
+        const Regions regions = groupRegions(loops);
+        for (const size_t o : regions.outers) {
+            const int32_t material = materialInside(loops[o], *object.node, plane, mTolerance);
+            addRegion(loops, regions, o, layerFor(material, mScene, layerOf, result.drawing),
+                      stats);
         }
         stats.regionSeconds += secondsSince(t0);
     }

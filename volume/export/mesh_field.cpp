@@ -45,6 +45,117 @@ std::string voxelText(double v) {
     return buf;
 }
 
+/// Classifies a region by its tape's interval over the region's box; a region split in
+/// eight carries the tape its children use.
+Outcome classifyRegion(const MeshLattice& lattice, const Region& r) {
+    Interval box[3];
+    regionBox(lattice, r.block, r.size, 0, box);
+    Outcome o;
+    const Interval v = r.tape->evalInterval(box[0], box[1], box[2], o.choices);
+    switch (v.classify()) {
+        case Classification::Empty: o.kind = Outcome::Empty; break;
+        case Classification::Filled: o.kind = Outcome::Full; break;
+        default:
+            if (r.size == 1) {
+                o.kind = Outcome::Boundary;
+            } else {
+                o.kind = Outcome::Split;
+                // A new tape only where a min or max was decided: otherwise the
+                // children share the parent's, and memory does not grow per region.
+                const bool decided = std::any_of(o.choices.begin(), o.choices.end(),
+                                                 [](Choice c) { return c != Choice::Both; });
+                o.childTape = decided ? r.tape->simplified(o.choices) : r.tape;
+            }
+    }
+    o.choices.clear();
+    o.choices.shrink_to_fit();
+    return o;
+}
+
+/// Lists the children of a split region that lie within the lattice's `blocks`.
+void splitRegion(const Region& r, const Outcome& o, const std::array<int32_t, 3>& blocks,
+                 std::vector<Region>& next) {
+    const int32_t half = r.size / 2;
+    for (int c = 0; c < 8; ++c) {
+        const std::array<int32_t, 3> b{r.block[0] + (c & 1 ? half : 0),
+                                       r.block[1] + (c & 2 ? half : 0),
+                                       r.block[2] + (c & 4 ? half : 0)};
+        // Regions past the lattice hold no solid: it lies within the bounds.
+        if (b[0] >= blocks[0] || b[1] >= blocks[1] || b[2] >= blocks[2]) continue;
+        next.push_back({b, half, o.childTape});
+    }
+}
+
+/// Classifies the lattice's blocks coarse to fine: full regions go to field.full, and the
+/// boundary blocks are returned (in level order).
+std::vector<std::array<int32_t, 3>> classifyBlocks(SampledField& field,
+                                                   const std::shared_ptr<const Tape>& tape) {
+    const MeshLattice& lattice = field.lattice;
+    std::array<int32_t, 3> blocks{};
+    int32_t side = 1;
+    for (int a = 0; a < 3; ++a) {
+        blocks[a] = int32_t((lattice.points[a] + kMeshBlock - 1) / kMeshBlock);
+        while (side < blocks[a]) side *= 2;
+    }
+    std::vector<Region> level{{{0, 0, 0}, side, tape}};
+    std::vector<std::array<int32_t, 3>> boundary;
+    // The split regions of a level may not hold more than 8× the cap's blocks, so a voxel
+    // far too fine stops early instead of listing billions of regions.
+    const uint64_t capBlocks = kMeshMaxVoxels / (kMeshBlock * kMeshBlock * kMeshBlock);
+    while (!level.empty()) {
+        std::vector<Outcome> out(level.size());
+        tbb::parallel_for(size_t(0), level.size(),
+                          [&](size_t i) { out[i] = classifyRegion(lattice, level[i]); });
+        field.intervalEvaluations += level.size();
+        std::vector<Region> next;
+        for (size_t i = 0; i < level.size(); ++i) {
+            const Region& r = level[i];
+            const Outcome& o = out[i];
+            if (o.kind == Outcome::Full) field.full.push_back({r.block, r.size});
+            if (o.kind == Outcome::Boundary) boundary.push_back(r.block);
+            if (o.kind == Outcome::Split) splitRegion(r, o, blocks, next);
+        }
+        if (next.size() > 8 * capBlocks || boundary.size() > capBlocks)
+            throw MeshInputError("--voxel " + voxelText(lattice.voxel) +
+                                 " is too fine for this model: more than " +
+                                 std::to_string(kMeshMaxVoxels) +
+                                 " voxels near its surface (the limit); use a larger --voxel");
+        level = std::move(next);
+    }
+    return boundary;
+}
+
+/// Samples a boundary block with the whole tape simplified over the block widened by
+/// kMeshTapeMargin voxels: the same tape serves vertex placement near the block later.
+void sampleBoundaryBlock(const MeshLattice& lattice, const Tape& tape, BoundaryBlock& bb) {
+    Interval box[3];
+    regionBox(lattice, bb.block, 1, kMeshTapeMargin, box);
+    std::vector<Choice> choices;
+    tape.evalInterval(box[0], box[1], box[2], choices);
+    bb.tape = tape.simplified(choices);
+    bb.values.resize(kMeshBlock * kMeshBlock * kMeshBlock);
+    const int64_t i0 = int64_t(bb.block[0]) * kMeshBlock;
+    const int64_t j0 = int64_t(bb.block[1]) * kMeshBlock;
+    const int64_t k0 = int64_t(bb.block[2]) * kMeshBlock;
+    for (int x = 0; x < kMeshBlock; ++x)
+        for (int y = 0; y < kMeshBlock; ++y)
+            for (int z = 0; z < kMeshBlock; ++z) {
+                Vec3 g;
+                const double f = bb.tape->evalGradient(lattice.at(i0 + x, j0 + y, k0 + z), g);
+                const double len = glm::length(g);
+                // First-order distance in voxels; where the gradient is useless, the band.
+                double d = f / (len * lattice.voxel);
+                if (!std::isfinite(d)) d = f <= 0.0 ? -kMeshBand : kMeshBand;
+                d = std::clamp(d, -double(kMeshBand), double(kMeshBand));
+                // kerf's inside is f ≤ 0, OpenVDB's is value < isovalue (0): a point on
+                // the surface is inside for both.
+                float v = float(d);
+                if (f <= 0.0 && !(v < 0.0f)) v = -1e-6f;
+                if (!(f <= 0.0) && !(v > 0.0f)) v = 1e-6f;  // f > 0 or NaN: outside
+                bb.values[size_t(valueIndex(x, y, z))] = v;
+            }
+}
+
 }  // namespace
 
 MeshLattice meshLattice(const Bounds3& bounds, double voxel) {
@@ -70,103 +181,13 @@ SampledField sampleField(const MeshLattice& lattice, std::shared_ptr<const Tape>
     SampledField field;
     field.lattice = lattice;
     field.tape = tape;
-    std::array<int32_t, 3> blocks{};
-    int32_t side = 1;
-    for (int a = 0; a < 3; ++a) {
-        blocks[a] = int32_t((lattice.points[a] + kMeshBlock - 1) / kMeshBlock);
-        while (side < blocks[a]) side *= 2;
-    }
-    std::vector<Region> level{{{0, 0, 0}, side, tape}};
-    std::vector<std::array<int32_t, 3>> boundary;
-    // The split regions of a level may not hold more than 8× the cap's blocks, so a voxel
-    // far too fine stops early instead of listing billions of regions.
-    const uint64_t capBlocks = kMeshMaxVoxels / (kMeshBlock * kMeshBlock * kMeshBlock);
-    while (!level.empty()) {
-        std::vector<Outcome> out(level.size());
-        tbb::parallel_for(size_t(0), level.size(), [&](size_t i) {
-            const Region& r = level[i];
-            Interval box[3];
-            regionBox(lattice, r.block, r.size, 0, box);
-            Outcome& o = out[i];
-            const Interval v = r.tape->evalInterval(box[0], box[1], box[2], o.choices);
-            switch (v.classify()) {
-                case Classification::Empty: o.kind = Outcome::Empty; break;
-                case Classification::Filled: o.kind = Outcome::Full; break;
-                default:
-                    if (r.size == 1) {
-                        o.kind = Outcome::Boundary;
-                    } else {
-                        o.kind = Outcome::Split;
-                        // A new tape only where a min or max was decided: otherwise the
-                        // children share the parent's, and memory does not grow per region.
-                        const bool decided =
-                            std::any_of(o.choices.begin(), o.choices.end(),
-                                        [](Choice c) { return c != Choice::Both; });
-                        o.childTape = decided ? r.tape->simplified(o.choices) : r.tape;
-                    }
-            }
-            o.choices.clear();
-            o.choices.shrink_to_fit();
-        });
-        field.intervalEvaluations += level.size();
-        std::vector<Region> next;
-        for (size_t i = 0; i < level.size(); ++i) {
-            const Region& r = level[i];
-            const Outcome& o = out[i];
-            if (o.kind == Outcome::Full) field.full.push_back({r.block, r.size});
-            if (o.kind == Outcome::Boundary) boundary.push_back(r.block);
-            if (o.kind != Outcome::Split) continue;
-            const int32_t half = r.size / 2;
-            for (int c = 0; c < 8; ++c) {
-                const std::array<int32_t, 3> b{r.block[0] + (c & 1 ? half : 0),
-                                               r.block[1] + (c & 2 ? half : 0),
-                                               r.block[2] + (c & 4 ? half : 0)};
-                // Regions past the lattice hold no solid: it lies within the bounds.
-                if (b[0] >= blocks[0] || b[1] >= blocks[1] || b[2] >= blocks[2]) continue;
-                next.push_back({b, half, o.childTape});
-            }
-        }
-        if (next.size() > 8 * capBlocks || boundary.size() > capBlocks)
-            throw MeshInputError("--voxel " + voxelText(lattice.voxel) +
-                                 " is too fine for this model: more than " +
-                                 std::to_string(kMeshMaxVoxels) +
-                                 " voxels near its surface (the limit); use a larger --voxel");
-        level = std::move(next);
-    }
+    std::vector<std::array<int32_t, 3>> boundary = classifyBlocks(field, tape);
     std::sort(boundary.begin(), boundary.end());
-
-    // Sample each boundary block with the whole tape simplified over the block widened by
-    // kMeshTapeMargin voxels: the same tape serves vertex placement near the block later.
     field.boundary.resize(boundary.size());
     tbb::parallel_for(size_t(0), boundary.size(), [&](size_t i) {
         BoundaryBlock& bb = field.boundary[i];
         bb.block = boundary[i];
-        Interval box[3];
-        regionBox(lattice, bb.block, 1, kMeshTapeMargin, box);
-        std::vector<Choice> choices;
-        tape->evalInterval(box[0], box[1], box[2], choices);
-        bb.tape = tape->simplified(choices);
-        bb.values.resize(kMeshBlock * kMeshBlock * kMeshBlock);
-        const int64_t i0 = int64_t(bb.block[0]) * kMeshBlock;
-        const int64_t j0 = int64_t(bb.block[1]) * kMeshBlock;
-        const int64_t k0 = int64_t(bb.block[2]) * kMeshBlock;
-        for (int x = 0; x < kMeshBlock; ++x)
-            for (int y = 0; y < kMeshBlock; ++y)
-                for (int z = 0; z < kMeshBlock; ++z) {
-                    Vec3 g;
-                    const double f = bb.tape->evalGradient(lattice.at(i0 + x, j0 + y, k0 + z), g);
-                    const double len = glm::length(g);
-                    // First-order distance in voxels; where the gradient is useless, the band.
-                    double d = f / (len * lattice.voxel);
-                    if (!std::isfinite(d)) d = f <= 0.0 ? -kMeshBand : kMeshBand;
-                    d = std::clamp(d, -double(kMeshBand), double(kMeshBand));
-                    // kerf's inside is f ≤ 0, OpenVDB's is value < isovalue (0): a point on
-                    // the surface is inside for both.
-                    float v = float(d);
-                    if (f <= 0.0 && !(v < 0.0f)) v = -1e-6f;
-                    if (!(f <= 0.0) && !(v > 0.0f)) v = 1e-6f;  // f > 0 or NaN: outside
-                    bb.values[size_t(valueIndex(x, y, z))] = v;
-                }
+        sampleBoundaryBlock(lattice, *tape, bb);
     });
     field.intervalEvaluations += boundary.size();
     return field;

@@ -44,8 +44,9 @@ constexpr double kMaxIndex = double(int64_t(1) << 30);
 
 std::string objectGridName(size_t index) { return "object_" + std::to_string(index); }
 
-VoxelizeStats voxelizeToFile(const std::vector<NodePtr>& objects, const VoxelizeOptions& options,
-                             const std::string& path) {
+namespace {
+
+void checkOptions(const VoxelizeOptions& options) {
     const double h = options.voxel;
     if (!std::isfinite(h) || !(h > 0.0))
         throw VoxelizeInputError("--voxel must be a finite number greater than 0, not " +
@@ -59,7 +60,12 @@ VoxelizeStats voxelizeToFile(const std::vector<NodePtr>& objects, const Voxelize
         throw VoxelizeInputError("--band must be a number of voxels from " +
                                  number(kVoxelizeMinBand) + " to " + number(kVoxelizeMaxBand) +
                                  ", not " + number(options.band));
-    VoxelizeStats stats;
+}
+
+/// The objects to voxelize, each with its tape; the others are listed in stats.skipped.
+std::vector<Planned> planObjects(const std::vector<NodePtr>& objects,
+                                 const VoxelizeOptions& options, VoxelizeStats& stats) {
+    const double h = options.voxel;
     std::vector<Planned> plan;
     for (size_t i = 0; i < objects.size(); ++i) {
         const Node& object = *objects[i];
@@ -96,8 +102,12 @@ VoxelizeStats voxelizeToFile(const std::vector<NodePtr>& objects, const Voxelize
         throw VoxelizeInputError(
             "the model has no solid object to voxelize (open surfaces and "
             "unbounded objects are left out)");
+    return plan;
+}
 
-    // Every object's estimate before any grid is made, so a refusal costs little.
+/// Every object's estimate before any grid is made, so a refusal costs little.
+void estimateAll(std::vector<Planned>& plan, const VoxelizeOptions& options) {
+    const double h = options.voxel;
     double estimated = 0.0, area = 0.0;
     for (Planned& p : plan) {
         if (p.bounds.empty()) continue;
@@ -111,42 +121,56 @@ VoxelizeStats voxelizeToFile(const std::vector<NodePtr>& objects, const Voxelize
             " (a surface of about " + number(area * h * h) + " square units, " + number(area) +
             " voxel faces, times 2 x --band " + number(options.band) + "), more than the limit " +
             std::to_string(options.maxVoxels) + ": use a larger --voxel or raise --max-voxels");
+}
 
-    LevelSetFile file;
-    for (const Planned& p : plan) {
-        const auto t0 = std::chrono::steady_clock::now();
-        VoxelizedGrid grid;
-        grid.object = p.object;
-        grid.name = objectGridName(p.object);
-        grid.estimatedVoxels = uint64_t(p.estimate.voxels);
-        grid.cellsClassified = p.estimate.cells;
-        TriangleMesh mesh;
-        if (!p.bounds.empty()) {
-            grid.denseVoxels = 1.0;
-            for (int a = 0; a < 3; ++a)
-                grid.denseVoxels *= std::max(1.0, std::ceil((p.bounds.hi[a] - p.bounds.lo[a]) / h));
-            MeshExportOptions meshOptions;
-            meshOptions.voxel = h;
-            MeshExportStats meshStats;
-            const auto tMesh = std::chrono::steady_clock::now();
-            try {
-                mesh = exportMesh({objects[p.object]}, meshOptions, meshStats);
-            } catch (const MeshInputError& e) {
-                throw VoxelizeInputError(grid.name + ": " + e.what());
-            }
-            grid.secondsMesh = secondsSince(tMesh);
-            grid.cellsClassified += meshStats.intervalEvaluations;
-            grid.boundaryBlocks = meshStats.boundaryBlocks;
-            grid.triangles = mesh.triangles.size();
+/// One object's surface mesh and level set, added to `file`.
+VoxelizedGrid voxelizeObject(const Planned& p, const std::vector<NodePtr>& objects,
+                             const VoxelizeOptions& options, LevelSetFile& file) {
+    const double h = options.voxel;
+    const auto t0 = std::chrono::steady_clock::now();
+    VoxelizedGrid grid;
+    grid.object = p.object;
+    grid.name = objectGridName(p.object);
+    grid.estimatedVoxels = uint64_t(p.estimate.voxels);
+    grid.cellsClassified = p.estimate.cells;
+    TriangleMesh mesh;
+    if (!p.bounds.empty()) {
+        grid.denseVoxels = 1.0;
+        for (int a = 0; a < 3; ++a)
+            grid.denseVoxels *= std::max(1.0, std::ceil((p.bounds.hi[a] - p.bounds.lo[a]) / h));
+        MeshExportOptions meshOptions;
+        meshOptions.voxel = h;
+        MeshExportStats meshStats;
+        const auto tMesh = std::chrono::steady_clock::now();
+        try {
+            mesh = exportMesh({objects[p.object]}, meshOptions, meshStats);
+        } catch (const MeshInputError& e) {
+            throw VoxelizeInputError(grid.name + ": " + e.what());
         }
-        const auto tBand = std::chrono::steady_clock::now();
-        const LevelSetFile::Added added = file.add(grid.name, mesh, h, options.band, *p.tape);
-        grid.activeVoxels = added.activeVoxels;
-        grid.distanceQueries = added.distanceQueries;
-        grid.secondsBand = secondsSince(tBand);
-        grid.seconds = secondsSince(t0);
-        stats.grids.push_back(std::move(grid));
+        grid.secondsMesh = secondsSince(tMesh);
+        grid.cellsClassified += meshStats.intervalEvaluations;
+        grid.boundaryBlocks = meshStats.boundaryBlocks;
+        grid.triangles = mesh.triangles.size();
     }
+    const auto tBand = std::chrono::steady_clock::now();
+    const LevelSetFile::Added added = file.add(grid.name, mesh, h, options.band, *p.tape);
+    grid.activeVoxels = added.activeVoxels;
+    grid.distanceQueries = added.distanceQueries;
+    grid.secondsBand = secondsSince(tBand);
+    grid.seconds = secondsSince(t0);
+    return grid;
+}
+
+}  // namespace
+
+VoxelizeStats voxelizeToFile(const std::vector<NodePtr>& objects, const VoxelizeOptions& options,
+                             const std::string& path) {
+    checkOptions(options);
+    VoxelizeStats stats;
+    std::vector<Planned> plan = planObjects(objects, options, stats);
+    estimateAll(plan, options);
+    LevelSetFile file;
+    for (const Planned& p : plan) stats.grids.push_back(voxelizeObject(p, objects, options, file));
 
     const auto t0 = std::chrono::steady_clock::now();
     const std::string bytes = file.bytes();

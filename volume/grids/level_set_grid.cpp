@@ -29,6 +29,37 @@ int floorToInt(double x, int lo, int hi) {
     return static_cast<int>(std::floor(x));
 }
 
+/// The largest difference of neighbouring samples of a brick: it bounds the interpolant's
+/// partial derivatives.
+double neighbourDifference(const float* s) {
+    double most = 0.0;
+    for (int k = 0; k < kSide; ++k)
+        for (int j = 0; j < kSide; ++j)
+            for (int i = 0; i < kSide; ++i) {
+                const float c = s[(k * kSide + j) * kSide + i];
+                if (i + 1 < kSide)
+                    most =
+                        std::max(most, std::fabs(double(s[(k * kSide + j) * kSide + i + 1]) - c));
+                if (j + 1 < kSide)
+                    most =
+                        std::max(most, std::fabs(double(s[(k * kSide + j + 1) * kSide + i]) - c));
+                if (k + 1 < kSide)
+                    most =
+                        std::max(most, std::fabs(double(s[((k + 1) * kSide + j) * kSide + i]) - c));
+            }
+    return most;
+}
+
+/// The bounds of a brick's samples ≤ 0, in sample units from its corner.
+Bounds3 insideSamples(const float* brick) {
+    Bounds3 samples;
+    for (int k = 0; k < kSide; ++k)
+        for (int j = 0; j < kSide; ++j)
+            for (int i = 0; i < kSide; ++i)
+                if (brick[(k * kSide + j) * kSide + i] <= 0.f) samples.extend(Vec3(i, j, k));
+    return samples;
+}
+
 }  // namespace
 
 LevelSetGrid::LevelSetGrid(const Source& source, LevelSetInfo info) : mInfo(std::move(info)) {
@@ -54,92 +85,65 @@ LevelSetGrid::LevelSetGrid(const Source& source, LevelSetInfo info) : mInfo(std:
                 for (int z = 0; z < kGroup; ++z)
                     for (int y = 0; y < kGroup; ++y)
                         for (int x = 0; x < kGroup; ++x, ++bi) {
-                            const int bx = gx * kGroup + x, by = gy * kGroup + y,
-                                      bz = gz * kGroup + z;
-                            Block& b = blocks[bi];
-                            b.brick = -1;
-                            float v = mBackground;
-                            if (bx >= mBlocks[0] || by >= mBlocks[1] || bz >= mBlocks[2] ||
-                                source.isConstant(bx, by, bz, v)) {
-                                b.lo = b.hi = v;
-                            } else {
-                                source.fillBrick(bx, by, bz, brick.data());
-                                const auto [mn, mx] =
-                                    std::minmax_element(brick.begin(), brick.end());
-                                b.lo = *mn;
-                                b.hi = *mx;
-                                b.brick = static_cast<int32_t>(mBrickCount++);
-                                mBricks.insert(mBricks.end(), brick.begin(), brick.end());
-                                anyBrick = true;
-                                // Neighbouring samples bound the interpolant's partial derivatives.
-                                const float* s = brick.data();
-                                for (int k = 0; k < kSide; ++k)
-                                    for (int j = 0; j < kSide; ++j)
-                                        for (int i = 0; i < kSide; ++i) {
-                                            const float c = s[(k * kSide + j) * kSide + i];
-                                            if (i + 1 < kSide)
-                                                mLipschitz = std::max(
-                                                    mLipschitz,
-                                                    std::fabs(
-                                                        double(s[(k * kSide + j) * kSide + i + 1]) -
-                                                        c));
-                                            if (j + 1 < kSide)
-                                                mLipschitz = std::max(
-                                                    mLipschitz,
-                                                    std::fabs(
-                                                        double(s[(k * kSide + j + 1) * kSide + i]) -
-                                                        c));
-                                            if (k + 1 < kSide)
-                                                mLipschitz = std::max(
-                                                    mLipschitz,
-                                                    std::fabs(
-                                                        double(
-                                                            s[((k + 1) * kSide + j) * kSide + i]) -
-                                                        c));
-                                        }
-                            }
+                            const Block& b = blocks[bi] = buildBlock(
+                                source, gx * kGroup + x, gy * kGroup + y, gz * kGroup + z, brick);
+                            anyBrick = anyBrick || b.brick >= 0;
                             g.lo = std::min(g.lo, b.lo);
                             g.hi = std::max(g.hi, b.hi);
-                            if (b.lo <= 0.f) {
-                                // f ≤ 0 only in cells with a corner ≤ 0: within a cell of those
-                                // samples.
-                                const Vec3 origin(mLo[0] + bx * kBlock, mLo[1] + by * kBlock,
-                                                  mLo[2] + bz * kBlock);
-                                Bounds3 samples;
-                                if (b.brick < 0) {
-                                    samples = Bounds3{Vec3(0.0), Vec3(kBlock)};
-                                } else {
-                                    for (int k = 0; k < kSide; ++k)
-                                        for (int j = 0; j < kSide; ++j)
-                                            for (int i = 0; i < kSide; ++i)
-                                                if (brick[(k * kSide + j) * kSide + i] <= 0.f)
-                                                    samples.extend(Vec3(i, j, k));
-                                }
-                                mInsideBounds.extend(Bounds3{origin + samples.lo - Vec3(1.0),
-                                                             origin + samples.hi + Vec3(1.0)});
-                            }
                         }
                 // A group of one constant stores no blocks.
                 if (anyBrick || g.lo != g.hi) {
-                    g.firstBlock = static_cast<int32_t>(mBlockList.size());
-                    mBlockList.insert(mBlockList.end(), blocks.begin(), blocks.end());
-                    constexpr int n = kGroup / kTile;
-                    for (int tz = 0; tz < n; ++tz)
-                        for (int ty = 0; ty < n; ++ty)
-                            for (int tx = 0; tx < n; ++tx) {
-                                std::pair<float, float> t(g.hi, g.lo);
-                                for (int z = tz * kTile; z < (tz + 1) * kTile; ++z)
-                                    for (int y = ty * kTile; y < (ty + 1) * kTile; ++y)
-                                        for (int x = tx * kTile; x < (tx + 1) * kTile; ++x) {
-                                            const Block& b = blocks[(z * kGroup + y) * kGroup + x];
-                                            t.first = std::min(t.first, b.lo);
-                                            t.second = std::max(t.second, b.hi);
-                                        }
-                                mTiles.push_back(t);
-                            }
+                    storeGroupBlocks(blocks, g);
                 } else {
                     g.firstBlock = -1;
                 }
+            }
+}
+
+LevelSetGrid::Block LevelSetGrid::buildBlock(const Source& source, int bx, int by, int bz,
+                                             std::vector<float>& brick) {
+    Block b;
+    b.brick = -1;
+    float v = mBackground;
+    if (bx >= mBlocks[0] || by >= mBlocks[1] || bz >= mBlocks[2] ||
+        source.isConstant(bx, by, bz, v)) {
+        b.lo = b.hi = v;
+    } else {
+        source.fillBrick(bx, by, bz, brick.data());
+        const auto [mn, mx] = std::minmax_element(brick.begin(), brick.end());
+        b.lo = *mn;
+        b.hi = *mx;
+        b.brick = static_cast<int32_t>(mBrickCount++);
+        mBricks.insert(mBricks.end(), brick.begin(), brick.end());
+        mLipschitz = std::max(mLipschitz, neighbourDifference(brick.data()));
+    }
+    if (b.lo <= 0.f) {
+        // f ≤ 0 only in cells with a corner ≤ 0: within a cell of those samples.
+        const Vec3 origin(mLo[0] + bx * kBlock, mLo[1] + by * kBlock, mLo[2] + bz * kBlock);
+        const Bounds3 samples =
+            b.brick < 0 ? Bounds3{Vec3(0.0), Vec3(kBlock)} : insideSamples(brick.data());
+        mInsideBounds.extend(
+            Bounds3{origin + samples.lo - Vec3(1.0), origin + samples.hi + Vec3(1.0)});
+    }
+    return b;
+}
+
+void LevelSetGrid::storeGroupBlocks(const std::vector<Block>& blocks, Group& g) {
+    g.firstBlock = static_cast<int32_t>(mBlockList.size());
+    mBlockList.insert(mBlockList.end(), blocks.begin(), blocks.end());
+    constexpr int n = kGroup / kTile;
+    for (int tz = 0; tz < n; ++tz)
+        for (int ty = 0; ty < n; ++ty)
+            for (int tx = 0; tx < n; ++tx) {
+                std::pair<float, float> t(g.hi, g.lo);
+                for (int z = tz * kTile; z < (tz + 1) * kTile; ++z)
+                    for (int y = ty * kTile; y < (ty + 1) * kTile; ++y)
+                        for (int x = tx * kTile; x < (tx + 1) * kTile; ++x) {
+                            const Block& b = blocks[(z * kGroup + y) * kGroup + x];
+                            t.first = std::min(t.first, b.lo);
+                            t.second = std::max(t.second, b.hi);
+                        }
+                mTiles.push_back(t);
             }
 }
 

@@ -104,6 +104,11 @@ private:
     const Block* blockAt(int bx, int by, int bz) const;
     /// The sample range over grid-relative cells [lo, hi] (inclusive, clamped to the grid).
     void sampleRange(const int lo[3], const int hi[3], float& mn, float& mx) const;
+    /// The constructor's steps: block (bx, by, bz), constant or a brick stored in mBricks
+    /// (`brick` is scratch), with mLipschitz and mInsideBounds widened to hold it; and a
+    /// group's blocks stored, with the ranges of their tiles.
+    Block buildBlock(const Source& source, int bx, int by, int bz, std::vector<float>& brick);
+    void storeGroupBlocks(const std::vector<Block>& blocks, Group& g);
 
     LevelSetInfo mInfo;
     int32_t mLo[3];      ///< index of sample (0, 0, 0)

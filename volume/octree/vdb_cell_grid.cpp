@@ -42,6 +42,123 @@ struct Brick {
     std::unique_ptr<BrickContent> content;  ///< made when a ray first reaches the brick
 };
 
+/// One ray's walk through the grid: where it crosses the cells' and blocks' planes, and its
+/// steps through a brick's cells or across a block without surface. The steps return true
+/// when the walk is over (tmax reached, the cube left, or the visitor stopped it).
+class CellWalk {
+public:
+    CellWalk(const GridFrame& frame, const Ray& ray, double tmax, SegmentVisitor visit,
+             void* context)
+        : mFrame(frame), mRay(ray), mTmax(tmax), mVisit(visit), mContext(context) {
+        // Plane crossings by one multiplication (one rounding more than a division, well
+        // inside the caller's slack); a reciprocal that overflows (subnormal direction)
+        // divides instead.
+        for (int a = 0; a < 3; ++a) {
+            mInv[a] = 1.0 / ray.dir[a];
+            mDivide[a] = !std::isfinite(mInv[a]);
+        }
+    }
+
+    /// The cell holding `p` (clamped: an entry point lies on the cube within rounding).
+    openvdb::Coord cellAt(const Vec3& p) const {
+        openvdb::Coord ijk;
+        for (int a = 0; a < 3; ++a) {
+            const double c = std::floor((p[a] - mFrame.origin[a]) / mFrame.h);
+            ijk[a] = int32_t(std::clamp(c, 0.0, double(mFrame.n - 1)));
+        }
+        return ijk;
+    }
+
+    /// A brick the surface may cross: its cells one by one, from its own table, until the
+    /// ray leaves it. A step to a neighbouring cell changes one coordinate only.
+    bool throughBrick(const BrickContent& b, openvdb::Coord& ijk, double& t, int64_t& step,
+                      int64_t limit, uint64_t& steps) const {
+        const openvdb::Coord brick(ijk[0] & ~7, ijk[1] & ~7, ijk[2] & ~7);
+        // Each cell's exit planes, computed from the planes themselves; a step changes
+        // one coordinate, so only that axis's exit is computed anew.
+        double exits[3];
+        for (int a = 0; a < 3; ++a) exits[a] = planeExit(a, ijk[a], 1);
+        while (step++ < limit) {
+            ++steps;
+            const Node* node = b.nodeAt(BrickContent::index(ijk[0] & 7, ijk[1] & 7, ijk[2] & 7));
+            double tExit = mTmax;
+            int axis = -1;
+            for (int a = 0; a < 3; ++a)
+                if (exits[a] < tExit) tExit = exits[a], axis = a;
+            tExit = std::max(tExit, t);
+            if (!mVisit(mContext, {t, tExit, node})) return true;
+            if (axis < 0) return true;  // tmax reached inside this cell
+            t = tExit;
+            ijk[axis] += mRay.dir[axis] > 0.0 ? 1 : -1;
+            if (ijk[axis] < 0 || ijk[axis] >= mFrame.n) return true;  // left the cube
+            if ((ijk[axis] & ~7) != brick[axis]) break;               // left the brick
+            exits[axis] = planeExit(axis, ijk[axis], 1);
+        }
+        return false;
+    }
+
+    /// A block without surface, `size` cells wide: skipped whole, as large as OpenVDB's tile
+    /// or node is.
+    bool acrossBlock(int32_t size, openvdb::Coord& ijk, double& t, int64_t& step,
+                     uint64_t& steps) const {
+        ++step;
+        ++steps;
+        openvdb::Coord block;
+        for (int a = 0; a < 3; ++a) block[a] = ijk[a] & ~(size - 1);
+        int axis;
+        const double tExit = exitOf(block, size, t, axis);
+        if (!mVisit(mContext, {t, tExit, nullptr})) return true;
+        if (axis < 0) return true;  // tmax reached inside this block
+        const int32_t next = mRay.dir[axis] > 0.0 ? block[axis] + size : block[axis] - 1;
+        if (next < 0 || next >= mFrame.n) return true;  // left the cube
+        // The ray has moved across the block on the other axes too: found from the exit point.
+        const Vec3 p = mRay.at(tExit);
+        for (int a = 0; a < 3; ++a) {
+            if (a == axis) continue;
+            const double c = std::floor((p[a] - mFrame.origin[a]) / mFrame.h);
+            ijk[a] = int32_t(std::clamp(c, 0.0, double(mFrame.n - 1)));
+        }
+        ijk[axis] = next;
+        t = tExit;
+        return false;
+    }
+
+private:
+    /// Where the ray crosses the far plane of coordinate c (a block of `size` from c) on axis
+    /// a: +inf where it never does.
+    double planeExit(int a, int32_t c, int32_t size) const {
+        const double d = mRay.dir[a];
+        double plane;
+        if (d > 0.0)
+            plane = mFrame.origin[a] + double(c + size) * mFrame.h;
+        else if (d < 0.0)
+            plane = mFrame.origin[a] + double(c) * mFrame.h;
+        else
+            return kInf;
+        return mDivide[a] ? (plane - mRay.origin[a]) / d : (plane - mRay.origin[a]) * mInv[a];
+    }
+
+    /// Where the ray leaves the block of `size` cells at `block`, and across which axis (−1:
+    /// not before tmax).
+    double exitOf(const openvdb::Coord& block, int32_t size, double t, int& axis) const {
+        double tExit = mTmax;
+        axis = -1;
+        for (int a = 0; a < 3; ++a) {
+            const double te = planeExit(a, block[a], size);
+            if (te < tExit) tExit = te, axis = a;
+        }
+        return std::max(tExit, t);
+    }
+
+    const GridFrame& mFrame;
+    const Ray& mRay;
+    const double mTmax;
+    const SegmentVisitor mVisit;
+    void* const mContext;
+    double mInv[3];
+    bool mDivide[3];
+};
+
 }  // namespace
 
 struct CellGrid::Impl {
@@ -118,104 +235,20 @@ bool CellGrid::fullAt(const Vec3& p) const {
 bool CellGrid::walk(const Ray& ray, double tmin, double tmax, SegmentVisitor visit, void* context,
                     uint64_t& steps) const {
     if (!(tmin <= tmax)) return true;
-    const GridFrame& f = mFrame;
+    const CellWalk w{mFrame, ray, tmax, visit, context};
     Accessor acc(mImpl->tree);
-    // The cell holding the entry point (clamped: the entry lies on the cube within rounding).
-    openvdb::Coord ijk;
-    const Vec3 start = ray.at(tmin);
-    for (int a = 0; a < 3; ++a) {
-        const double c = std::floor((start[a] - f.origin[a]) / f.h);
-        ijk[a] = int32_t(std::clamp(c, 0.0, double(f.n - 1)));
-    }
-    // Plane crossings by one multiplication (one rounding more than a division, well inside
-    // the caller's slack); a reciprocal that overflows (subnormal direction) divides instead.
-    double inv[3];
-    bool divide[3];
-    for (int a = 0; a < 3; ++a) {
-        inv[a] = 1.0 / ray.dir[a];
-        divide[a] = !std::isfinite(inv[a]);
-    }
-    // Where the ray leaves the block of `size` cells at `block` (its far planes), and across
-    // which axis (−1: not before tmax).
-    // Where the ray crosses the far plane of coordinate c (a block of `size` from c) on axis
-    // a: +inf where it never does.
-    auto planeExit = [&](int a, int32_t c, int32_t size) {
-        const double d = ray.dir[a];
-        double plane;
-        if (d > 0.0)
-            plane = f.origin[a] + double(c + size) * f.h;
-        else if (d < 0.0)
-            plane = f.origin[a] + double(c) * f.h;
-        else
-            return kInf;
-        return divide[a] ? (plane - ray.origin[a]) / d : (plane - ray.origin[a]) * inv[a];
-    };
-    // Where the ray leaves the block of `size` cells at `block`, and across which axis (−1:
-    // not before tmax).
-    auto exitOf = [&](const openvdb::Coord& block, int32_t size, double t, int& axis) {
-        double tExit = tmax;
-        axis = -1;
-        for (int a = 0; a < 3; ++a) {
-            const double te = planeExit(a, block[a], size);
-            if (te < tExit) tExit = te, axis = a;
-        }
-        return std::max(tExit, t);
-    };
+    openvdb::Coord ijk = w.cellAt(ray.at(tmin));
     // A walk crosses at most 3n cells; more steps can only come from rounding at corners.
-    const int64_t limit = 3 * int64_t(f.n) + 16;
+    const int64_t limit = 3 * int64_t(mFrame.n) + 16;
     int64_t step = 0;
     double t = tmin;
     while (step < limit) {
         int32_t value = kEmptyValue;
-        int axis;
-        if (acc.probeValue(ijk, value)) {
-            // A brick the surface may cross: its cells one by one, from its own table, until
-            // the ray leaves it. A step to a neighbouring cell changes one coordinate only.
-            const BrickContent& b = mImpl->content(value);
-            const openvdb::Coord brick(ijk[0] & ~7, ijk[1] & ~7, ijk[2] & ~7);
-            // Each cell's exit planes, computed from the planes themselves; a step changes
-            // one coordinate, so only that axis's exit is computed anew.
-            double exits[3];
-            for (int a = 0; a < 3; ++a) exits[a] = planeExit(a, ijk[a], 1);
-            while (step++ < limit) {
-                ++steps;
-                const Node* node =
-                    b.nodeAt(BrickContent::index(ijk[0] & 7, ijk[1] & 7, ijk[2] & 7));
-                double tExit = tmax;
-                axis = -1;
-                for (int a = 0; a < 3; ++a)
-                    if (exits[a] < tExit) tExit = exits[a], axis = a;
-                tExit = std::max(tExit, t);
-                if (!visit(context, {t, tExit, node})) return true;
-                if (axis < 0) return true;  // tmax reached inside this cell
-                t = tExit;
-                ijk[axis] += ray.dir[axis] > 0.0 ? 1 : -1;
-                if (ijk[axis] < 0 || ijk[axis] >= f.n) return true;  // left the cube
-                if ((ijk[axis] & ~7) != brick[axis]) break;          // left the brick
-                exits[axis] = planeExit(axis, ijk[axis], 1);
-            }
-            continue;
-        }
-        // A block without surface: skipped whole, as large as OpenVDB's tile or node is.
-        ++step;
-        ++steps;
-        const int32_t size = regionSize(acc.getValueDepth(ijk));
-        openvdb::Coord block;
-        for (int a = 0; a < 3; ++a) block[a] = ijk[a] & ~(size - 1);
-        const double tExit = exitOf(block, size, t, axis);
-        if (!visit(context, {t, tExit, nullptr})) return true;
-        if (axis < 0) return true;  // tmax reached inside this block
-        const int32_t next = ray.dir[axis] > 0.0 ? block[axis] + size : block[axis] - 1;
-        if (next < 0 || next >= f.n) return true;  // left the cube
-        // The ray has moved across the block on the other axes too: found from the exit point.
-        const Vec3 p = ray.at(tExit);
-        for (int a = 0; a < 3; ++a) {
-            if (a == axis) continue;
-            const double c = std::floor((p[a] - f.origin[a]) / f.h);
-            ijk[a] = int32_t(std::clamp(c, 0.0, double(f.n - 1)));
-        }
-        ijk[axis] = next;
-        t = tExit;
+        const bool done =
+            acc.probeValue(ijk, value)
+                ? w.throughBrick(mImpl->content(value), ijk, t, step, limit, steps)
+                : w.acrossBlock(regionSize(acc.getValueDepth(ijk)), ijk, t, step, steps);
+        if (done) return true;
     }
     return false;
 }
