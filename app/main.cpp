@@ -10,17 +10,44 @@
 #include "app/cli_voxelize.h"
 #include "app/exit_codes.h"
 #include "io/image.h"
+#include "io/image_plugin_loader.h"
 
 #include <tbb/global_control.h>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <new>
+#include <string>
 
 namespace {
 
 using namespace kerf::app;
+
+/// Whether `kerf slice -o PATH` writes a raster (through the image plug-in), not SVG or DXF.
+bool sliceWritesImage(const std::string& output) {
+    std::string ext = std::filesystem::path(output).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext != ".svg" && ext != ".dxf";
+}
+
+/// Commands that will read or write an image load the plug-in before any work, so a kerf
+/// without its plug-in says so at once (exit 2, naming the paths tried), not after a render.
+/// Returns the exit code, or -1 to go on.
+int checkImageSupport(bool needed) {
+    if (!needed) return -1;
+    try {
+        kerf::requireImagePlugin();
+    } catch (const kerf::ImageSupportError& e) {
+        std::cerr << "kerf: error: " << e.what() << "\n";
+        return kExitUsage;
+    }
+    return -1;
+}
 
 /// Parses and runs; usage and write errors become their exit codes here, anything else
 /// propagates to main().
@@ -56,6 +83,10 @@ int run(int argc, char** argv) {
                   << "Run 'kerf --help' (or 'kerf render --help') for usage.\n";
         return kExitUsage;
     }
+
+    const bool needsImages = renderCmd->parsed() || assembleCmd->parsed() ||
+                             (sliceCmd->parsed() && sliceWritesImage(sliceLine.output));
+    if (const int code = checkImageSupport(needsImages); code >= 0) return code;
 
     try {
         if (renderCmd->parsed()) return runRender(renderLine);

@@ -1,5 +1,6 @@
 /// @file io/image_plugin_loader.cpp
-/// @brief dlopen of the image plug-in, once, from the folder of the running executable.
+/// @brief dlopen of the image plug-in, once, from beside the running executable or from
+/// ../lib/kerf/ relative to it (an installed kerf).
 #include "io/image_plugin_loader.h"
 
 #include <dlfcn.h>
@@ -7,6 +8,7 @@
 #include <filesystem>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "io/image.h"
 
@@ -28,11 +30,29 @@ PluginState& state() {
     return s;
 }
 
-std::string besideExecutable() {
+std::vector<std::string> nearExecutable() {
     std::error_code ec;
     const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-    if (ec) return kPluginFile;  // no /proc: let dlopen search its usual places
-    return (exe.parent_path() / kPluginFile).string();
+    if (ec) return {kPluginFile};  // no /proc: let dlopen search its usual places
+    const std::filesystem::path dir = exe.parent_path();
+    return {(dir / kPluginFile).string(),
+            (dir.parent_path() / "lib" / "kerf" / kPluginFile).lexically_normal().string()};
+}
+
+/// The first candidate that exists, or none when no candidate does.
+std::string firstExisting(const std::vector<std::string>& candidates) {
+    for (const std::string& path : candidates) {
+        std::error_code ec;
+        if (std::filesystem::exists(path, ec)) return path;
+    }
+    return {};
+}
+
+std::string notFoundMessage(const std::vector<std::string>& candidates) {
+    std::string tried;
+    for (const std::string& path : candidates) tried += (tried.empty() ? "'" : ", '") + path + "'";
+    return "cannot load image support: " + std::string(kPluginFile) +
+           " is in none of the places kerf looks: " + tried;
 }
 
 void load(PluginState& s, const std::string& path) {
@@ -61,17 +81,35 @@ void setImagePluginPath(const std::string& path) {
     s.path = path;
 }
 
-std::string imagePluginPath() {
+std::vector<std::string> imagePluginCandidates() {
     PluginState& s = state();
     std::lock_guard<std::mutex> lock(s.pathMutex);
-    return s.path.empty() ? besideExecutable() : s.path;
+    if (!s.path.empty()) return {s.path};
+    return nearExecutable();
+}
+
+std::string imagePluginPath() {
+    const std::vector<std::string> candidates = imagePluginCandidates();
+    const std::string found = firstExisting(candidates);
+    return found.empty() ? candidates.front() : found;
 }
 
 const KerfImagePlugin& imagePlugin() {
     PluginState& s = state();
-    std::call_once(s.once, [&] { load(s, imagePluginPath()); });
+    std::call_once(s.once, [&] {
+        const std::vector<std::string> candidates = imagePluginCandidates();
+        const std::string found = firstExisting(candidates);
+        // A set path or a bare name (no /proc) goes to dlopen as it is, which explains itself.
+        if (found.empty() && candidates.size() > 1) {
+            s.error = notFoundMessage(candidates);
+            return;
+        }
+        load(s, found.empty() ? candidates.front() : found);
+    });
     if (s.plugin == nullptr) throw ImageSupportError(s.error);
     return *s.plugin;
 }
+
+void requireImagePlugin() { imagePlugin(); }
 
 }  // namespace kerf

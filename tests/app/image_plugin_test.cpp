@@ -2,7 +2,10 @@
 // library, and a missing plug-in is a clear error that leaves no file behind.
 #include <catch2/catch.hpp>
 
+#include "io/image.h"
 #include "kerf_runner.h"
+
+#include <algorithm>
 
 using namespace kerf::test;
 
@@ -70,18 +73,33 @@ TEST_CASE("kerf without its image plug-in") {
         const KerfRun run = runBinary(dir, "", kerf, {"check", "ball.kerf"});
         CHECK(run.exitCode == 0);
     }
-    SECTION("render fails with a clear error and writes nothing") {
+    SECTION("render fails at once with the paths it tried and writes nothing") {
         const KerfRun run = runBinary(dir, "", kerf, {"render", "ball.kerf", "-o", "b.png"});
-        CHECK(run.exitCode == 1);
-        const std::string expected = "kerf: error: cannot load image support '" + plugin + "': ";
-        CHECK(run.err.rfind(expected, 0) == 0);
-        CHECK(run.err.find("No such file") != std::string::npos);
+        CHECK(run.exitCode == 2);
+        const std::string installed =
+            (dir.path().parent_path() / "lib" / "kerf" / "kerf_image_plugin.so").string();
+        CHECK(run.err ==
+              "kerf: error: cannot load image support: kerf_image_plugin.so is in none "
+              "of the places kerf looks: '" +
+                  plugin + "', '" + installed + "'\n");
         CHECK(dir.listing() == std::vector<std::string>{"ball.kerf", "kerf"});
+    }
+    SECTION("slice to PNG checks too; slice to SVG needs no plug-in") {
+        const std::vector<std::string> slice = {"slice", "ball.kerf", "--plane", "z=0", "-o"};
+        std::vector<std::string> png = slice, svg = slice;
+        png.push_back("cut.png");
+        svg.push_back("cut.svg");
+        const KerfRun toPng = runBinary(dir, "", kerf, png);
+        CHECK(toPng.exitCode == 2);
+        CHECK(toPng.err.find("is in none of the places kerf looks") != std::string::npos);
+        CHECK(!fs::exists(dir.file("cut.png")));
+        CHECK(runBinary(dir, "", kerf, svg).exitCode == 0);
+        CHECK(fs::exists(dir.file("cut.svg")));
     }
     SECTION("a shared object without the entry point is refused") {
         fs::copy_file(KERF_SOME_SHARED_LIBRARY, plugin);
         const KerfRun run = runBinary(dir, "", kerf, {"render", "ball.kerf", "-o", "b.png"});
-        CHECK(run.exitCode == 1);
+        CHECK(run.exitCode == 2);
         CHECK(run.err.rfind(
                   "kerf: error: cannot load image support '" + plugin + "': no entry point", 0) ==
               0);
@@ -90,8 +108,39 @@ TEST_CASE("kerf without its image plug-in") {
     SECTION("a file that is not a plug-in is refused the same way") {
         dir.write("kerf_image_plugin.so", "not a shared object");
         const KerfRun run = runBinary(dir, "", kerf, {"render", "ball.kerf", "-o", "b.png"});
-        CHECK(run.exitCode == 1);
+        CHECK(run.exitCode == 2);
         CHECK(run.err.rfind("kerf: error: cannot load image support '" + plugin + "': ", 0) == 0);
         CHECK(!fs::exists(dir.file("b.png")));
     }
+}
+
+TEST_CASE("an installed kerf finds its plug-in in ../lib/kerf, wherever the prefix moves") {
+    // The layout of `cmake --install build --prefix P`: P/bin/kerf, P/lib/kerf/the plug-in.
+    TempDir dir;
+    dir.write("ball.kerf", kModel);
+    const fs::path first = dir.path() / "prefix";
+    fs::create_directories(first / "bin");
+    fs::create_directories(first / "lib" / "kerf");
+    fs::copy_file(KERF_BINARY, first / "bin" / "kerf");
+    fs::copy_file(KERF_IMAGE_PLUGIN, first / "lib" / "kerf" / "kerf_image_plugin.so");
+    const fs::path moved = dir.path() / "elsewhere" / "kerf-0";
+    fs::create_directories(moved.parent_path());
+    fs::rename(first, moved);
+
+    const KerfRun installed = runBinary(dir, "", (moved / "bin" / "kerf").string(),
+                                        {"render", "ball.kerf", "-o", "installed.png"});
+    REQUIRE(installed.exitCode == 0);
+    // The oracle: the build tree's kerf, which finds the plug-in beside itself.
+    REQUIRE(runBinary(dir, "", KERF_BINARY, {"render", "ball.kerf", "-o", "built.png"}).exitCode ==
+            0);
+    const kerf::Image got = kerf::readImage(dir.file("installed.png"));
+    const kerf::Image want = kerf::readImage(dir.file("built.png"));
+    REQUIRE(got.width == 8);
+    REQUIRE(got.height == 6);
+    REQUIRE(got.pixels.size() == want.pixels.size());
+    CHECK(got.pixels == want.pixels);
+    // The sphere fills the middle of the frame: lit there, not black.
+    float middle = 0.0f;
+    for (int c = 0; c < std::min(got.channels, 3); ++c) middle += got.at(4, 3, c);
+    CHECK(middle > 0.0f);
 }
