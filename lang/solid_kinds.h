@@ -53,7 +53,7 @@ struct SolidKind {
     unsigned uses;  ///< SolidUse flags
     /// Tabled kinds: the properties, a check of the whole block (an error message, or empty;
     /// may be null) and the factory. Custom kinds leave these empty and name `lower`.
-    std::vector<SolidProperty> properties;
+    std::vector<SolidProperty> properties = {};
     std::string (*problem)(const PropertyValues&) = nullptr;
     NodePtr (*make)(const PropertyValues&) = nullptr;
     NodePtr (Lowering::*lower)(const Solid&) = nullptr;  ///< custom lowering, or null
