@@ -18,10 +18,18 @@ constexpr unsigned kBooleanUses = kPrimitive | kBoolean;
 /// Builds the rows; a friend of Lowering, whose lowering functions the custom rows name.
 struct SolidKindRows {
     static std::vector<SolidKind> build();
+    static std::vector<SolidKind> primitives();  ///< sphere … implicit
+    static std::vector<SolidKind> others();      ///< profiles, Booleans, meshes, surfaces, …
 };
 
 std::vector<SolidKind> SolidKindRows::build() {
-    std::vector<SolidKind> rows = {
+    std::vector<SolidKind> rows = primitives();
+    for (SolidKind& row : others()) rows.push_back(std::move(row));
+    return rows;
+}
+
+std::vector<SolidKind> SolidKindRows::primitives() {
+    return {
         {"sphere",
          NodeKind::Sphere,
          kPrimitive,
@@ -83,6 +91,11 @@ std::vector<SolidKind> SolidKindRows::build() {
          nullptr,
          nullptr,
          &Lowering::lowerImplicit},
+    };
+}
+
+std::vector<SolidKind> SolidKindRows::others() {
+    return {
         {"extrude",
          NodeKind::Implicit,
          kSolidValue | kListed,
@@ -127,7 +140,6 @@ std::vector<SolidKind> SolidKindRows::build() {
              return makeCapsule(v[0].vector, v[1].vector, v[2].number);
          }},
     };
-    return rows;
 }
 
 const std::vector<SolidKind>& solidKinds() {

@@ -51,7 +51,7 @@ void requireSameSpans(const SpanList& exact, const SpanList& isolated, const Ray
     // of a vertex) may be kept by one and not the other: drop such spans, close such gaps.
     const auto normalised = [](const SpanList& in) {
         std::vector<Span> out;
-        for (size_t i = 0; i < in.size(); ++i) {
+        for (int i = 0; i < in.size(); ++i) {
             if (in[i].out.t - in[i].in.t <= 1e-9) continue;
             if (!out.empty() && in[i].in.t - out.back().out.t <= 1e-9) {
                 out.back().out = in[i].out;
