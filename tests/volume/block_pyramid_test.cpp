@@ -38,7 +38,8 @@ TEST_CASE("BlockPyramid::range holds every block's values and is exact for one h
     std::mt19937 rng(11);
     for (const float background : {0.0f, 0.25f}) {
         const BlockCoord lo{-20, -9, 3}, hi{17, 30, 40};
-        BlockPyramid pyramid(background, lo, hi);
+        BlockPyramid pyramid(background, lo, hi);  // dense layout: the box is small
+        BlockPyramid sparse(background, lo, hi, BlockPyramid::Layout::Sparse);
         DenseBlocks oracle{background, {}};
         std::uniform_int_distribution<int> x(lo[0], hi[0]), y(lo[1], hi[1]), z(lo[2], hi[2]);
         std::uniform_real_distribution<float> v(0.0f, 2.0f);
@@ -47,6 +48,7 @@ TEST_CASE("BlockPyramid::range holds every block's values and is exact for one h
             if (oracle.held.count(b)) continue;
             const float a = v(rng), c = v(rng);
             pyramid.addBlock(b, std::min(a, c), std::max(a, c));
+            sparse.addBlock(b, std::min(a, c), std::max(a, c));
             oracle.held[b] = {std::min(a, c), std::max(a, c)};
         }
         // Two constant tiles of 4³ blocks (level 2) in space no block took.
@@ -59,12 +61,14 @@ TEST_CASE("BlockPyramid::range holds every block's values and is exact for one h
             if (!free) continue;
             const float value = v(rng);
             pyramid.addTile(2, t, value);
+            sparse.addTile(2, t, value);
             for (int i = 0; i < 4; ++i)
                 for (int j = 0; j < 4; ++j)
                     for (int k = 0; k < 4; ++k)
                         oracle.held[{4 * t[0] + i, 4 * t[1] + j, 4 * t[2] + k}] = {value, value};
         }
         pyramid.finish();
+        sparse.finish();
         std::uniform_int_distribution<int> w(0, 12);
         for (int n = 0; n < 2000; ++n) {
             const BlockCoord q0{x(rng) - 2, y(rng) - 2, z(rng) - 2};
@@ -82,6 +86,10 @@ TEST_CASE("BlockPyramid::range holds every block's values and is exact for one h
                            << elo << ", " << ehi << "]");
             REQUIRE(r.lo <= elo);
             REQUIRE(r.hi >= ehi);
+            // Both layouts give the same bits.
+            const Interval rs = sparse.range(q0, q1);
+            REQUIRE(rs.lo == r.lo);
+            REQUIRE(rs.hi == r.hi);
         }
         for (const auto& [b, held] : oracle.held) {
             const Interval r = pyramid.range(b, b);

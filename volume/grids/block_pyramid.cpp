@@ -25,12 +25,14 @@ size_t BlockPyramid::CoordHash::operator()(const BlockCoord& c) const {
     return size_t(h ^ (h >> 29));
 }
 
-BlockPyramid::BlockPyramid(float background, const BlockCoord& lo, const BlockCoord& hi)
+BlockPyramid::BlockPyramid(float background, const BlockCoord& lo, const BlockCoord& hi,
+                           Layout layout)
     : mBackground(background),
       mEmptyLo(std::min(background, 0.0f)),
       mEmptyHi(std::max(background, 0.0f)),
       mLo(lo),
-      mHi(hi) {
+      mHi(hi),
+      mLayout(layout) {
     // The top level is the first at which the whole box is one cell (31 at most: ints).
     int top = 0;
     while (top < 31 && parentOf(mLo, top) != parentOf(mHi, top)) ++top;
@@ -75,6 +77,28 @@ void BlockPyramid::finish() {
         for (auto& [coord, cell] : up)
             if (!cell.tile && cell.children < 8) cell.complete = false;
     }
+    double blocks = 1.0;  // the box's cell count at level 0, in double: it can pass 2^64
+    for (int a = 0; a < 3; ++a) blocks *= double(mHi[a]) - double(mLo[a]) + 1.0;
+    if (mLayout == Layout::Auto && blocks <= 64.0 * double(cells()) + 32768.0) buildDense();
+}
+
+void BlockPyramid::buildDense() {
+    mDense.resize(mLevels.size());
+    for (int k = 0; k < levels(); ++k) {
+        DenseLevel& d = mDense[size_t(k)];
+        d.origin = parentOf(mLo, k);
+        const BlockCoord end = parentOf(mHi, k);
+        for (int a = 0; a < 3; ++a) d.dims[a] = end[a] - d.origin[a] + 1;
+        const size_t n = size_t(d.dims[0]) * size_t(d.dims[1]) * size_t(d.dims[2]);
+        d.lo.assign(n, float(kInf));
+        d.hi.assign(n, float(-kInf));
+        for (int z = d.origin[2]; z <= end[2]; ++z)
+            for (int y = d.origin[1]; y <= end[1]; ++y)
+                for (int x = d.origin[0]; x <= end[0]; ++x) {
+                    const size_t i = d.index({x, y, z});
+                    cellRange(k, {x, y, z}, d.lo[i], d.hi[i]);
+                }
+    }
 }
 
 void BlockPyramid::cellRange(int level, const BlockCoord& c, float& lo, float& hi) const {
@@ -109,6 +133,16 @@ Interval BlockPyramid::range(BlockCoord lo, BlockCoord hi) const {
     auto span = [&](int a) { return int64_t(shiftDown(hi[a], level)) - shiftDown(lo[a], level); };
     while (level + 1 < levels() && (span(0) > 3 || span(1) > 3 || span(2) > 3)) ++level;
     const BlockCoord c0 = parentOf(lo, level), c1 = parentOf(hi, level);
+    if (!mDense.empty()) {
+        const DenseLevel& d = mDense[size_t(level)];
+        for (int k = c0[2]; k <= c1[2]; ++k)
+            for (int j = c0[1]; j <= c1[1]; ++j)
+                for (int i = c0[0]; i <= c1[0]; ++i) {
+                    const size_t at = d.index({i, j, k});
+                    rlo = std::min(rlo, d.lo[at]), rhi = std::max(rhi, d.hi[at]);
+                }
+        return Interval(rlo, rhi);
+    }
     for (int k = c0[2]; k <= c1[2]; ++k)
         for (int j = c0[1]; j <= c1[1]; ++j)
             for (int i = c0[0]; i <= c1[0]; ++i) cellRange(level, {i, j, k}, rlo, rhi);

@@ -25,7 +25,11 @@ class BlockPyramid {
 public:
     /// `background`: the value of voxels no leaf or tile holds; `lo`…`hi`: the inclusive
     /// box of blocks that hold data (outside it a query sees exactly the background).
-    BlockPyramid(float background, const BlockCoord& lo, const BlockCoord& hi);
+    /// `Layout::Sparse` keeps queries on the hash maps even where the dense layout would be
+    /// chosen (for the test that both give the same ranges).
+    enum class Layout { Auto, Sparse };
+    BlockPyramid(float background, const BlockCoord& lo, const BlockCoord& hi,
+                 Layout layout = Layout::Auto);
 
     /// The minimum and maximum of every voxel of one 8³ block (a leaf's values).
     void addBlock(const BlockCoord& block, float lo, float hi);
@@ -61,10 +65,27 @@ private:
     /// the background's share where it is not complete.
     void cellRange(int level, const BlockCoord& c, float& lo, float& hi) const;
 
+    /// Where the box holds few cells more than the data (a fog filling its box, the common
+    /// case), each level is also laid out densely with every cell's range resolved, so a query
+    /// is array reads, as fast as the dense pyramid this replaced; the hash maps stay the
+    /// truth. Memory stays proportional to the data: at most 64 dense cells per stored one.
+    struct DenseLevel {
+        BlockCoord origin{}, dims{};
+        std::vector<float> lo, hi;
+        size_t index(const BlockCoord& c) const {
+            return (size_t(c[2] - origin[2]) * size_t(dims[1]) + size_t(c[1] - origin[1])) *
+                       size_t(dims[0]) +
+                   size_t(c[0] - origin[0]);
+        }
+    };
+    void buildDense();
+
     float mBackground;
     float mEmptyLo, mEmptyHi;  ///< the range of a cell holding no data: [min(bg, 0), max(bg, 0)]
     BlockCoord mLo, mHi;
+    Layout mLayout;
     std::vector<Level> mLevels;
+    std::vector<DenseLevel> mDense;  ///< empty: queries use the hash maps
 };
 
 }  // namespace kerf
