@@ -43,7 +43,8 @@ BlockPyramid makePyramid(const openvdb::FloatGrid& grid) {
     for (auto t = grid.tree().cbeginValueAll(); t; ++t) {
         if (t.isVoxelValue()) continue;
         const openvdb::CoordBBox tb = t.getBoundingBox();
-        const int side = tb.dim().x() / kBlock;
+        // In 64 bits: a tile at the end of the int range ends at INT_MAX, and dim() overflows.
+        const int side = int((int64_t(tb.max().x()) - tb.min().x() + 1) / kBlock);
         int level = 0;
         while ((1 << level) < side) ++level;
         const openvdb::Coord o = tb.min();
