@@ -43,11 +43,16 @@ const std::map<std::string, std::string>& unsupportedReasons() {
     return reasons;
 }
 
-/// OpenSCAD's number of fragments for a circle of radius r (its get_fragments_from_r).
+/// The most fragments reported: `$fn = 1e12` or `$fs = 1e-300` would not fit an int.
+constexpr int kMaxFragments = 1 << 30;
+
+/// OpenSCAD's number of fragments for a circle of radius r (its get_fragments_from_r), at most
+/// kMaxFragments (only reported: kerf traces the circle exactly).
 int openScadFragments(double r, double fn, double fs, double fa) {
     if (r < 0.00000095367431640625) return 3;
-    if (fn > 0.0) return static_cast<int>(fn >= 3 ? fn : 3);
-    return static_cast<int>(std::ceil(std::max(std::min(360.0 / fa, r * 2 * M_PI / fs), 5.0)));
+    const double n = fn > 0.0 ? (fn >= 3 ? fn : 3)
+                              : std::ceil(std::max(std::min(360.0 / fa, r * 2 * M_PI / fs), 5.0));
+    return n < kMaxFragments ? static_cast<int>(n) : kMaxFragments;  // NaN too
 }
 
 }  // namespace

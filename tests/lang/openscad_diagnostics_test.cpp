@@ -234,3 +234,18 @@ TEST_CASE("openscad/OpenSCAD's text and offset examples load, within OpenSCAD's 
     }
     CHECK(files == static_cast<int>(stl.size()));
 }
+
+// Issue 24 (and a fuzz find): $fn = 1e12 or a $fn the size of 3e23 overflowed the int of the
+// reported facet count (undefined behaviour UBSan catches); the count is at most 2^30.
+TEST_CASE("openscad/huge $fn and tiny $fs report a bounded facet count") {
+    for (const char* model :
+         {"sphere($fn = 1e12, r = 1);\n", "sphere($fn = 0333333333333333333333333, r = 10);\n",
+          "sphere($fs = 1e-300, $fa = 1e-300, r = 1);\n"}) {
+        DiagnosticSink sink;
+        const auto scene = compileOpenScadString(model, "huge_fn.csg", sink);
+        INFO(model << sink.format());
+        CHECK(scene.has_value());
+        CHECK(sink.format().find("OpenSCAD would have used 1073741824 facets") !=
+              std::string::npos);
+    }
+}
