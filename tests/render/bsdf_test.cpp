@@ -5,6 +5,7 @@
 /// reflectance.
 #include "render/bsdf.h"
 #include "render/light_sample.h"
+#include "render_test_util.h"
 
 #include <catch2/catch.hpp>
 
@@ -19,15 +20,6 @@ namespace {
 
 constexpr double kPi = glm::pi<double>();
 const Vec3 kUp(0.0, 0.0, 1.0);
-
-Material plainMaterial() {
-    Material m;
-    m.color = Vec3(1.0);
-    m.ambient = 0;
-    m.diffuse = 0;
-    m.specular = 0;
-    return m;
-}
 
 /// A unit direction at polar angle theta from +z, azimuth phi.
 Vec3 dirAt(double theta, double phi) {
@@ -80,7 +72,7 @@ double pdfIntegral(const Bsdf& bsdf, const Vec3& wo, int n, uint32_t seed) {
 }  // namespace
 
 TEST_CASE("Bsdf: Lambert") {
-    Material m = plainMaterial();
+    Material m = test::blackMaterial();
     m.diffuse = 0.7;
     const Vec3 colour(0.9, 0.5, 0.25);
     const Bsdf bsdf(m, colour, kUp, true);
@@ -114,7 +106,7 @@ TEST_CASE("Bsdf: Lambert") {
 }
 
 TEST_CASE("Bsdf: Phong lobe") {
-    Material m = plainMaterial();
+    Material m = test::blackMaterial();
     m.specular = 0.5;
     m.shininess = 12.0;
     const Bsdf bsdf(m, Vec3(1.0), kUp, true);
@@ -142,7 +134,7 @@ TEST_CASE("Bsdf: Phong lobe") {
 }
 
 TEST_CASE("Bsdf: mirror and glossy reflection") {
-    Material m = plainMaterial();
+    Material m = test::blackMaterial();
     m.reflect = 0.6;
     const Vec3 wo = dirAt(0.7, 1.1);
 
@@ -175,7 +167,7 @@ TEST_CASE("Bsdf: mirror and glossy reflection") {
 }
 
 TEST_CASE("Bsdf: glass") {
-    Material m = plainMaterial();
+    Material m = test::blackMaterial();
     m.transmit = 1.0;
     m.ior = 1.5;
     const Bsdf entering(m, Vec3(1.0), kUp, true);
