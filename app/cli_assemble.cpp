@@ -33,15 +33,6 @@ std::string text(const PixelRect& r) {
            std::to_string(r.y1);
 }
 
-std::string lowerExtension(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    const size_t dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-    std::string ext = path.substr(dot);
-    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
-
 Part readPart(const std::string& path) {
     const std::string ext = lowerExtension(path);
     if (ext == ".png" || ext == ".jpg" || ext == ".jpeg")

@@ -5,6 +5,7 @@
 #include "app/model_loader.h"
 #include "app/option_text.h"
 #include "app/output_paths.h"
+#include "csg/stopwatch.h"
 #include "io/mesh_writers.h"
 #include "volume/export/mesh_export.h"
 
@@ -24,13 +25,7 @@ static_assert(sizeof(Vec3) == 3 * sizeof(double), "vertices are handed to io/ as
 
 /// The whole of `text` as a number ("nan" and "inf" parse, and are refused later by the range
 /// checks with a message that names the option).
-double parseNumber(const std::string& option, const std::string& text) {
-    const std::optional<double> v = parseWholeNumber(text);
-    if (!v) throw UsageError(option + " must be a number (got '" + text + "')");
-    return *v;
-}
-
-void printMeshStats(const MeshExportStats& s, const TriangleMesh& mesh, double secondsCompile,
+void printMeshStats(const MeshExportStats& s, const WatertightMesh& mesh, double secondsCompile,
                     double secondsWrite, double voxel, std::ostream& out) {
     char line[256];
     out << "kerf mesh statistics\n";
@@ -63,10 +58,6 @@ void printMeshStats(const MeshExportStats& s, const TriangleMesh& mesh, double s
     out << line;
 }
 
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 }  // namespace
 
 CLI::App* addMeshCommand(CLI::App& parent, MeshCommandLine& line) {
@@ -85,8 +76,8 @@ CLI::App* addMeshCommand(CLI::App& parent, MeshCommandLine& line) {
 
 int runMesh(const MeshCommandLine& line) {
     MeshExportOptions options;
-    options.voxel = parseNumber("--voxel", line.voxel);
-    options.adaptivity = parseNumber("--adaptivity", line.adaptivity);
+    options.voxel = numberOption("--voxel", line.voxel);
+    options.adaptivity = numberOption("--adaptivity", line.adaptivity);
     options.measure = line.stats;
     if (!std::isfinite(options.voxel) || !(options.voxel > 0.0))
         throw UsageError("--voxel must be a finite number greater than 0 (got '" + line.voxel +
@@ -108,7 +99,7 @@ int runMesh(const MeshCommandLine& line) {
     const double secondsCompile = secondsSince(compileStart);
 
     MeshExportStats stats;
-    TriangleMesh mesh;
+    WatertightMesh mesh;
     try {
         mesh = exportMesh(scene->objects, options, stats);
     } catch (const MeshInputError& e) {

@@ -11,6 +11,7 @@
 #include "app/render_setup.h"
 #include "app/stats_report.h"
 #include "csg/normalize.h"
+#include "csg/stopwatch.h"
 #include "io/image.h"
 #include "render/render.h"
 #include "scene/limits.h"
@@ -31,10 +32,6 @@ namespace kerf::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 void requireAtLeast(const CLI::Option* option, int value, int minimum) {
     if (option->count() > 0 && value < minimum) {

@@ -29,7 +29,7 @@ namespace {
 
 enum class Format { Svg, Dxf, Png };
 
-double parseNumber(const std::string& text, const std::string& option) {
+double finiteNumber(const std::string& text, const std::string& option) {
     const std::optional<double> v = parseWholeNumber(text);
     if (!v || !std::isfinite(*v))
         throw UsageError(option + ": '" + text + "' is not a finite number");
@@ -187,9 +187,9 @@ SlicePlan stackPlan(const SliceCommandLine& line) {
     const size_t c1 = rest.find(':'), c2 = c1 == std::string::npos ? c1 : rest.find(':', c1 + 1);
     if (c2 == std::string::npos)
         throw UsageError("--stack must look like z=0:2.4:0.05, got '" + line.stack + "'");
-    const double from = parseNumber(rest.substr(0, c1), "--stack");
-    const double to = parseNumber(rest.substr(c1 + 1, c2 - c1 - 1), "--stack");
-    const double step = parseNumber(rest.substr(c2 + 1), "--stack");
+    const double from = finiteNumber(rest.substr(0, c1), "--stack");
+    const double to = finiteNumber(rest.substr(c1 + 1, c2 - c1 - 1), "--stack");
+    const double step = finiteNumber(rest.substr(c2 + 1), "--stack");
     if (!(step > 0.0) || !(to >= from))
         throw UsageError("--stack: the step must be positive and FROM ≤ TO, got '" + line.stack +
                          "'");
@@ -218,7 +218,7 @@ SlicePlan singlePlan(const SliceCommandLine& line) {
         std::string rest;
         const int axis = parseAxis(line.plane, "--plane", rest);
         plan.family = SlicePlane::axisAligned(axis, 0.0);
-        plan.offsets.push_back(parseNumber(rest, "--plane"));
+        plan.offsets.push_back(finiteNumber(rest, "--plane"));
         return plan;
     }
     if (line.point.empty() || line.normal.empty())

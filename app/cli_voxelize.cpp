@@ -5,6 +5,7 @@
 #include "app/model_loader.h"
 #include "app/option_text.h"
 #include "app/output_paths.h"
+#include "csg/stopwatch.h"
 #include "io/atomic_file.h"
 #include "volume/export/voxelize.h"
 
@@ -18,12 +19,6 @@
 namespace kerf::app {
 
 namespace {
-
-double parseNumber(const std::string& option, const std::string& text) {
-    const std::optional<double> v = parseWholeNumber(text);
-    if (!v) throw UsageError(option + " must be a number (got '" + text + "')");
-    return *v;
-}
 
 bool endsWithVdb(const std::string& path) {
     if (path.size() < 4) return false;
@@ -55,10 +50,6 @@ void printVoxelizeStats(const VoxelizeStats& s, double secondsCompile, double se
     out << line;
 }
 
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 }  // namespace
 
 CLI::App* addVoxelizeCommand(CLI::App& parent, VoxelizeCommandLine& line) {
@@ -79,8 +70,8 @@ CLI::App* addVoxelizeCommand(CLI::App& parent, VoxelizeCommandLine& line) {
 int runVoxelize(const VoxelizeCommandLine& line) {
     const auto start = std::chrono::steady_clock::now();
     VoxelizeOptions options;
-    options.voxel = parseNumber("--voxel", line.voxel);
-    options.band = parseNumber("--band", line.band);
+    options.voxel = numberOption("--voxel", line.voxel);
+    options.band = numberOption("--band", line.band);
     if (!std::isfinite(options.voxel) || !(options.voxel > 0.0))
         throw UsageError("--voxel must be a finite number greater than 0 (got '" + line.voxel +
                          "')");
@@ -88,7 +79,7 @@ int runVoxelize(const VoxelizeCommandLine& line) {
         throw UsageError("--band must be a number of voxels from 1 to 16 (got '" + line.band +
                          "')");
     if (!line.maxVoxels.empty()) {
-        const double n = parseNumber("--max-voxels", line.maxVoxels);
+        const double n = numberOption("--max-voxels", line.maxVoxels);
         if (!(n >= 1.0 && n <= 9.0e18) || n != std::floor(n))
             throw UsageError("--max-voxels must be a whole number of at least 1 (got '" +
                              line.maxVoxels + "')");

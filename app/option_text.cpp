@@ -1,6 +1,8 @@
 // Option values shared by the commands.
 #include "app/option_text.h"
 
+#include "app/exit_codes.h"
+
 #include <cmath>
 #include <cstdlib>
 
@@ -30,6 +32,12 @@ std::optional<Vec3> parseTriple(const std::string& text) {
 std::optional<std::pair<int, std::string>> parseAxisSpec(const std::string& spec) {
     if (spec.size() < 3 || spec[1] != '=' || spec[0] < 'x' || spec[0] > 'z') return std::nullopt;
     return std::pair{spec[0] - 'x', spec.substr(2)};
+}
+
+double numberOption(const std::string& option, const std::string& text) {
+    const std::optional<double> v = parseWholeNumber(text);
+    if (!v) throw UsageError(option + " must be a number (got '" + text + "')");
+    return *v;
 }
 
 }  // namespace kerf::app

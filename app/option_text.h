@@ -16,6 +16,9 @@ namespace kerf::app {
 /// value check it), or nothing when the text is empty or has more after the number.
 std::optional<double> parseWholeNumber(const std::string& text);
 
+/// The whole of `text` as a number, else UsageError "OPTION must be a number (got 'TEXT')".
+double numberOption(const std::string& option, const std::string& text);
+
 /// "A,B,C" as three finite numbers, or nothing.
 std::optional<Vec3> parseTriple(const std::string& text);
 

@@ -13,14 +13,14 @@ namespace fs = std::filesystem;
 
 namespace kerf::app {
 
-namespace {
-
 std::string lowerExtension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
 }
+
+namespace {
 
 bool isFloatFormat(const std::string& ext) {
     return ext == ".exr" || ext == ".tif" || ext == ".tiff";

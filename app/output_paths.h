@@ -42,6 +42,9 @@ void checkOutputsWritable(const OutputPlan& plan);
 /// image extension (".png"), else "".
 std::string missingStem(const std::string& path);
 
+/// The file's extension in lower case with its dot (".png"), or "" when it has none.
+std::string lowerExtension(const std::string& path);
+
 /// True when the two paths name the same file (existing or not).
 bool samePath(const std::string& a, const std::string& b);
 

@@ -15,7 +15,7 @@ namespace kerf::app {
 namespace {
 
 /// One whole number 0 … INT_MAX, all of `text`.
-std::optional<int> parseCount(const std::string& text) {
+std::optional<int> regionCount(const std::string& text) {
     if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
         return std::nullopt;
     errno = 0;
@@ -36,7 +36,7 @@ std::optional<PixelRect> parseRegion(const CLI::Option* option, const std::strin
     size_t start = 0;
     for (;;) {
         const size_t comma = text.find(',', start);
-        const std::optional<int> n = parseCount(text.substr(start, comma - start));
+        const std::optional<int> n = regionCount(text.substr(start, comma - start));
         if (!n) throw UsageError(usage);
         v.push_back(*n);
         if (comma == std::string::npos) break;

@@ -14,6 +14,14 @@ using Mat3 = glm::dmat3;  ///< column-major, as GLM: m[col][row]
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+/// True when every component is finite (no NaN, no ±inf).
+inline bool allFinite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+/// True when no component is negative (NaN counts as negative: it fails the test).
+inline bool allNonNegative(const Vec3& v) { return v.x >= 0 && v.y >= 0 && v.z >= 0; }
+
 /// A ray o + t·d. The direction is not necessarily unit length: transforms map it into object
 /// space without renormalising, so the parameter t means the same point in every space.
 struct Ray {

@@ -8,12 +8,6 @@
 
 namespace kerf {
 
-namespace {
-
-bool nonNegative(const Vec3& v) { return v.x >= 0 && v.y >= 0 && v.z >= 0; }
-
-}  // namespace
-
 std::optional<Light> Lowering::lowerLight(const Statement& s) {
     Light light;
     std::vector<PropertySpec> specs{{"color", PropertyType::Vector}};
@@ -85,7 +79,7 @@ bool Lowering::readLight(const PropertyBlock& b, Light& light) {
 
 bool Lowering::checkLight(const PropertyBlock& b, const Light& light) {
     bool ok = true;
-    if (!nonNegative(light.color)) {
+    if (!allNonNegative(light.color)) {
         error(b.find("color")->valueLoc(),
               "light color must not have negative components, got " + formatVector(light.color));
         ok = false;
@@ -142,7 +136,7 @@ void Lowering::lowerBackground(const Statement& s, Scene& scene) {
         if (!ok) return;
         for (const char* name : {"horizon", "zenith", "nadir"}) {
             const Vec3& c = name[0] == 'h' ? sky.horizon : name[0] == 'z' ? sky.zenith : sky.nadir;
-            if (b.find(name) && !nonNegative(c)) {
+            if (b.find(name) && !allNonNegative(c)) {
                 error(b.find(name)->valueLoc(), std::string("background ") + name +
                                                     " must not have negative components, got " +
                                                     formatVector(c));
@@ -167,7 +161,7 @@ void Lowering::lowerBackground(const Statement& s, Scene& scene) {
               "write background <r, g, b>; or background gradient { horizon … zenith … }");
         return;
     }
-    if (!nonNegative(v->vector)) {
+    if (!allNonNegative(v->vector)) {
         error(s.expr->start,
               "background color must not have negative components, got " + formatVector(v->vector));
         return;

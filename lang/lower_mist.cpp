@@ -13,8 +13,6 @@
 namespace kerf {
 namespace {
 
-bool nonNegative(const Vec3& v) { return v.x >= 0 && v.y >= 0 && v.z >= 0; }
-
 /// A density written as an expression, compiled to a tape. The medium calls it from render
 /// threads, never from inside a tape, so evaluating a tape here is safe (csg/tape/scalar_field.h).
 class TapeDensity final : public ScalarField {
@@ -122,7 +120,7 @@ void Lowering::lowerUniformMist(const PropertyBlock& b, const Statement& s, Scen
     bool ok = readVector(b, "color", mist.color);
     ok &= readNumber(b, "distance", mist.distance);
     if (!ok) return;
-    if (!nonNegative(mist.color))
+    if (!allNonNegative(mist.color))
         error(b.find("color")->valueLoc(),
               "mist color must not have negative components, got " + formatVector(mist.color));
     if (!(mist.distance > 0))
@@ -150,13 +148,13 @@ bool Lowering::lowerMediumProperties(const PropertyBlock& b, Medium& medium) {
         return fail(at("extinction"),
                     "mist extinction must be 0 or more, got " + formatNumber(medium.extinction),
                     "extinction per unit density per unit length");
-    if (b.find("albedo") && !(nonNegative(medium.albedo) && medium.albedo.x <= 1 &&
+    if (b.find("albedo") && !(allNonNegative(medium.albedo) && medium.albedo.x <= 1 &&
                               medium.albedo.y <= 1 && medium.albedo.z <= 1))
         return fail(at("albedo"),
                     "mist albedo must be within 0 to 1, got " + formatVector(medium.albedo),
                     "albedo is the fraction of extinguished light scattered, per channel");
     if (b.find("emission") &&
-        !(nonNegative(medium.emission) && std::isfinite(medium.emission.x) &&
+        !(allNonNegative(medium.emission) && std::isfinite(medium.emission.x) &&
           std::isfinite(medium.emission.y) && std::isfinite(medium.emission.z)))
         return fail(at("emission"), "mist emission must be finite and not negative, got " +
                                         formatVector(medium.emission));

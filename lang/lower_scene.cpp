@@ -9,15 +9,6 @@
 
 namespace kerf {
 
-namespace {
-
-bool nonNegative(const Vec3& v) { return v.x >= 0 && v.y >= 0 && v.z >= 0; }
-bool finiteVector(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-}  // namespace
-
 void Lowering::lowerMaterial(const Statement& s, Material& m) {
     const PropertyBlock b(s.properties,
                           {{"color", PropertyType::Vector},
@@ -59,7 +50,7 @@ void Lowering::lowerMaterial(const Statement& s, Material& m) {
                                                 " must not be negative, got " + formatNumber(out));
     };
     const auto colour = [&](const char* name, Vec3& out) {
-        if (readVector(b, name, out) && !nonNegative(out))
+        if (readVector(b, name, out) && !allNonNegative(out))
             error(b.find(name)->valueLoc(), std::string("material ") + name +
                                                 " must not have negative components, got " +
                                                 formatVector(out));
@@ -185,7 +176,7 @@ void Lowering::checkCameraView(const Statement& s, const PropertyBlock& b,
               "fov is the vertical field of view in degrees, e.g. 40");
     for (const char* name : {"eye", "look_at", "up"}) {
         const Vec3& v = name[0] == 'e' ? camera.eye : name[0] == 'l' ? camera.lookAt : camera.up;
-        if (!finiteVector(v)) {
+        if (!allFinite(v)) {
             error(at(name),
                   std::string("camera ") + name + " is not finite, got " + formatVector(v));
             return;
@@ -198,7 +189,7 @@ void Lowering::checkCameraView(const Statement& s, const PropertyBlock& b,
               "look_at is the point the camera looks toward");
         return;
     }
-    if (!finiteVector(view)) {
+    if (!allFinite(view)) {
         error(at("look_at"),
               "camera look_at - eye is not finite (" + formatVector(view) +
                   "): they are too far apart",

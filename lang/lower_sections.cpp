@@ -8,14 +8,6 @@
 
 namespace kerf {
 
-namespace {
-
-bool finiteVector(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-}  // namespace
-
 void Lowering::lowerSection(const Statement& s, Scene& scene) {
     const PropertyBlock b(s.properties,
                           {{"point", PropertyType::Vector, true},
@@ -28,12 +20,12 @@ void Lowering::lowerSection(const Statement& s, Scene& scene) {
     ok &= readVector(b, "normal", plane.normal);
     ok &= readVector(b, "color", plane.color);
     if (!ok) return;
-    if (!finiteVector(plane.point)) {
+    if (!allFinite(plane.point)) {
         error(b.find("point")->valueLoc(),
               "section point must be finite, got " + formatVector(plane.point));
         ok = false;
     }
-    if (!finiteVector(plane.normal)) {
+    if (!allFinite(plane.normal)) {
         error(b.find("normal")->valueLoc(),
               "section normal must be finite, got " + formatVector(plane.normal));
         ok = false;
@@ -43,9 +35,8 @@ void Lowering::lowerSection(const Statement& s, Scene& scene) {
               "above the point");
         ok = false;
     }
-    if (const Property* c = b.find("color");
-        c && !(finiteVector(plane.color) && plane.color.x >= 0 && plane.color.y >= 0 &&
-               plane.color.z >= 0)) {
+    if (const Property* c = b.find("color"); c && !(allFinite(plane.color) && plane.color.x >= 0 &&
+                                                    plane.color.y >= 0 && plane.color.z >= 0)) {
         error(c->valueLoc(),
               "section color must not have negative components, got " + formatVector(plane.color));
         ok = false;

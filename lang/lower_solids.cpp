@@ -18,10 +18,6 @@ namespace kerf {
 
 namespace {
 
-bool finiteVector(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 double maxAbs(const Vec3& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
 
 /// True when |b − a| is zero or below what doubles can resolve at this distance from the
@@ -43,9 +39,9 @@ bool degenerateSegment(const Vec3& a, const Vec3& b) {
 
 std::string axisProblem(const char* what, const Vec3& from, const Vec3& to) {
     for (const auto& [name, v] : {std::pair<const char*, Vec3>{"from", from}, {"to", to}})
-        if (!finiteVector(v))
+        if (!allFinite(v))
             return std::string(what) + " " + name + " is not finite, got " + formatVector(v);
-    if (!finiteVector(to - from))
+    if (!allFinite(to - from))
         return std::string(what) + " axis to - from is not finite: from " + formatVector(from) +
                " and to " + formatVector(to) + " are more than about 1.8e308 apart";
     if (degenerateSegment(from, to))

@@ -12,10 +12,6 @@ namespace kerf {
 
 namespace {
 
-bool finite3(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 /// The surface-kind node under transforms, materials, motions and interiors, or null.
 const Node* surfaceBelow(const Node* node) {
     while (node) {
@@ -95,12 +91,12 @@ NodePtr Lowering::lowerDisc(const Solid& s) {
                   formatNumber(radius) + ", got " + formatNumber(inner));
         return nullptr;
     }
-    if (!finite3(center)) {
+    if (!allFinite(center)) {
         error(b.find("center")->valueLoc(),
               "disc center is not finite, got " + formatVector(center));
         return nullptr;
     }
-    if (!finite3(normal) || !(glm::length(normal) > 0) || !std::isfinite(glm::length(normal))) {
+    if (!allFinite(normal) || !(glm::length(normal) > 0) || !std::isfinite(glm::length(normal))) {
         error(b.find("normal") ? b.find("normal")->valueLoc() : s.loc,
               "disc normal must be a finite, non-zero vector, got " + formatVector(normal));
         return nullptr;
@@ -121,7 +117,7 @@ NodePtr Lowering::lowerTriangle(const Solid& s) {
     ok &= readVector(b, "c", p[2]);
     if (!ok) return nullptr;
     for (int i = 0; i < 3; ++i)
-        if (!finite3(p[i])) {
+        if (!allFinite(p[i])) {
             error(s.loc, std::string("triangle corner ") + char('a' + i) + " is not finite, got " +
                              formatVector(p[i]));
             return nullptr;

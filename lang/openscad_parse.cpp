@@ -23,7 +23,7 @@ const ScadArg* ScadCall::arg(const std::string& wanted, int position) const {
 
 namespace {
 
-struct Token {
+struct ScadToken {
     enum class Kind { End, Name, Number, String, Punct, Bad };
     Kind kind = Kind::End;
     std::string text;  ///< the name, the string's value, or the punctuation character
@@ -40,7 +40,7 @@ public:
 
     std::vector<ScadCall> program() {
         std::vector<ScadCall> calls;
-        while (mTok.kind != Token::Kind::End) {
+        while (mTok.kind != ScadToken::Kind::End) {
             ScadCall call;
             if (statement(call, 0)) {
                 if (!call.name.empty()) calls.push_back(std::move(call));
@@ -60,15 +60,17 @@ private:
 
     /// Skips to just after the next ';' or '}' at any depth, so the next statement parses.
     void recover() {
-        while (mTok.kind != Token::Kind::End) {
+        while (mTok.kind != ScadToken::Kind::End) {
             const bool stop =
-                mTok.kind == Token::Kind::Punct && (mTok.text == ";" || mTok.text == "}");
+                mTok.kind == ScadToken::Kind::Punct && (mTok.text == ";" || mTok.text == "}");
             advance();
             if (stop) return;
         }
     }
 
-    bool isPunct(const char* p) const { return mTok.kind == Token::Kind::Punct && mTok.text == p; }
+    bool isPunct(const char* p) const {
+        return mTok.kind == ScadToken::Kind::Punct && mTok.text == p;
+    }
 
     bool expect(const char* p, const char* where) {
         if (isPunct(p)) {
@@ -80,14 +82,14 @@ private:
         return false;
     }
 
-    static std::string describe(const Token& t) {
+    static std::string describe(const ScadToken& t) {
         switch (t.kind) {
-            case Token::Kind::End: return "the end of the file";
-            case Token::Kind::Name: return "'" + t.text + "'";
-            case Token::Kind::Number: return "a number";
-            case Token::Kind::String: return "a string";
-            case Token::Kind::Punct: return "'" + t.text + "'";
-            case Token::Kind::Bad: return "'" + t.text + "'";
+            case ScadToken::Kind::End: return "the end of the file";
+            case ScadToken::Kind::Name: return "'" + t.text + "'";
+            case ScadToken::Kind::Number: return "a number";
+            case ScadToken::Kind::String: return "a string";
+            case ScadToken::Kind::Punct: return "'" + t.text + "'";
+            case ScadToken::Kind::Bad: return "'" + t.text + "'";
         }
         return "?";
     }
@@ -104,12 +106,12 @@ private:
                                    std::to_string(kMaxCsgDepth) + " levels)");
             return false;
         }
-        if (mTok.kind == Token::Kind::Punct && mTok.text.size() == 1 &&
+        if (mTok.kind == ScadToken::Kind::Punct && mTok.text.size() == 1 &&
             std::string("%*#!").find(mTok.text[0]) != std::string::npos) {
             call.modifier = mTok.text[0];
             advance();
         }
-        if (mTok.kind != Token::Kind::Name) {
+        if (mTok.kind != ScadToken::Kind::Name) {
             error(mTok.offset, "expected a module name, found " + describe(mTok),
                   "a .csg file is a tree of calls such as cube(size = [1, 1, 1]);");
             return false;
@@ -126,7 +128,7 @@ private:
         if (isPunct("{")) {
             advance();
             while (!isPunct("}")) {
-                if (mTok.kind == Token::Kind::End) {
+                if (mTok.kind == ScadToken::Kind::End) {
                     error(call.pos.offset, "the block of '" + call.name + "' is not closed",
                           "add the missing '}'");
                     return false;
@@ -148,7 +150,7 @@ private:
         while (!isPunct(")")) {
             ScadArg a;
             a.pos = at(mTok.offset);
-            if (mTok.kind == Token::Kind::Name && peekIsAssign()) {
+            if (mTok.kind == ScadToken::Kind::Name && peekIsAssign()) {
                 a.name = mTok.text;
                 advance();
                 advance();  // '='
@@ -179,7 +181,7 @@ private:
         if (isPunct("-") || isPunct("+")) {
             const bool negative = mTok.text == "-";
             advance();
-            if (mTok.kind != Token::Kind::Number) {
+            if (mTok.kind != ScadToken::Kind::Number) {
                 error(mTok.offset, "expected a number after the sign, found " + describe(mTok),
                       "a .csg file holds literal values only");
                 return false;
@@ -190,17 +192,17 @@ private:
             return true;
         }
         switch (mTok.kind) {
-            case Token::Kind::Number:
+            case ScadToken::Kind::Number:
                 v.kind = ScadValue::Kind::Number;
                 v.number = mTok.number;
                 advance();
                 return true;
-            case Token::Kind::String:
+            case ScadToken::Kind::String:
                 v.kind = ScadValue::Kind::String;
                 v.text = mTok.text;
                 advance();
                 return true;
-            case Token::Kind::Name:
+            case ScadToken::Kind::Name:
                 if (mTok.text == "true" || mTok.text == "false") {
                     v.kind = ScadValue::Kind::Bool;
                     v.boolean = mTok.text == "true";
@@ -280,7 +282,7 @@ private:
 
     void advance() {
         skipSpace();
-        mTok = Token{};
+        mTok = ScadToken{};
         mTok.offset = static_cast<uint32_t>(mPos);
         if (mPos >= mText.size()) return;
         const char c = mText[mPos];
@@ -290,7 +292,7 @@ private:
         if (std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == '$') {
             const size_t start = mPos++;
             while (mPos < mText.size() && isNameChar(mText[mPos])) ++mPos;
-            mTok.kind = Token::Kind::Name;
+            mTok.kind = ScadToken::Kind::Name;
             mTok.text = mText.substr(start, mPos - start);
         } else if (std::isdigit(static_cast<unsigned char>(c)) ||
                    (c == '.' && mPos + 1 < mText.size() &&
@@ -299,11 +301,11 @@ private:
         } else if (c == '"') {
             string();
         } else if (std::string("()[]{},;=%*#!-+").find(c) != std::string::npos) {
-            mTok.kind = Token::Kind::Punct;
+            mTok.kind = ScadToken::Kind::Punct;
             mTok.text = std::string(1, c);
             ++mPos;
         } else {
-            mTok.kind = Token::Kind::Bad;
+            mTok.kind = ScadToken::Kind::Bad;
             mTok.text = std::string(1, c);
             error(mTok.offset, std::string("unexpected character '") + c + "'");
             ++mPos;
@@ -330,11 +332,11 @@ private:
             }
         }
         const std::string spelled = mText.substr(start, mPos - start);
-        mTok.kind = Token::Kind::Number;
+        mTok.kind = ScadToken::Kind::Number;
         mTok.number = std::strtod(spelled.c_str(), nullptr);
         if (!std::isfinite(mTok.number)) {
             error(mTok.offset, "number " + spelled + " is too large for a double");
-            mTok.kind = Token::Kind::Bad;
+            mTok.kind = ScadToken::Kind::Bad;
         }
     }
 
@@ -351,11 +353,11 @@ private:
         }
         if (mPos >= mText.size()) {
             error(mTok.offset, "string is not closed", "add the missing '\"'");
-            mTok.kind = Token::Kind::Bad;
+            mTok.kind = ScadToken::Kind::Bad;
             return;
         }
         ++mPos;
-        mTok.kind = Token::Kind::String;
+        mTok.kind = ScadToken::Kind::String;
         mTok.text = std::move(out);
     }
 
@@ -363,7 +365,7 @@ private:
     uint32_t mFile;
     DiagnosticSink& mSink;
     size_t mPos = 0;
-    Token mTok;
+    ScadToken mTok;
 };
 
 }  // namespace

@@ -11,7 +11,7 @@ namespace {
 
 using Node = TriangleBvh::Node;
 
-double halfArea(const Node& n) {
+double nodeHalfArea(const Node& n) {
     const double x = double(n.hi[0]) - n.lo[0], y = double(n.hi[1]) - n.lo[1],
                  z = double(n.hi[2]) - n.lo[2];
     return x * y + y * z + z * x;
@@ -28,8 +28,8 @@ struct Collapser {
             int best = -1;
             double bestArea = -1.0;
             for (size_t k = 0; k < lanes.size(); ++k)
-                if (bin[lanes[k]].count == 0 && halfArea(bin[lanes[k]]) > bestArea) {
-                    bestArea = halfArea(bin[lanes[k]]);
+                if (bin[lanes[k]].count == 0 && nodeHalfArea(bin[lanes[k]]) > bestArea) {
+                    bestArea = nodeHalfArea(bin[lanes[k]]);
                     best = int(k);
                 }
             if (best < 0) break;

@@ -78,10 +78,6 @@ void collect(const aiScene& scene, const aiNode& node, const glm::dmat4& parent,
     }
 }
 
-bool finite(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 /// Position, normal and UV of one vertex, compared exactly (with -0 equal to +0).
 struct VertexKey {
     double v[8];
@@ -175,10 +171,10 @@ private:
     uint32_t joinedVertex(const aiMesh& m, const NodeTransform& transform, unsigned i) {
         const aiVector3D& a = m.mVertices[i];
         const Vec3 raw(a.x, a.y, a.z);
-        if (!finite(raw))
+        if (!allFinite(raw))
             fail(mPath, "vertex " + std::to_string(i) + " has a non-finite coordinate");
         const Vec3 pos = Vec3(transform.worldFromMesh * glm::dvec4(raw, 1.0));
-        if (!finite(pos))
+        if (!allFinite(pos))
             fail(mPath, "vertex " + std::to_string(i) + " is not finite once placed by its node");
         VertexKey key{{pos.x, pos.y, pos.z, 0, 0, 0, 0, 0}};
         Vec3 normal(0.0);

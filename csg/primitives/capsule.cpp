@@ -17,7 +17,7 @@ namespace {
 
 // Directions closer to the axis than 2^-52 rad are parallel to it (as for the cylinder): the
 // end spheres then give both ends of the span.
-constexpr double kParallel2 = 0x1p-104;
+constexpr double kAlongAxis2 = 0x1p-104;
 
 /// The earliest entry and the latest exit seen so far, with their local normals.
 struct Extremes {

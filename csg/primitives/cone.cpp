@@ -15,7 +15,7 @@ namespace {
 
 /// A range of t where the ray is inside; `side*` says whether an end lies on the lateral
 /// surface (else on a cap, or at ±inf).
-struct Piece {
+struct InsideSpan {
     double lo, hi;
     bool sideLo, sideHi;
 };
@@ -134,7 +134,7 @@ private:
         const double ex = v0 * dx - w1 * gx, ey = v0 * dy - w1 * gy, cross = gx * dy - gy * dx;
         const double disc = ex * ex + ey * ey - cross * cross;
 
-        Piece pieces[2];
+        InsideSpan pieces[2];
         int count = 0;
         if (a > 0.0) {  // one nappe crossed: inside between the roots
             if (!(disc > 0.0)) return;
@@ -151,7 +151,8 @@ private:
             }
         } else if (h != 0.0) {  // parallel to the slant: 2B·t + C ≤ 0 is linear
             const double t = std::ldexp(-c / (2.0 * h), tExp);
-            pieces[count++] = h > 0.0 ? Piece{-kInf, t, false, true} : Piece{t, kInf, true, false};
+            pieces[count++] =
+                h > 0.0 ? InsideSpan{-kInf, t, false, true} : InsideSpan{t, kInf, true, false};
         } else {
             if (!(c <= 0.0)) return;
             pieces[count++] = {-kInf, kInf, false, false};
@@ -162,7 +163,7 @@ private:
         bool found = false;
         Boundary bin, bout;
         for (int i = 0; i < count; ++i) {
-            const Piece& p = pieces[i];
+            const InsideSpan& p = pieces[i];
             const bool sideIn = p.lo > tin, sideOut = p.hi < tout;
             const double lo = sideIn ? p.lo : tin, hi = sideOut ? p.hi : tout;
             if (!(lo < hi)) continue;

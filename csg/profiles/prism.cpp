@@ -14,7 +14,7 @@ namespace kerf {
 namespace {
 
 /// A segment as a cubic Bézier's control points (a line: its ends, flagged).
-struct Piece {
+struct BezierPiece {
     std::array<Vec2, 4> p;
     bool line = true;
 };
@@ -53,9 +53,9 @@ public:
           mForm(static_cast<const Primitive&>(*mImplicit)) {
         mBounds = mImplicit->bounds();
         for (const PathLoop& loop : shape.loops) {
-            std::vector<Piece> pieces;
+            std::vector<BezierPiece> pieces;
             for (const PathSegment& s : loop.segments) {
-                Piece piece;
+                BezierPiece piece;
                 switch (s.kind) {
                     case PathSegment::Kind::Line: piece.p = {s.p[0], s.p[0], s.p[1], s.p[1]}; break;
                     case PathSegment::Kind::Quadratic:  // raised to a cubic, as
@@ -97,7 +97,7 @@ private:
     /// of the segment's end points, computed as the neighbours compute them. The line crosses
     /// where the class g ≤ 0 changes: on each piece of [0, 1] where g is monotone (split at
     /// the roots of g'), at most once, found by bisection; a touch changes nothing.
-    static void crossSegment(const Piece& piece, Vec2 o, Vec2 d, double dd,
+    static void crossSegment(const BezierPiece& piece, Vec2 o, Vec2 d, double dd,
                              std::vector<Crossing>& out) {
         std::array<double, 4> g;
         for (int i = 0; i < 4; ++i) g[i] = d.x * (piece.p[i].y - o.y) - d.y * (piece.p[i].x - o.x);
@@ -166,7 +166,7 @@ private:
         std::vector<Crossing>& hits = mScratch;
         hits.clear();
         for (const auto& loop : mLoops)
-            for (const Piece& piece : loop) crossSegment(piece, p, Vec2(1.0, 0.0), 1.0, hits);
+            for (const BezierPiece& piece : loop) crossSegment(piece, p, Vec2(1.0, 0.0), 1.0, hits);
         bool odd = false;
         for (const Crossing& c : hits) odd ^= c.t > 0.0;
         return odd;
@@ -194,7 +194,7 @@ private:
         hits.clear();
         const double dd = glm::dot(d, d);
         for (const auto& loop : mLoops)
-            for (const Piece& piece : loop) crossSegment(piece, o, d, dd, hits);
+            for (const BezierPiece& piece : loop) crossSegment(piece, o, d, dd, hits);
         std::sort(hits.begin(), hits.end(),
                   [](const Crossing& x, const Crossing& y) { return x.t < y.t; });
         // The line starts and ends outside: crossings pair up into inside intervals.
@@ -219,7 +219,7 @@ private:
         }
     }
 
-    std::vector<std::vector<Piece>> mLoops;
+    std::vector<std::vector<BezierPiece>> mLoops;
     double mY0, mY1;
     NodePtr mImplicit;
     const Primitive& mForm;

@@ -15,11 +15,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-ExprId sub(ExprGraph& g, ExprId a, ExprId b) { return g.binary(Op::Sub, a, b); }
-ExprId add(ExprGraph& g, ExprId a, ExprId b) { return g.binary(Op::Add, a, b); }
-ExprId mul(ExprGraph& g, ExprId a, ExprId b) { return g.binary(Op::Mul, a, b); }
-ExprId num(ExprGraph& g, double v) { return g.constant(v); }
-
 Bounds2 hull(const Bounds2& a, const Bounds2& b) {
     return {glm::min(a.lo, b.lo), glm::max(a.hi, b.hi)};
 }
@@ -133,9 +128,9 @@ Profile profileCircle(Vec2 center, double radius) {
     plain->radius = radius;
     p.plain = std::move(plain);
     p.distance = [center, radius](ExprGraph& g, ExprId u, ExprId v) {
-        const ExprId du = sub(g, u, num(g, center.x)), dv = sub(g, v, num(g, center.y));
-        return sub(g, g.unary(Op::Sqrt, add(g, g.unary(Op::Square, du), g.unary(Op::Square, dv))),
-                   num(g, radius));
+        const ExprId du = g.sub(u, g.constant(center.x)), dv = g.sub(v, g.constant(center.y));
+        return g.sub(g.unary(Op::Sqrt, g.add(g.unary(Op::Square, du), g.unary(Op::Square, dv))),
+                     g.constant(radius));
     };
     return p;
 }
@@ -155,12 +150,12 @@ Profile profileRect(Vec2 lo, Vec2 hi) {
         // max(max(qx, qy), min(|q|, qx + qy)) is exact everywhere. The textbook |max(q, 0)| is
         // avoided: its sqrt is 0 over the whole inside, where its slope is unbounded and root
         // isolation could never prove an interval free of roots.
-        const ExprId qx = sub(g, g.unary(Op::Abs, sub(g, u, num(g, c.x))), num(g, h.x));
-        const ExprId qy = sub(g, g.unary(Op::Abs, sub(g, v, num(g, c.y))), num(g, h.y));
+        const ExprId qx = g.sub(g.unary(Op::Abs, g.sub(u, g.constant(c.x))), g.constant(h.x));
+        const ExprId qy = g.sub(g.unary(Op::Abs, g.sub(v, g.constant(c.y))), g.constant(h.y));
         const ExprId corner =
-            g.unary(Op::Sqrt, add(g, g.unary(Op::Square, qx), g.unary(Op::Square, qy)));
+            g.unary(Op::Sqrt, g.add(g.unary(Op::Square, qx), g.unary(Op::Square, qy)));
         return g.binary(Op::Max, g.binary(Op::Max, qx, qy),
-                        g.binary(Op::Min, corner, add(g, qx, qy)));
+                        g.binary(Op::Min, corner, g.add(qx, qy)));
     };
     return p;
 }
@@ -171,7 +166,7 @@ Profile profilePath(PathShape shape) {
     p.plain = pathOutline(shape);
     auto field = pathField(std::move(shape));
     p.distance = [field](ExprGraph& g, ExprId u, ExprId v) {
-        return g.field(u, v, num(g, 0.0), field);
+        return g.field(u, v, g.constant(0.0), field);
     };
     return p;
 }
@@ -217,7 +212,7 @@ Profile profileOffset(Profile p, double r) {
     out.bounds = {p.bounds.lo - Vec2(r), p.bounds.hi + Vec2(r)};
     if (r < 0.0) out.bounds = p.bounds;  // shrinking: the old box still holds it
     out.distance = [inner = std::move(p.distance), r](ExprGraph& g, ExprId u, ExprId v) {
-        return sub(g, inner(g, u, v), num(g, r));
+        return g.sub(inner(g, u, v), g.constant(r));
     };
     return out;
 }
@@ -246,11 +241,11 @@ Profile profileTransform(Profile p, const double m[6]) {
     out.bounds = {lo - pad, hi + pad};
     out.distance = [inner = std::move(p.distance), ia, ib, ic, id, tx, ty, smin](
                        ExprGraph& g, ExprId u, ExprId v) {
-        const ExprId du = sub(g, u, num(g, tx)), dv = sub(g, v, num(g, ty));
-        const ExprId pu = add(g, mul(g, num(g, ia), du), mul(g, num(g, ib), dv));
-        const ExprId pv = add(g, mul(g, num(g, ic), du), mul(g, num(g, id), dv));
+        const ExprId du = g.sub(u, g.constant(tx)), dv = g.sub(v, g.constant(ty));
+        const ExprId pu = g.add(g.mul(g.constant(ia), du), g.mul(g.constant(ib), dv));
+        const ExprId pv = g.add(g.mul(g.constant(ic), du), g.mul(g.constant(id), dv));
         const ExprId e = inner(g, pu, pv);
-        return smin == 1.0 ? e : mul(g, num(g, smin), e);
+        return smin == 1.0 ? e : g.mul(g.constant(smin), e);
     };
     if (p.plain) out.plain = mappedOutline(*p.plain, m);
     return out;
@@ -280,33 +275,35 @@ NodePtr makeExtrude(const Profile& profile, const ExtrudeOptions& o) {
     const double y0 = o.center ? -0.5 * o.height : 0.0;
     const ExprId x = g.x(), y = g.y(), z = g.z();
     // t = (y − y0)/h, 0 at the bottom, 1 at the top.
-    const ExprId t = mul(g, sub(g, y, num(g, y0)), num(g, 1.0 / o.height));
+    const ExprId t = g.mul(g.sub(y, g.constant(y0)), g.constant(1.0 / o.height));
     ExprId u = x, v = z;
     if (o.twist != 0.0) {
         // The profile at t is turned about +y by θ = twist·t; undo it: (u, v) = R(−θ)(x, z).
-        const ExprId theta = mul(g, t, num(g, o.twist * kPi / 180.0));
+        const ExprId theta = g.mul(t, g.constant(o.twist * kPi / 180.0));
         const ExprId c = g.unary(Op::Cos, theta), s = g.unary(Op::Sin, theta);
-        u = sub(g, mul(g, x, c), mul(g, z, s));
-        v = add(g, mul(g, x, s), mul(g, z, c));
+        u = g.sub(g.mul(x, c), g.mul(z, s));
+        v = g.add(g.mul(x, s), g.mul(z, c));
     }
     ExprId d;
     if (o.scale != Vec2(1.0)) {
         // The profile at t is scaled about the axis by kx = 1 + (sx − 1)t along u and ky along
         // v: d2(u/kx, v/ky) has the scaled profile's sign, and min(kx, ky)·d2(u/kx, v/ky) is
         // never more than its in-plane distance in magnitude (and is it when kx = ky).
-        const ExprId kx = add(g, num(g, 1.0), mul(g, t, num(g, o.scale.x - 1.0)));
-        const ExprId ky =
-            o.scale.y == o.scale.x ? kx : add(g, num(g, 1.0), mul(g, t, num(g, o.scale.y - 1.0)));
-        const ExprId one = num(g, 1.0);
-        const ExprId su = mul(g, u, g.binary(Op::Div, one, kx)),
-                     sv = mul(g, v, g.binary(Op::Div, one, ky));
+        const ExprId kx = g.add(g.constant(1.0), g.mul(t, g.constant(o.scale.x - 1.0)));
+        const ExprId ky = o.scale.y == o.scale.x
+                              ? kx
+                              : g.add(g.constant(1.0), g.mul(t, g.constant(o.scale.y - 1.0)));
+        const ExprId one = g.constant(1.0);
+        const ExprId su = g.mul(u, g.binary(Op::Div, one, kx)),
+                     sv = g.mul(v, g.binary(Op::Div, one, ky));
         const ExprId k = kx == ky ? kx : g.binary(Op::Min, kx, ky);
-        d = mul(g, k, profile.distance(g, su, sv));
+        d = g.mul(k, profile.distance(g, su, sv));
     } else {
         d = profile.distance(g, u, v);
     }
     const double yc = y0 + 0.5 * o.height;
-    const ExprId slab = sub(g, g.unary(Op::Abs, sub(g, y, num(g, yc))), num(g, 0.5 * o.height));
+    const ExprId slab =
+        g.sub(g.unary(Op::Abs, g.sub(y, g.constant(yc))), g.constant(0.5 * o.height));
     const ExprId f = g.binary(Op::Max, d, slab);
 
     Bounds2 b = profile.bounds;
@@ -327,7 +324,7 @@ NodePtr makeExtrude(const Profile& profile, const ExtrudeOptions& o) {
 NodePtr makeRevolve(const Profile& profile, double degrees) {
     ExprGraph g;
     const ExprId x = g.x(), y = g.y(), z = g.z();
-    const ExprId r = g.unary(Op::Sqrt, add(g, g.unary(Op::Square, x), g.unary(Op::Square, z)));
+    const ExprId r = g.unary(Op::Sqrt, g.add(g.unary(Op::Square, x), g.unary(Op::Square, z)));
     ExprId f = profile.distance(g, r, y);
     if (degrees < 360.0) {
         // The wedge from +x toward +z: z ≥ 0, and the side of the ray at `degrees` facing back.
@@ -340,7 +337,7 @@ NodePtr makeRevolve(const Profile& profile, double degrees) {
                           : degrees == 270.0 ? -1.0
                                              : std::sin(a);
         const ExprId first = g.unary(Op::Neg, z);
-        const ExprId second = sub(g, mul(g, num(g, ca), z), mul(g, num(g, sa), x));
+        const ExprId second = g.sub(g.mul(g.constant(ca), z), g.mul(g.constant(sa), x));
         const ExprId wedge = g.binary(degrees <= 180.0 ? Op::Max : Op::Min, first, second);
         f = g.binary(Op::Max, f, wedge);
     }

@@ -69,6 +69,9 @@ public:
     ExprId z();
     ExprId unary(Op op, ExprId a);
     ExprId binary(Op op, ExprId a, ExprId b);
+    ExprId add(ExprId a, ExprId b) { return binary(Op::Add, a, b); }
+    ExprId sub(ExprId a, ExprId b) { return binary(Op::Sub, a, b); }
+    ExprId mul(ExprId a, ExprId b) { return binary(Op::Mul, a, b); }
     ExprId powInt(ExprId a, int n);
     /// Gradient noise at (x, y, z) with the given seed (an integer below 2⁵³, so that the
     /// double `value` holds it exactly).

@@ -79,12 +79,12 @@ T noiseValue(const T p[3], uint64_t seed) {
 }
 
 /// A value with its gradient, for the point gradient.
-struct Dual {
+struct GradDual {
     double v;
     Vec3 g;
 };
 
-Dual lerp(const Dual& a, const Dual& b, const Dual& t) {
+GradDual lerp(const GradDual& a, const GradDual& b, const GradDual& t) {
     return {a.v + t.v * (b.v - a.v), a.g + t.g * (b.v - a.v) + t.v * (b.g - a.g)};
 }
 
@@ -226,7 +226,7 @@ double gradientNoise(const Vec3& p, uint64_t seed, Vec3& gradient) {
     int64_t cell[3];
     double o[3];
     if (!locate(q, cell, o)) return noiseValue(q, seed);  // NaN, or 0 far out
-    Dual c[2][2][2];
+    GradDual c[2][2][2];
     for (int a = 0; a < 2; ++a)
         for (int b = 0; b < 2; ++b)
             for (int d = 0; d < 2; ++d) {
@@ -234,12 +234,12 @@ double gradientNoise(const Vec3& p, uint64_t seed, Vec3& gradient) {
                 c[a][b][d] = {g[0] * (o[0] - a) + g[1] * (o[1] - b) + g[2] * (o[2] - d),
                               Vec3(g[0], g[1], g[2])};
             }
-    const Dual u{fade(o[0]), Vec3(fadeSlope(o[0]), 0, 0)},
+    const GradDual u{fade(o[0]), Vec3(fadeSlope(o[0]), 0, 0)},
         v{fade(o[1]), Vec3(0, fadeSlope(o[1]), 0)}, w{fade(o[2]), Vec3(0, 0, fadeSlope(o[2]))};
-    const Dual v0 = lerp(lerp(c[0][0][0], c[1][0][0], u), lerp(c[0][1][0], c[1][1][0], u), v);
-    const Dual v1 = lerp(lerp(c[0][0][1], c[1][0][1], u), lerp(c[0][1][1], c[1][1][1], u), v);
+    const GradDual v0 = lerp(lerp(c[0][0][0], c[1][0][0], u), lerp(c[0][1][0], c[1][1][0], u), v);
+    const GradDual v1 = lerp(lerp(c[0][0][1], c[1][0][1], u), lerp(c[0][1][1], c[1][1][1], u), v);
     // The same operations as noiseValue's on the values, so the same bits.
-    const Dual n = lerp(v0, v1, w);
+    const GradDual n = lerp(v0, v1, w);
     const double value = std::clamp(n.v, -1.0, 1.0);
     if (std::fabs(value) != 1.0) gradient = n.g;  // 0 where the clamp holds
     return value;

@@ -92,7 +92,7 @@ private:
 
 OIIO::ImageInput* createLinearInput() { return new LinearInput; }
 
-int fail(const std::string& message, char* error, size_t errorSize) {
+int failWith(const std::string& message, char* error, size_t errorSize) {
     if (errorSize > 0) std::snprintf(error, errorSize, "%s", message.c_str());
     return 1;
 }
@@ -164,7 +164,7 @@ int textureOpen(const char* path, KerfTexture** texture, int* width, int* height
         }
         std::string why;
         std::shared_ptr<LinearPixels> pixels = decode(path, why);
-        if (!pixels) return fail(why, error, errorSize);
+        if (!pixels) return failWith(why, error, errorSize);
         std::lock_guard<std::mutex> lock(t.mutex);
         startSystem(t);
         // A name no file has, so the cache never looks on disk for it.
@@ -176,12 +176,12 @@ int textureOpen(const char* path, KerfTexture** texture, int* width, int* height
         }
         const OIIO::ustring uname(name);
         if (!t.cache->add_file(uname, createLinearInput))
-            return fail(t.cache->geterror(), error, errorSize);
+            return failWith(t.cache->geterror(), error, errorSize);
         OIIO::TextureSystem::TextureHandle* handle = t.system->get_texture_handle(uname);
         if (handle == nullptr || !t.system->good(handle)) {
             std::string message = t.system->geterror();
-            return fail(message.empty() ? "the texture system refused it" : message, error,
-                        errorSize);
+            return failWith(message.empty() ? "the texture system refused it" : message, error,
+                            errorSize);
         }
         auto made = std::make_unique<KerfTexture>(
             KerfTexture{handle, pixels->channels, pixels->width, pixels->height});
@@ -191,7 +191,7 @@ int textureOpen(const char* path, KerfTexture** texture, int* width, int* height
         t.byPath[path] = std::move(made);
         return 0;
     } catch (const std::exception& e) {  // nothing may cross the C boundary
-        return fail(e.what(), error, errorSize);
+        return failWith(e.what(), error, errorSize);
     }
 }
 

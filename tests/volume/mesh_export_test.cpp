@@ -19,8 +19,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-TriangleMesh meshOf(const std::string& model, double voxel, MeshExportStats& stats,
-                    double adaptivity = 0.0) {
+WatertightMesh meshOf(const std::string& model, double voxel, MeshExportStats& stats,
+                      double adaptivity = 0.0) {
     const Scene scene = test::compiledScene(model, "mesh_export_test.kerf");
     MeshExportOptions options;
     options.voxel = voxel;
@@ -31,7 +31,7 @@ TriangleMesh meshOf(const std::string& model, double voxel, MeshExportStats& sta
 
 /// Counts every directed edge: a closed, manifold, consistently wound mesh has each directed
 /// edge once and its reverse once. Returns how many undirected edges break that.
-size_t badEdges(const TriangleMesh& mesh) {
+size_t badEdges(const WatertightMesh& mesh) {
     std::map<std::pair<uint32_t, uint32_t>, int> directed;
     for (const auto& t : mesh.triangles)
         for (int k = 0; k < 3; ++k) ++directed[{t[size_t(k)], t[size_t((k + 1) % 3)]}];
@@ -43,7 +43,7 @@ size_t badEdges(const TriangleMesh& mesh) {
     return bad;
 }
 
-void requireWatertight(const TriangleMesh& mesh) {
+void requireWatertight(const WatertightMesh& mesh) {
     REQUIRE(mesh.triangles.size() > 100);
     CHECK(badEdges(mesh) == 0);
     size_t malformed = 0;  // a repeated corner or an index past the vertices
@@ -65,7 +65,7 @@ TEST_CASE("mesh_export/sphere: watertight, vertices on the sphere, volume error 
     for (const double h : {0.1, 0.05}) {
         INFO("voxel " << h);
         MeshExportStats stats;
-        const TriangleMesh mesh = meshOf(kSphere, h, stats);
+        const WatertightMesh mesh = meshOf(kSphere, h, stats);
         requireWatertight(mesh);
         // Every vertex on the sphere after placement (a root found along the radius).
         double worstVertex = 0.0;
@@ -120,7 +120,7 @@ TEST_CASE("mesh_export/box minus sphere keeps the box's edges and corner") {
             "sphere { center <%.17g, %.17g, %.17g> radius 0.7 } };",
             k.lo.x, k.lo.y, k.lo.z, k.hi.x, k.hi.y, k.hi.z, k.hi.x, k.hi.y, k.hi.z);
         MeshExportStats stats;
-        const TriangleMesh mesh = meshOf(model, k.h, stats);
+        const WatertightMesh mesh = meshOf(model, k.h, stats);
         requireWatertight(mesh);
         const double tol = 1e-6 * k.h;
         // Distance from v to the box edge along `axis` at the corners' other two coordinates.
@@ -159,7 +159,7 @@ TEST_CASE("mesh_export/box minus sphere keeps the box's edges and corner") {
 
 TEST_CASE("mesh_export/torus: watertight, volume 2 pi^2 R r^2 within O(h^2)") {
     MeshExportStats stats;
-    const TriangleMesh mesh =
+    const WatertightMesh mesh =
         meshOf("object torus { major 1 minor 0.3 } rotate <20, 10, 0> translate <0.05, 0.1, 0>;",
                0.05, stats);
     requireWatertight(mesh);
@@ -180,7 +180,7 @@ TEST_CASE("mesh_export/gyroid ball model: watertight, volume within the model's 
         options.adaptivity = adaptivity;
         options.measure = true;
         MeshExportStats stats;
-        const TriangleMesh mesh = exportMesh(scene.objects, options, stats);
+        const WatertightMesh mesh = exportMesh(scene.objects, options, stats);
         CHECK(stats.unboundedSkipped == 1);  // the floor
         requireWatertight(mesh);
         CHECK(stats.meshVolume > stats.modelVolume.lo);
@@ -213,8 +213,8 @@ TEST_CASE("mesh_export/the same mesh whatever the thread count") {
     options.voxel = 0.08;
     options.adaptivity = 0.2;
     MeshExportStats stats;
-    const TriangleMesh many = exportMesh(scene.objects, options, stats);
-    TriangleMesh one;
+    const WatertightMesh many = exportMesh(scene.objects, options, stats);
+    WatertightMesh one;
     {
         tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
         one = exportMesh(scene.objects, options, stats);
@@ -239,7 +239,7 @@ TEST_CASE("mesh_export/a model scaled by 1e-6 or 1e6 meshes alike at a scaled vo
                       "object sphere { center <%.17g, %.17g, %.17g> radius %.17g };", 0.1 * s,
                       0.2 * s, 0.3 * s, s);
         MeshExportStats stats;
-        const TriangleMesh mesh = meshOf(model, 0.093 * s, stats);
+        const WatertightMesh mesh = meshOf(model, 0.093 * s, stats);
         requireWatertight(mesh);
         triangles[i] = mesh.triangles.size();
         relativeError[i] = (4.0 / 3.0 * kPi * s * s * s - stats.meshVolume) / (s * s * s);

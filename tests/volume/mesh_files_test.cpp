@@ -105,7 +105,7 @@ ReadMesh readStl(const std::string& bytes) {
     return m;
 }
 
-TriangleMesh sphereMesh() {
+WatertightMesh sphereMesh() {
     const Scene scene = test::compiledScene("object sphere { center <0.1, -2, 3e3> radius 1.5 };");
     MeshExportOptions options;
     options.voxel = 0.25;
@@ -113,7 +113,7 @@ TriangleMesh sphereMesh() {
     return exportMesh(scene.objects, options, stats);
 }
 
-MeshArrays arraysOf(const TriangleMesh& mesh) {
+MeshArrays arraysOf(const WatertightMesh& mesh) {
     return {&mesh.vertices[0].x, mesh.vertices.size(), mesh.triangles[0].data(),
             mesh.triangles.size()};
 }
@@ -121,7 +121,7 @@ MeshArrays arraysOf(const TriangleMesh& mesh) {
 }  // namespace
 
 TEST_CASE("mesh_files/OBJ, PLY and STL read back to the same mesh") {
-    const TriangleMesh mesh = sphereMesh();
+    const WatertightMesh mesh = sphereMesh();
     REQUIRE(mesh.triangles.size() > 50);
     const MeshArrays arrays = arraysOf(mesh);
     test::ScratchFolder folder;

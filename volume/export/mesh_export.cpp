@@ -2,6 +2,7 @@
 #include "volume/export/mesh_export.h"
 
 #include "csg/primitives/surfaces.h"
+#include "csg/stopwatch.h"
 #include "csg/tape/tree_tape.h"
 #include "volume/export/vdb_mesh.h"
 
@@ -10,16 +11,8 @@
 
 namespace kerf {
 
-namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-}  // namespace
-
-TriangleMesh exportMesh(const std::vector<NodePtr>& objects, const MeshExportOptions& options,
-                        MeshExportStats& stats) {
+WatertightMesh exportMesh(const std::vector<NodePtr>& objects, const MeshExportOptions& options,
+                          MeshExportStats& stats) {
     stats = MeshExportStats{};
     if (!(options.adaptivity >= 0.0 && options.adaptivity <= 1.0))
         throw MeshInputError("--adaptivity must be a number from 0 to 1");
@@ -68,7 +61,7 @@ TriangleMesh exportMesh(const std::vector<NodePtr>& objects, const MeshExportOpt
     splitQuads(field, polygons.points, polygons.quads, polygons.triangles);
     stats.secondsPlace = secondsSince(t0);
 
-    TriangleMesh mesh{std::move(polygons.points), std::move(polygons.triangles)};
+    WatertightMesh mesh{std::move(polygons.points), std::move(polygons.triangles)};
     if (options.measure) {
         t0 = std::chrono::steady_clock::now();
         stats.distance = measureSurfaceDistance(field, mesh.vertices, mesh.triangles);

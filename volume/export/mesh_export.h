@@ -21,7 +21,9 @@ struct MeshExportOptions {
     bool measure = false;     ///< also measure the error and volumes (stats)
 };
 
-struct TriangleMesh {
+/// What `kerf mesh` writes: its own type, not mesh/triangle_mesh.h's imported TriangleMesh (no
+/// normals, UVs or source file; closed by construction).
+struct WatertightMesh {
     std::vector<Vec3> vertices;
     /// Counter-clockwise seen from outside; every edge shared by exactly two triangles.
     std::vector<std::array<uint32_t, 3>> triangles;
@@ -46,7 +48,7 @@ struct MeshExportStats {
 /// The mesh of the union of the bounded objects; `stats` is reset, then filled. Throws
 /// MeshInputError for a bad voxel or adaptivity, a voxel too fine for the caps
 /// (volume/export/mesh_field.h), or no bounded object.
-TriangleMesh exportMesh(const std::vector<NodePtr>& objects, const MeshExportOptions& options,
-                        MeshExportStats& stats);
+WatertightMesh exportMesh(const std::vector<NodePtr>& objects, const MeshExportOptions& options,
+                          MeshExportStats& stats);
 
 }  // namespace kerf

@@ -59,8 +59,8 @@ float signedValue(double d, const Tape& tape, const openvdb::Coord& c, double vo
 /// mesh. Each round tests only the new neighbours of the last round's voxels, leaf by leaf
 /// in parallel, and applies the results in leaf order, so the grid does not depend on the
 /// threads. Returns the distance queries made.
-uint64_t growBand(openvdb::FloatGrid& grid, const TriangleMesh& mesh, const MeshDistance& distance,
-                  double voxel, double band, const Tape& tape) {
+uint64_t growBand(openvdb::FloatGrid& grid, const WatertightMesh& mesh,
+                  const MeshDistance& distance, double voxel, double band, const Tape& tape) {
     const double width = band * voxel;
     using BoolAccessor = openvdb::tree::ValueAccessor<openvdb::BoolTree>;
     auto candidates = std::make_unique<openvdb::BoolTree>(false);
@@ -138,7 +138,7 @@ struct LevelSetFile::Impl {
 LevelSetFile::LevelSetFile() : mImpl(std::make_unique<Impl>()) { openvdb::initialize(); }
 LevelSetFile::~LevelSetFile() = default;
 
-LevelSetFile::Added LevelSetFile::add(const std::string& name, const TriangleMesh& mesh,
+LevelSetFile::Added LevelSetFile::add(const std::string& name, const WatertightMesh& mesh,
                                       double voxel, double band, const Tape& tape) {
     const float background = float(band * voxel);
     openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(background);

@@ -28,7 +28,7 @@ public:
     /// voxels nearer than band·voxel to the closed `mesh` are active and hold their exact
     /// distance to it (world units) with the sign of `tape` at the voxel (f ≤ 0: inside,
     /// negative); inactive values are ±band·voxel. An empty mesh gives an empty grid.
-    Added add(const std::string& name, const TriangleMesh& mesh, double voxel, double band,
+    Added add(const std::string& name, const WatertightMesh& mesh, double voxel, double band,
               const Tape& tape);
 
     /// The whole .vdb file.

@@ -5,6 +5,7 @@
 #include "volume/export/voxelize.h"
 
 #include "csg/primitives/surfaces.h"
+#include "csg/stopwatch.h"
 #include "csg/tape/tree_tape.h"
 #include "io/atomic_file.h"
 #include "volume/export/vdb_voxelize_writer.h"
@@ -23,10 +24,6 @@ std::string number(double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.4g", v);
     return buf;
-}
-
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 /// An object to voxelize.
@@ -133,7 +130,7 @@ VoxelizedGrid voxelizeObject(const Planned& p, const std::vector<NodePtr>& objec
     grid.name = objectGridName(p.object);
     grid.estimatedVoxels = uint64_t(p.estimate.voxels);
     grid.cellsClassified = p.estimate.cells;
-    TriangleMesh mesh;
+    WatertightMesh mesh;
     if (!p.bounds.empty()) {
         grid.denseVoxels = 1.0;
         for (int a = 0; a < 3; ++a)

@@ -53,7 +53,7 @@ size_t MeshDistance::KeyHash::operator()(const BlockKey& k) const {
 
 int64_t MeshDistance::blockOf(double x) const { return int64_t(std::floor(x / mBlock)); }
 
-MeshDistance::MeshDistance(const TriangleMesh& mesh, double voxel, double reach)
+MeshDistance::MeshDistance(const WatertightMesh& mesh, double voxel, double reach)
     : mMesh(mesh), mBlock(std::max(8.0 * voxel, 2.0 * reach)) {
     mBoxes.reserve(mesh.triangles.size());
     for (uint32_t t = 0; t < mesh.triangles.size(); ++t) {

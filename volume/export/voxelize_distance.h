@@ -24,7 +24,7 @@ namespace kerf {
 class MeshDistance {
 public:
     /// `mesh` is kept by reference. Queries are exact up to `reach` (model units).
-    MeshDistance(const TriangleMesh& mesh, double voxel, double reach);
+    MeshDistance(const WatertightMesh& mesh, double voxel, double reach);
 
     /// The distance from `p` to the nearest triangle when it is below `bound` (≤ reach), else
     /// `bound`. `hint` is a triangle to try first (or kNoHint); it becomes the nearest found.
@@ -40,7 +40,7 @@ private:
     };
     int64_t blockOf(double x) const;
 
-    const TriangleMesh& mMesh;
+    const WatertightMesh& mMesh;
     double mBlock;                ///< a block's side, model units
     std::vector<Bounds3> mBoxes;  ///< per triangle
     struct Block {

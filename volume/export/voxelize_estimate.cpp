@@ -15,7 +15,7 @@ namespace kerf {
 
 namespace {
 
-struct Region {
+struct EstimateRegion {
     std::array<int64_t, 3> corner;  ///< in regions
     int64_t size;                   ///< in regions
     std::shared_ptr<const Tape> tape;
@@ -35,14 +35,14 @@ BandEstimate estimateBand(std::shared_ptr<const Tape> tape, const Bounds3& bound
         count[a] = std::max<int64_t>(1, int64_t(std::ceil((bounds.hi[a] - bounds.lo[a]) / side)));
         while (top < count[a]) top *= 2;
     }
-    std::vector<Region> level{{{0, 0, 0}, top, std::move(tape)}};
-    std::vector<Region> next;
+    std::vector<EstimateRegion> level{{{0, 0, 0}, top, std::move(tape)}};
+    std::vector<EstimateRegion> next;
     int64_t size = top;
     while (true) {
         std::vector<std::shared_ptr<const Tape>> childTape(level.size());
         std::vector<char> boundary(level.size(), 0);
         tbb::parallel_for(size_t(0), level.size(), [&](size_t i) {
-            const Region& r = level[i];
+            const EstimateRegion& r = level[i];
             Interval box[3];
             for (int a = 0; a < 3; ++a)
                 box[a] = Interval(bounds.lo[a] + double(r.corner[a]) * side,
@@ -67,7 +67,7 @@ BandEstimate estimateBand(std::shared_ptr<const Tape> tape, const Bounds3& bound
         const int64_t half = size / 2;
         for (size_t i = 0; i < level.size(); ++i) {
             if (!boundary[i]) continue;
-            const Region& r = level[i];
+            const EstimateRegion& r = level[i];
             for (int c = 0; c < 8; ++c) {
                 const std::array<int64_t, 3> b{r.corner[0] + (c & 1 ? half : 0),
                                                r.corner[1] + (c & 2 ? half : 0),

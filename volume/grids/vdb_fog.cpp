@@ -15,7 +15,7 @@
 namespace kerf {
 namespace {
 
-using Accessor = openvdb::tree::ValueAccessor<const openvdb::FloatTree, false>;
+using FogAccessor = openvdb::tree::ValueAccessor<const openvdb::FloatTree, false>;
 
 /// Blocks are the grid's 8³ leaves; level k of the pyramid holds blocks of 8·2ᵏ voxels.
 constexpr int kBlock = 8;
@@ -59,7 +59,7 @@ BlockPyramid makePyramid(const openvdb::FloatGrid& grid) {
 /// with the tree, so dropping it after its tree is gone is harmless).
 struct AccessorCache {
     uint64_t owner = 0;
-    std::unique_ptr<Accessor> accessor;
+    std::unique_ptr<FogAccessor> accessor;
 };
 thread_local AccessorCache tAccessor;
 std::atomic<uint64_t> gNextId{1};
@@ -87,7 +87,7 @@ public:
 
     double value(const Vec3& p) const override {
         const openvdb::Vec3d q = mGrid->transform().worldToIndex(openvdb::Vec3d(p.x, p.y, p.z));
-        const Accessor& acc = accessor();
+        const FogAccessor& acc = accessor();
         const openvdb::Coord c(int(std::floor(q.x())), int(std::floor(q.y())),
                                int(std::floor(q.z())));
         const double fx = q.x() - c.x(), fy = q.y() - c.y(), fz = q.z() - c.z();
@@ -131,9 +131,9 @@ public:
     double lipschitz() const override { return kInf; }
 
 private:
-    const Accessor& accessor() const {
+    const FogAccessor& accessor() const {
         if (tAccessor.owner != mId) {
-            tAccessor.accessor = std::make_unique<Accessor>(mGrid->tree());
+            tAccessor.accessor = std::make_unique<FogAccessor>(mGrid->tree());
             tAccessor.owner = mId;
         }
         return *tAccessor.accessor;

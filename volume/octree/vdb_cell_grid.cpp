@@ -14,7 +14,9 @@
 
 namespace kerf {
 
-namespace {
+// Named, not anonymous: CellGrid::Impl holds these types, and GCC warns (-Wsubobject-linkage)
+// when an included file's class uses an anonymous namespace, as a unity build includes it.
+namespace cell_grid_detail {
 
 constexpr int32_t kEmptyValue = -1;  // the background: no solid here
 constexpr int32_t kFullValue = -2;   // inactive, inside the solid
@@ -159,7 +161,9 @@ private:
     bool mDivide[3];
 };
 
-}  // namespace
+}  // namespace cell_grid_detail
+
+using namespace cell_grid_detail;
 
 struct CellGrid::Impl {
     Tree tree{kEmptyValue};
