@@ -114,7 +114,7 @@ private:
     static void bodySpan(const Vec3& f, const Vec3& d, double r2, double dir2, double length,
                          Extremes& x) {
         const double a = d.x * d.x + d.y * d.y;
-        if (a <= kParallel2 * dir2) return;  // along the axis: the end spheres decide
+        if (a <= kAlongAxis2 * dir2) return;  // along the axis: the end spheres decide
         const double h = f.x * d.x + f.y * d.y;
         const double invA = 1.0 / a;
         const double tc = -h * invA;

@@ -1,5 +1,5 @@
-// The rows of the node-kind registry (csg/tree/kind_registry.h). A new kind of node is one row
-// here, in the order of NodeKind.
+// The rows of the node-kind registry (csg/tree/kind_registry.h), in the order of NodeKind: the
+// hand-written kinds here, then the primitives of csg/tree/primitive_rows.def.
 #include "csg/tree/kind_registry.h"
 
 #include <iterator>
@@ -31,7 +31,10 @@ constexpr KindTraits kRows[] = {
     {NodeKind::SurfaceOf, "surface", false, false, false, false, true, false},
     {NodeKind::Clip, "clip", false, false, false, false, true, false},
     {NodeKind::Interior, "interior", false, false, false, false, false, true},
-    {NodeKind::Capsule, "capsule", true, false, false, false, false, true},
+#define KERF_PRIMITIVE(Kind, keyword, rootFound, fields, factoryParameters) \
+    {NodeKind::Kind, keyword, true, rootFound, false, false, false, true},
+#include "csg/tree/primitive_rows.def"
+#undef KERF_PRIMITIVE
 };
 
 /// The rows are indexed by kind: each row's position must be its kind's value.

@@ -46,8 +46,11 @@ enum class NodeKind : uint8_t {
     SurfaceOf,
     Clip,
     Interior,
-    // Leaves added later: appended, so the earlier kinds keep their values.
-    Capsule,
+// Primitives added as rows (csg/tree/primitive_rows.def): appended, so the kinds above
+// keep their values.
+#define KERF_PRIMITIVE(Kind, keyword, rootFound, fields, factoryParameters) Kind,
+#include "csg/tree/primitive_rows.def"
+#undef KERF_PRIMITIVE
 };
 // clang-format on
 
@@ -76,11 +79,6 @@ struct CylinderParams {
 struct ConeParams {
     Vec3 a, b;
     double r1, r2;
-};
-/// The points within radius of the segment a–b.
-struct CapsuleParams {
-    Vec3 a, b;
-    double radius;
 };
 struct TorusParams {
     double majorRadius, minorRadius;
@@ -143,13 +141,25 @@ struct InteriorParams {
     int32_t material;
 };
 
+#define KERF_UNPARENTHESIZE(...) __VA_ARGS__
+#define KERF_PRIMITIVE(Kind, keyword, rootFound, fields, factoryParameters) \
+    struct Kind##Params {                                                   \
+        KERF_UNPARENTHESIZE fields                                          \
+    };
+#include "csg/tree/primitive_rows.def"
+#undef KERF_PRIMITIVE
+
 /// A node's defining data: the alternative matches its kind (all four Boolean kinds give
 /// BooleanParams). Passing it back to the factory of its kind rebuilds an equal node.
 using NodeParams =
     std::variant<SphereParams, BoxParams, CylinderParams, ConeParams, TorusParams, HalfSpaceParams,
                  ImplicitParams, MeshParams, TransformParams, MaterialParams, BooleanParams,
                  MotionParams, DiscParams, TriangleParams, OpenConeParams, SurfaceParams,
-                 InteriorParams, VolumeParams, CapsuleParams>;
+                 InteriorParams, VolumeParams
+#define KERF_PRIMITIVE(Kind, keyword, rootFound, fields, factoryParameters) , Kind##Params
+#include "csg/tree/primitive_rows.def"
+#undef KERF_PRIMITIVE
+                 >;
 
 /// A node's children: a view of the NodePtrs it holds, valid while the node lives.
 class NodeSpan {

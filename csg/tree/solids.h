@@ -15,8 +15,11 @@ NodePtr makeSphere(const Vec3& center, double radius);
 NodePtr makeBox(const Vec3& lo, const Vec3& hi);
 /// Capped cylinder from `a` to `b`.
 NodePtr makeCylinder(const Vec3& a, const Vec3& b, double radius);
-/// The points within `radius` of the segment from `a` to `b` (a ≠ b).
-NodePtr makeCapsule(const Vec3& a, const Vec3& b, double radius);
+// The primitives added as rows: makeKind(factory parameters) for each.
+#define KERF_PRIMITIVE(Kind, keyword, rootFound, fields, factoryParameters) \
+    NodePtr make##Kind factoryParameters;
+#include "csg/tree/primitive_rows.def"
+#undef KERF_PRIMITIVE
 /// Capped cone (frustum) from `a` (radius r1) to `b` (radius r2); one radius may be 0.
 NodePtr makeCone(const Vec3& a, const Vec3& b, double r1, double r2);
 /// Torus around the y axis, centred at the origin: major radius R, minor radius r.
