@@ -27,7 +27,9 @@ struct Interval {
     bool maybeNan = false;
 
     constexpr Interval() = default;
-    constexpr Interval(double v) : lo(v), hi(v) {}  // NOLINT: a point is an interval
+    /// A point is an interval; a NaN point is flagged, so a NaN constant (sqrt(-1) folded)
+    /// reaches every evaluator's result as maybeNan rather than as NaN ends nobody checks.
+    constexpr Interval(double v) : lo(v), hi(v), maybeNan(v != v) {}  // NOLINT: implicit
     constexpr Interval(double l, double h, bool nan = false) : lo(l), hi(h), maybeNan(nan) {
         KERF_DCHECK(!(l > h) || nan);  // lo ≤ hi (or an end NaN), or flagged
     }

@@ -50,7 +50,9 @@ Interval lipschitzPartial(const ScalarField& field) {
 void Tape::finish() {
     mLeanAlongRay = true;
     for (const TapeInstr& in : mInstrs) switch (in.op) {
-            case Op::Const:
+            case Op::Const:  // a NaN constant is flagged (Interval(NaN)): the lean path keeps none
+                if (std::isnan(in.value)) mLeanAlongRay = false;
+                break;
             case Op::VarX:
             case Op::VarY:
             case Op::VarZ:

@@ -246,7 +246,7 @@ KERF_AVX2 bool evalAvx2(const std::vector<TapeInstr>& instrs, const Interval x[4
         switch (in.op) {
             case Op::Const:
                 store(r, splat(in.value), splat(in.value));
-                r.nan = 0;
+                r.nan = std::isnan(in.value) ? 0xFu : 0u;  // as Interval(NaN): flagged
                 continue;
             case Op::VarX: loadVariable(r, x); continue;
             case Op::VarY: loadVariable(r, y); continue;

@@ -33,6 +33,13 @@ ExprId randomExpr(ExprGraph& g, Random& rng, int depth) {
     if (depth <= 0) return affine();
     const int pick = static_cast<int>(rng.uniform(0.0, 11.0));
     const auto sub = [&] { return randomExpr(g, rng, depth - 1); };
+    // The operands in a fixed order: as g.binary(op, sub(), sub()) the order is the compiler's
+    // (GCC draws the right one first, clang the left), so each made different tapes.
+    const auto pair = [&](Op op) {
+        const ExprId a = sub();
+        const ExprId b = sub();
+        return g.binary(op, a, b);
+    };
     switch (pick) {
         case 0: {  // a sphere-like distance: sqrt of a sum of squares of affine forms, minus r
             ExprId s = g.unary(Op::Square, affine());
@@ -42,12 +49,15 @@ ExprId randomExpr(ExprGraph& g, Random& rng, int depth) {
             return g.binary(Op::Sub, g.unary(Op::Sqrt, s), g.constant(rng.uniform(0.1, 3.0)));
         }
         case 1: return g.unary(Op::Square, sub());
-        case 2: return g.binary(Op::Min, sub(), sub());
-        case 3: return g.binary(Op::Max, sub(), sub());
+        case 2: return pair(Op::Min);
+        case 3: return pair(Op::Max);
         case 4: return g.unary(Op::Sin, sub());
-        case 5: return g.binary(Op::Mul, sub(), sub());
-        case 6: return g.binary(Op::Add, sub(), sub());
-        case 7: return g.binary(Op::Sub, sub(), g.binary(Op::Mul, sub(), g.constant(0.5)));
+        case 5: return pair(Op::Mul);
+        case 6: return pair(Op::Add);
+        case 7: {
+            const ExprId a = sub();
+            return g.binary(Op::Sub, a, g.binary(Op::Mul, sub(), g.constant(0.5)));
+        }
         case 8: return g.unary(Op::Abs, sub());
         case 9:  // sqrt of something that can be negative: NaN flags must come through
             return g.unary(Op::Sqrt, sub());
@@ -186,4 +196,26 @@ TEST_CASE("TapeRayProgram: a sum of squares of affine forms has its exact range"
         // Its slope 2·(o + t·d)·d is exact too: 0 is in it only when the vertex is.
         if (vertex < a - 1e-9 || vertex > b + 1e-9) CHECK_FALSE(slope.containsZero());
     }
+}
+
+TEST_CASE("a NaN constant is flagged along a ray: TapeRayProgram and the lean path") {
+    // sqrt(-1) folds to a NaN constant; max passes its other operand on for a NaN, so only the
+    // flag says the value may be NaN. Found by a clang build, whose operand order made a random
+    // tape with one (GCC's made none).
+    ExprGraph g;
+    const ExprId nan = g.constant(std::nan(""));  // what sqrt(-1) folds to
+    const ExprId f = g.unary(Op::Square, g.binary(Op::Max, g.binary(Op::Add, g.x(), g.y()), nan));
+    const auto tape = Tape::compile(g, f);
+    const TapeRayPlan plan(*tape);
+    const Ray ray{Vec3(0.1, 0.2, 0.3), Vec3(1.0, -0.5, 0.25)};
+    TapeRayProgram program;
+    program.prepare(plan, ray);
+    Interval value, slope;
+    program.eval(Interval(-1.0, 2.0), value, slope);
+    CHECK(value.maybeNan);
+    Interval tv, tslope;
+    tape->evalIntervalAlongRay(ray, Interval(-1.0, 2.0), tv, tslope);
+    CHECK(tv.maybeNan);
+    CHECK(tape->evalInterval(Interval(0.0, 1.0), Interval(0.0, 1.0), Interval(0.0, 1.0)).maybeNan);
+    CHECK(Interval(std::nan("")).maybeNan);
 }
