@@ -96,6 +96,7 @@ int runMesh(const MeshCommandLine& line) {
     const auto compileStart = std::chrono::steady_clock::now();
     const std::optional<Scene> scene = loadModel(line.model, std::cerr, line.quiet);
     if (!scene) return kExitUsage;
+    checkNotAnInput("-o", line.output, processAssets().inputs());
     const double secondsCompile = secondsSince(compileStart);
 
     MeshExportStats stats;

@@ -264,6 +264,7 @@ int runRender(const RenderCommandLine& line) {
     std::optional<Scene> scene =
         loadModel(line.model, std::cerr, line.quiet, line.frame.value_or(SequenceFrame{}));
     if (!scene) return kExitUsage;
+    checkPlanNotInputs(plan, processAssets().inputs());
     if (scene->sections.size() + sections.size() > size_t(kMaxSections))
         throw UsageError("--section: the model's " + std::to_string(scene->sections.size()) +
                          " section planes and " + std::to_string(sections.size()) +

@@ -5,6 +5,7 @@
 #include "app/model_loader.h"
 #include "app/numbered_names.h"
 #include "app/option_text.h"
+#include "app/output_paths.h"
 #include "csg/format.h"
 #include "io/atomic_file.h"
 #include "io/image.h"
@@ -358,6 +359,7 @@ int runSlice(const SliceCommandLine& line) {
 
     const std::optional<Scene> scene = loadModel(line.model, std::cerr, line.quiet);
     if (!scene) return kExitUsage;
+    for (const std::string& path : paths) checkNotAnInput("-o", path, processAssets().inputs());
     times.loaded = std::chrono::steady_clock::now();
 
     SliceOptions options;

@@ -93,6 +93,7 @@ int runVoxelize(const VoxelizeCommandLine& line) {
 
     const std::optional<Scene> scene = loadModel(line.model, std::cerr, line.quiet);
     if (!scene) return kExitUsage;
+    checkNotAnInput("-o", line.output, processAssets().inputs());
     const double secondsCompile = secondsSince(start);
 
     VoxelizeStats stats;

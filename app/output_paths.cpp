@@ -129,4 +129,18 @@ void checkOutputPlan(const OutputPlan& plan, const std::string& modelPath) {
     }
 }
 
+void checkNotAnInput(const std::string& option, const std::string& output,
+                     const std::vector<AssetFile>& inputs) {
+    for (const AssetFile& input : inputs)
+        if (samePath(output, input.path))
+            throw UsageError(option + ": the output '" + output + "' is a file the model reads (" +
+                             input.path + ")");
+}
+
+void checkPlanNotInputs(const OutputPlan& plan, const std::vector<AssetFile>& inputs) {
+    checkNotAnInput("-o", plan.color, inputs);
+    for (const AovRequest& aov : plan.aovs)
+        checkNotAnInput(std::string("--aov ") + kindName(aov.kind), aov.path, inputs);
+}
+
 }  // namespace kerf::app

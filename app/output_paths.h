@@ -3,6 +3,8 @@
 /// before any work so a run never writes over its input nor over one of its own outputs.
 #pragma once
 
+#include "scene/assets.h"
+
 #include <string>
 #include <vector>
 
@@ -37,6 +39,14 @@ void checkOutputPlan(const OutputPlan& plan, const std::string& modelPath);
 /// written: its folder is missing or not writable, or it is a folder. Called before the model
 /// is compiled, so no work is done for a run whose result could not be kept.
 void checkOutputsWritable(const OutputPlan& plan);
+
+/// Throws UsageError when `output` (written through `option`, "-o") is a file the model read: a
+/// mesh, level set, fog volume, texture or font (`inputs`, the asset provider's list). Called
+/// after the compile, before any work, so a run never writes over what it reads.
+void checkNotAnInput(const std::string& option, const std::string& output,
+                     const std::vector<AssetFile>& inputs);
+/// checkNotAnInput for the colour output and every AOV of the plan.
+void checkPlanNotInputs(const OutputPlan& plan, const std::vector<AssetFile>& inputs);
 
 /// "output 'F' has no file name before the extension" when the file name is only a known
 /// image extension (".png"), else "".

@@ -74,3 +74,37 @@ TEST_CASE("kerf render: texture files are relative to the model's folder") {
     CHECK(out.at(4, 4, 0) == Approx(1.0).margin(1e-3));
     CHECK(out.at(4, 4, 1) == Approx(0.0).margin(1e-3));
 }
+
+TEST_CASE("kerf render, mesh, slice: an output that is a file the model reads is exit 2") {
+    // A run never writes over its inputs: the textures and the mesh of the model stay as they
+    // were, byte for byte, and nothing is written.
+    TempDir dir;
+    Image grey(2, 2, 3);
+    for (float& v : grey.pixels) v = 0.5f;
+    writeImage(grey, dir.file("grain.exr"));
+    writeImage(grey, dir.file("paper.png"));
+    dir.write("ball.obj",
+              "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    dir.write("scene.kerf",
+              texturedModel("grain.exr") +
+                  "material paper { pattern image { file \"paper.png\" mapping planar } }\n"
+                  "object mesh \"ball.obj\" translate <2, 0, 0> material paper;\n");
+    const auto contents = [&] {
+        return readFile(dir.file("grain.exr")) + readFile(dir.file("paper.png")) +
+               readFile(dir.file("ball.obj"));
+    };
+    const std::string before = contents();
+    const std::vector<std::vector<std::string>> runs = {
+        {"render", "scene.kerf", "-o", "grain.exr"},
+        {"render", "scene.kerf", "-o", "out.png", "--aov", "depth=./grain.exr"},
+        {"mesh", "scene.kerf", "-o", "ball.obj", "--voxel", "0.1"},
+        {"slice", "scene.kerf", "--plane", "z=0.25", "-o", "paper.png"}};
+    for (const auto& args : runs) {
+        const KerfRun run = runKerf(dir, args);
+        INFO(args[0] << " " << args[3] << "\nstderr:\n" << run.err);
+        CHECK(run.exitCode == kExitUsage);
+        CHECK(run.err.find("is a file the model reads") != std::string::npos);
+        CHECK(contents() == before);
+        CHECK_FALSE(fs::exists(dir.path() / "out.png"));
+    }
+}
