@@ -17,6 +17,10 @@ void AssetCache::clearInputs() {
     mInputPaths.clear();
 }
 
+void AssetCache::sourceRead(const std::string& path) {
+    if (const std::optional<AssetFile> file = fileIdentity(path)) noteInput(*file);
+}
+
 void AssetCache::noteInput(const AssetFile& file) {
     if (mInputPaths.insert(file.path).second) mInputs.push_back(file);
 }

@@ -44,6 +44,7 @@ public:
     Loaded<Texture> texture(const std::string& path) override;
     Loaded<TextShape> text(const TextRequest& request) override;
     const std::vector<AssetFile>& inputs() const override { return mInputs; }
+    void sourceRead(const std::string& path) override;
 
     /// Starts the list of inputs() afresh (call before each compile); the cache is kept.
     void clearInputs();

@@ -6,6 +6,7 @@
 #include "io/image.h"
 
 #include "io/atomic_file.h"
+#include "io/file_checks.h"
 #include "io/image_plugin_loader.h"
 #include "io/srgb.h"
 
@@ -125,6 +126,9 @@ Image readImage(const std::string& path) {
 }
 
 Image readImage(const std::string& path, ImageWindow& window) {
+    // Before the plug-in opens it: OpenImageIO would wait on a FIFO and read /dev/zero for ever.
+    if (const std::string problem = readableFileProblem(path); !problem.empty())
+        throw std::runtime_error("cannot read '" + path + "': " + problem);
     const KerfImagePlugin& plugin = imagePlugin();
     ReadTarget target;
     char error[1024] = "";

@@ -27,7 +27,7 @@ std::string identity(const std::string& path) {
 
 class Loader {
 public:
-    explicit Loader(DiagnosticSink& sink) : mSink(sink) {}
+    Loader(DiagnosticSink& sink, AssetProvider& assets) : mSink(sink), mAssets(assets) {}
 
     /// Parses one file's text and everything it includes into `out`.
     void addText(const SourceText& source, Program& out) {
@@ -84,12 +84,14 @@ private:
                         "includes are relative to the including file's folder; looked for " + name);
             return;
         }
+        mAssets.sourceRead(name);
         addText(SourceText{std::make_shared<const std::string>(name),
                            std::make_shared<const std::string>(std::move(*bytes))},
                 out);
     }
 
     DiagnosticSink& mSink;
+    AssetProvider& mAssets;  ///< told of each included file, so no output replaces it
     std::set<std::string> mRead;
     std::vector<std::pair<std::string, std::string>> mStack;  // identity, name as shown
 };
@@ -99,10 +101,13 @@ std::optional<Scene> compileSource(const SourceText& source, DiagnosticSink& sin
     const int errorsBefore = sink.errorCount();
     const size_t diagnosticsBefore = sink.diagnostics().size();
     Program program;
-    Loader(sink).addText(source, program);
+    Loader(sink, assets).addText(source, program);
     // Lowering runs even after syntax errors: broken definitions keep their names, so the
-    // semantic errors found are real ones, not echoes of the syntax error.
-    Lowering lowering(sink, assets, limits);
+    // semantic errors found are real ones, not echoes of the syntax error. It opens no asset
+    // then: the compile fails anyway, and a hostile mesh or volume would only cost time.
+    NoAssets skipped(NoAssets::Mode::Skip);
+    const bool syntaxFailed = sink.errorCount() > errorsBefore;
+    Lowering lowering(sink, syntaxFailed ? skipped : assets, limits);
     lowering.setSequenceFrame(frame);
     std::optional<Scene> scene = lowering.lower(program);
     sink.sortByLocation(diagnosticsBefore);
@@ -114,16 +119,10 @@ std::optional<Scene> compileSource(const SourceText& source, DiagnosticSink& sin
 
 std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink,
                                  AssetProvider& assets, EvalLimits limits, SequenceFrame frame) {
-    std::string why;
-    auto bytes = readFileBytes(path, why);
-    if (!bytes) {
-        sink.error(SourceLoc{std::make_shared<const std::string>(path), 0, 0},
-                   "cannot read '" + path + "': " + why);
-        return std::nullopt;
-    }
-    return compileSource(SourceText{std::make_shared<const std::string>(path),
-                                    std::make_shared<const std::string>(std::move(*bytes))},
-                         sink, assets, limits, frame);
+    const std::optional<SourceText> source = readModelFile(path, sink);
+    if (!source) return std::nullopt;
+    assets.sourceRead(path);
+    return compileSource(*source, sink, assets, limits, frame);
 }
 
 std::optional<Scene> compileFile(const std::string& path, DiagnosticSink& sink, EvalLimits limits,

@@ -77,7 +77,7 @@ std::shared_ptr<const MeshAsset> Lowering::meshAsset(const std::string& written,
     if (const auto it = mMeshFiles.find(key); it != mMeshFiles.end())
         return it->second;  // failures once
     Loaded<MeshAsset> mesh = mAssets.mesh(path);
-    if (!mesh)
+    if (!mesh && !mesh.error.skipped)
         error(at, "cannot load mesh '" + written + "': " + mesh.error.reason,
               path == written
                   ? std::string()

@@ -232,11 +232,13 @@ bool Lowering::lowerFogDensity(const PropertyBlock& b, const Statement& s,
     const std::string path = resolvedPath(written, file->valueLoc());
     const Loaded<FogAsset> v = mAssets.fogVolume(path, gridName);
     if (!v) {
-        error(grid && v.error.subject == AssetError::Subject::Part ? grid->loc : file->valueLoc(),
-              "cannot read fog volume '" + written + "': " + v.error.reason,
-              path == written
-                  ? std::string()
-                  : "volume files are relative to the model file's folder; looked for " + path);
+        if (!v.error.skipped)
+            error(
+                grid && v.error.subject == AssetError::Subject::Part ? grid->loc : file->valueLoc(),
+                "cannot read fog volume '" + written + "': " + v.error.reason,
+                path == written
+                    ? std::string()
+                    : "volume files are relative to the model file's folder; looked for " + path);
         return false;
     }
     medium.density = v.value->density;

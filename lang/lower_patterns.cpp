@@ -149,6 +149,7 @@ bool Lowering::lowerImage(const PropertyBlock& b, Pattern& pattern) {
     const std::string path = resolvedPath(written, at);
     Loaded<Texture> texture = mAssets.texture(path);
     if (!texture) {
+        if (texture.error.skipped) return false;  // the compile failed before: nothing opened
         if (texture.error.standalone)
             error(at, texture.error.reason);
         else

@@ -69,6 +69,7 @@ std::optional<TextShape> Lowering::lowerText(const Solid& s) {
     spec.folder = std::filesystem::path(*mSink.locate(fontAt).file).parent_path().string();
     Loaded<TextShape> text = mAssets.text(spec);
     if (!text) {
+        if (text.error.skipped) return std::nullopt;
         // Font lookups are errors at the font; bad characters and UTF-8 at the string.
         error(
             text.error.subject == AssetError::Subject::File ? fontAt : b.find("string")->valueLoc(),

@@ -50,7 +50,7 @@ NodePtr Lowering::lowerVolume(const Solid& s) {
     auto it = mVolumeFiles.find(key);
     if (it == mVolumeFiles.end()) {
         Loaded<LevelSetAsset> grid = mAssets.levelSet(path, gridName);
-        if (!grid)
+        if (!grid && !grid.error.skipped)
             error(
                 grid.error.subject == AssetError::Subject::Part && !gridName.empty() ? gridAt : at,
                 "cannot use volume '" + written + "' as a solid: " + grid.error.reason,

@@ -1,7 +1,8 @@
 /// @file lang/no_assets.h
 /// @brief The asset provider of a compile that was given none: every asset is refused with a
 /// clear reason, so a model that names no file compiles as before and one that does is an
-/// error at the file's name.
+/// error at the file's name. In Skip mode (a compile that already failed) every asset is
+/// refused as skipped, so lowering reports nothing for it and opens no file.
 #pragma once
 
 #include "scene/assets.h"
@@ -10,6 +11,9 @@ namespace kerf {
 
 class NoAssets final : public AssetProvider {
 public:
+    enum class Mode : uint8_t { Refuse, Skip };
+    explicit NoAssets(Mode mode = Mode::Refuse) : mMode(mode) {}
+
     Loaded<MeshAsset> mesh(const std::string&) override { return refused<MeshAsset>(); }
     std::shared_ptr<const MeshAsset> meshOf(std::vector<Vec3>, std::vector<std::array<uint32_t, 3>>,
                                             std::string) override {
@@ -31,11 +35,13 @@ public:
 
 private:
     template <class T>
-    static Loaded<T> refused() {
+    Loaded<T> refused() const {
         Loaded<T> r;
         r.error.reason = kReason;
+        r.error.skipped = mMode == Mode::Skip;
         return r;
     }
+    Mode mMode;
     std::vector<AssetFile> mNone;
 };
 

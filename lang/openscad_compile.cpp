@@ -99,14 +99,10 @@ std::optional<Scene> compileOpenScadFile(const std::string& path, DiagnosticSink
 
 std::optional<Scene> compileOpenScadFile(const std::string& path, DiagnosticSink& sink,
                                          AssetProvider& assets) {
-    std::string why;
-    auto bytes = readFileBytes(path, why);
-    if (!bytes) {
-        sink.error(SourceLoc{std::make_shared<const std::string>(path), 0, 0},
-                   "cannot read '" + path + "': " + why);
-        return std::nullopt;
-    }
-    return compileOpenScadString(*bytes, path, sink, assets);
+    const std::optional<SourceText> source = readModelFile(path, sink);
+    if (!source) return std::nullopt;
+    assets.sourceRead(path);
+    return compileOpenScadString(*source->text, path, sink, assets);
 }
 
 bool isOpenScadCsgPath(const std::string& path) {

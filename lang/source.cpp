@@ -159,4 +159,16 @@ std::optional<std::string> readFileBytes(const std::string& path, std::string& w
     return bytes;
 }
 
+std::optional<SourceText> readModelFile(const std::string& path, DiagnosticSink& sink) {
+    std::string why;
+    std::optional<std::string> bytes = readFileBytes(path, why);
+    if (!bytes) {
+        sink.error(SourceLoc{std::make_shared<const std::string>(path), 0, 0},
+                   "cannot read '" + path + "': " + why);
+        return std::nullopt;
+    }
+    return SourceText{std::make_shared<const std::string>(path),
+                      std::make_shared<const std::string>(std::move(*bytes))};
+}
+
 }  // namespace kerf

@@ -33,6 +33,10 @@ bool checkSourceText(const SourceText& source, DiagnosticSink& sink);
 std::optional<std::string> readFileBytes(const std::string& path, std::string& why,
                                          int64_t maxBytes = kMaxSourceBytes);
 
+/// The model file at `path` read as a SourceText (named as written), or nullopt after
+/// reporting "cannot read 'PATH': why" to `sink` at the file (both languages' front doors).
+std::optional<SourceText> readModelFile(const std::string& path, DiagnosticSink& sink);
+
 /// Why readFileBytes would refuse `path` by what stat() says of it (missing, not a regular
 /// file, too large), or an empty string. Does not open the file, so it never blocks.
 std::string sourceFileProblem(const std::string& path, int64_t maxBytes = kMaxSourceBytes);

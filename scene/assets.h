@@ -29,6 +29,9 @@ struct AssetError {
     enum class Subject : uint8_t { File, Part } subject = Subject::File;
     /// The reason is a whole message to show as it is (image support missing).
     bool standalone = false;
+    /// Not opened because the compile has already failed (a syntax error): lowering reports
+    /// nothing for it, and no hostile file is read for a model that cannot be used anyway.
+    bool skipped = false;
     std::string hint;
 };
 
@@ -126,6 +129,9 @@ public:
     /// Every file opened for the assets asked for since this provider was made or last
     /// cleared, each once, in the order first used.
     virtual const std::vector<AssetFile>& inputs() const = 0;
+    /// A model or included file the compile read: listed in inputs() like an asset's file, so
+    /// no output replaces it. Providers that keep no list ignore it.
+    virtual void sourceRead(const std::string& path) { (void)path; }
 };
 
 }  // namespace kerf
