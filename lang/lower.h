@@ -178,6 +178,8 @@ private:
     NodePtr lowerTabled(const Solid& s, const SolidKind& kind);
     /// Counts one primitive against kMaxPrimitives.
     bool countPrimitive(SourcePos at);
+    /// Counts one node made (of any kind) against kMaxNodes.
+    bool countNode(SourcePos at);
     NodePtr lowerBox(const Solid& s);
     NodePtr lowerCylinder(const Solid& s);
     NodePtr lowerCone(const Solid& s);
@@ -371,6 +373,7 @@ private:
     std::unordered_set<const Statement*> mReturnsOther;  ///< functions seen returning a non-solid
     int64_t mIterations = 0;
     int64_t mPrimitives = 0;
+    int64_t mNodes = 0;
     bool mLimitReported = false;
     std::optional<int> mDefaultMaterial;
     const Statement* mDefaultMaterialDef = nullptr;

@@ -48,7 +48,8 @@ NodePtr Lowering::applyModifiers(NodePtr node, const Solid& s) {
                 ok = false;
                 continue;
             }
-            if (hasPending) node = transformed(node, pending, *hasPending);
+            if (hasPending)
+                node = countNode(m.loc) ? transformed(node, pending, *hasPending) : nullptr;
             if (!node) return nullptr;
             pending = Affine{};
             hasPending = nullptr;

@@ -185,6 +185,7 @@ int Lowering::heightOf(const NodePtr& node) {
 }
 
 NodePtr Lowering::limitDepth(NodePtr node, SourcePos at) {
+    if (!countNode(at)) return nullptr;  // every node lowering makes passes here
     if (heightOf(node) <= kMaxCsgDepth) return node;
     error(
         at,
@@ -206,8 +207,20 @@ bool Lowering::countPrimitive(SourcePos at) {
     return false;
 }
 
+bool Lowering::countNode(SourcePos at) {
+    if (++mNodes <= mLimits.nodes) return true;
+    if (!mLimitReported) {
+        mLimitReported = true;
+        error(at, "this model makes more than " + std::to_string(mLimits.nodes) + " nodes",
+              "each primitive, Boolean, transform and material made counts, every placement of a "
+              "shared solid too; the limit stops a model before it runs out of memory (see "
+              "docs/language.md, Limits)");
+    }
+    return false;
+}
+
 NodePtr Lowering::lowerPrimitive(const Solid& s) {
-    if (!countPrimitive(s.loc)) return nullptr;
+    if (!countPrimitive(s.loc) || !countNode(s.loc)) return nullptr;
     if (const SolidKind* row = findSolidKind(s.name); row && !row->has(kBoolean))
         return row->lower ? (this->*row->lower)(s) : lowerTabled(s, *row);
     if (isProfileKind(s.name)) {

@@ -5,6 +5,7 @@
 #include "csg/bvh/clip_ray.h"
 #include "csg/check.h"
 #include "csg/tree/kind_registry.h"
+#include "csg/tree/repeated_instances.h"
 #include "csg/tree/solids.h"
 
 #include <algorithm>
@@ -363,6 +364,7 @@ private:
 }  // namespace
 
 NodePtr makeBoolean(BoolOp op, std::vector<NodePtr> children) {
+    children = withoutRepeatedInstances(op, std::move(children));
     if (children.size() == 1) return children[0];
     return std::make_shared<BooleanNode>(op, std::move(children));
 }

@@ -25,13 +25,14 @@ inline bool modelText(const uint8_t* data, size_t size, std::string& text) {
 inline const char* kModelName = "/nonexistent-kerf-fuzz/input.kerf";
 
 /// Evaluation limits small enough that a 4 kB loop cannot pass -timeout or -rss_limit_mb under
-/// the sanitizers (the real ones allow 10 million primitives); the limit checks themselves are
-/// the same code.
+/// the sanitizers (the real ones allow 4 million primitives and nodes); the limit checks themselves
+/// are the same code.
 inline EvalLimits limits() {
     EvalLimits l;
     l.iterations = 200'000;
     l.listLength = 100'000;
     l.primitives = 100'000;
+    l.nodes = 100'000;
     return l;
 }
 

@@ -282,7 +282,29 @@ TEST_CASE("limits: loops, lists, primitives and strings stop with an error") {
                Catch::Matchers::Contains("more than 50 primitives"));
     CHECK(many->sink.errorCount() == 1);
     // The real limits are the documented numbers.
-    CHECK(kMaxPrimitives == 10'000'000);
+    CHECK(kMaxPrimitives == 4'000'000);
+    CHECK(kMaxNodes == 4'000'000);
+    // Placing one shared solid again and again makes a node per placement: the node limit
+    // stops it (the primitive limit counts the shared sphere once; issue 24 saw 6 GB in 17 s).
+    EvalLimits nodes;
+    nodes.nodes = 1000;
+    auto placed = compileLimited(
+        "solid s = sphere { radius 0.4 };\n"
+        "object union { for k in 0 .. 200000000 { s translate <k, 0, 0> } };",
+        nodes);
+    REQUIRE_FALSE(placed->scene);
+    CHECK_THAT(placed->sink.diagnostics().front().message,
+               Catch::Matchers::Contains("more than 1000 nodes"));
+    CHECK(placed->sink.diagnostics().front().loc.line == 2);
+    CHECK(placed->sink.errorCount() == 1);
+    // Materials and Booleans count too.
+    auto wrapped = compileLimited(
+        "material m { color <1, 0, 0> }\nsolid s = sphere { radius 0.4 };\n"
+        "object union { for k in 0 .. 2000 { union { s s } material m } };",
+        nodes);
+    REQUIRE_FALSE(wrapped->scene);
+    CHECK_THAT(wrapped->sink.diagnostics().front().message,
+               Catch::Matchers::Contains("more than 1000 nodes"));
     CHECK(kMaxCallDepth == 100);
     // Doubling a string 21 times passes 1 MB.
     const auto s =
