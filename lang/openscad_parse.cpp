@@ -58,14 +58,23 @@ private:
         mSink.error(at(offset), message, hint);
     }
 
-    /// Skips to just after the next ';' or '}' at any depth, so the next statement parses.
+    /// Skips the rest of the top-level statement that failed: to just after the ';' or '}'
+    /// that leaves every block opened since it began, so the errors of one broken statement
+    /// are one error (a file nested past the limit gave one more per closing brace).
     void recover() {
         while (mTok.kind != ScadToken::Kind::End) {
-            const bool stop =
-                mTok.kind == ScadToken::Kind::Punct && (mTok.text == ";" || mTok.text == "}");
+            const bool end = isPunct(";") || isPunct("}");
+            if (isPunct("{")) ++mOpenBlocks;
+            if (isPunct("}") && mOpenBlocks > 0) --mOpenBlocks;
             advance();
-            if (stop) return;
+            if (end && mOpenBlocks == 0) return;
         }
+    }
+
+    /// advance() past `{` or `}`, counting the blocks left open (recover() closes them).
+    void advanceBrace() {
+        mOpenBlocks += isPunct("{") ? 1 : -1;
+        advance();
     }
 
     bool isPunct(const char* p) const {
@@ -126,7 +135,7 @@ private:
             return true;
         }
         if (isPunct("{")) {
-            advance();
+            advanceBrace();
             while (!isPunct("}")) {
                 if (mTok.kind == ScadToken::Kind::End) {
                     error(call.pos.offset, "the block of '" + call.name + "' is not closed",
@@ -137,7 +146,7 @@ private:
                 if (!statement(child, depth + 1)) return false;
                 if (!child.name.empty()) call.children.push_back(std::move(child));
             }
-            advance();
+            advanceBrace();
             return true;
         }
         ScadCall child;  // a single child without braces
@@ -366,6 +375,7 @@ private:
     DiagnosticSink& mSink;
     size_t mPos = 0;
     ScadToken mTok;
+    int64_t mOpenBlocks = 0;  ///< blocks of the current top-level statement not yet closed
 };
 
 }  // namespace

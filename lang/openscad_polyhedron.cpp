@@ -97,6 +97,29 @@ bool earClip(const std::vector<Vec3>& poly, const std::vector<uint32_t>& idx, co
     return true;
 }
 
+/// The point indices of one face into `idx`, or what is wrong with it ("has 2 indices, …")
+/// with `where` moved to the index at fault.
+std::string faceIndices(const ScadValue& face, size_t points, std::vector<uint32_t>& idx,
+                        SourcePos& where) {
+    const std::string range = "the points are 0 to " + std::to_string(points) + " − 1";
+    if (face.kind != ScadValue::Kind::Vector) return "is not a vector of point indices";
+    if (face.items.size() < 3)
+        return "has " + std::to_string(face.items.size()) + " indices: a face needs at least three";
+    for (size_t i = 0; i < face.items.size(); ++i) {
+        const ScadValue& item = face.items[i];
+        const double x = item.number;
+        where = item.pos;
+        if (item.kind != ScadValue::Kind::Number || !(x == std::floor(x)))
+            return "index " + std::to_string(i) + " is not a whole number";
+        if (!(x >= 0 && x < static_cast<double>(points)))
+            return "index " + std::to_string(i) + " (" + formatNumber(x) +
+                   ") is out of range: " + range;
+        idx.push_back(static_cast<uint32_t>(x));
+    }
+    where = face.pos;
+    return {};
+}
+
 }  // namespace
 
 NodePtr lowerScadPolyhedron(const ScadCall& c, ScadLowering& lowering) {
@@ -124,17 +147,10 @@ NodePtr lowerScadPolyhedron(const ScadCall& c, ScadLowering& lowering) {
     for (size_t f = 0; f < faces.items.size(); ++f) {
         const ScadValue& face = faces.items[f];
         std::vector<uint32_t> idx;
-        bool ok = face.kind == ScadValue::Kind::Vector && face.items.size() >= 3;
-        for (size_t i = 0; ok && i < face.items.size(); ++i) {
-            const double x = face.items[i].number;
-            ok = face.items[i].kind == ScadValue::Kind::Number && x >= 0 && x == std::floor(x) &&
-                 x < static_cast<double>(mesh.positions.size());
-            if (ok) idx.push_back(static_cast<uint32_t>(x));
-        }
-        if (!ok) {
-            lowering.error(face.pos, "polyhedron face " + std::to_string(f) +
-                                         " must list at least three indices of its points (0 to " +
-                                         std::to_string(mesh.positions.size()) + " − 1)");
+        SourcePos where = face.pos;
+        const std::string problem = faceIndices(face, mesh.positions.size(), idx, where);
+        if (!problem.empty()) {
+            lowering.error(where, "polyhedron face " + std::to_string(f) + " " + problem);
             return nullptr;
         }
         std::reverse(idx.begin(), idx.end());  // clockwise from outside → counter-clockwise

@@ -249,3 +249,43 @@ TEST_CASE("openscad/huge $fn and tiny $fs report a bounded facet count") {
               std::string::npos);
     }
 }
+
+// Issue 24: a polyhedron index out of range was reported as "at least three indices".
+TEST_CASE("openscad/a polyhedron face's bad index is named, at the index") {
+    const std::string points = "polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], ";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 9]]);",
+         "polyhedron face 3 index 2 (9) is out of range: the points are 0 to 4 − 1"},
+        {"faces = [[0, 2, 1], [0, 1, -1]]);", "polyhedron face 1 index 2 (-1) is out of range"},
+        {"faces = [[0, 2, 1], [0, 1.5, 3]]);", "polyhedron face 1 index 1 is not a whole number"},
+        {"faces = [[0, 2]]);", "polyhedron face 0 has 2 indices: a face needs at least three"},
+        {"faces = [7]);", "polyhedron face 0 is not a vector of point indices"}};
+    for (const auto& [faces, message] : cases) {
+        DiagnosticSink sink;
+        const auto scene = compileOpenScadString(points + faces + "\n", "faces.csg", sink);
+        INFO(faces << "\n" << sink.format());
+        CHECK_FALSE(scene.has_value());
+        CHECK(sink.format().find(message) != std::string::npos);
+    }
+    // The caret is under the index at fault (column of the 9).
+    DiagnosticSink sink;
+    compileOpenScadString(points + cases[0].first + "\n", "faces.csg", sink);
+    REQUIRE(sink.errorCount() == 1);
+    CHECK(sink.diagnostics().front().loc.col == points.size() + cases[0].first.find('9') + 1);
+}
+
+// Issue 24: a file nested far past the 1,000-level limit gave one error per closing brace
+// (40,000 of them); the broken top-level statement is skipped whole, so one error is left.
+TEST_CASE("openscad/nesting past the limit is one error") {
+    std::string text;
+    for (int i = 0; i < 40000; ++i) text += "group() {";
+    text += "cube(size = [1, 1, 1]);";
+    for (int i = 0; i < 40000; ++i) text += "}";
+    text += "\nsphere(r = 1) x;\n";  // a later statement's own error is still found
+    DiagnosticSink sink;
+    CHECK_FALSE(compileOpenScadString(text, "deep.csg", sink).has_value());
+    INFO(sink.format().substr(0, 2000));
+    REQUIRE(sink.errorCount() == 2);
+    CHECK(sink.diagnostics()[0].message.find("nested too deeply") != std::string::npos);
+    CHECK(sink.diagnostics()[1].loc.line == 2);
+}
