@@ -5,7 +5,9 @@
 #include "assets/asset_loaders.h"
 #include "assets/file_identity.h"
 
+#include <new>
 #include <optional>
+#include <stdexcept>
 
 namespace kerf {
 
@@ -25,6 +27,30 @@ void AssetCache::noteInput(const AssetFile& file) {
     if (mInputPaths.insert(file.path).second) mInputs.push_back(file);
 }
 
+namespace {
+
+/// load(), with running out of memory (or a size beyond what a container can hold, which only
+/// a corrupt or hostile file asks for) turned into the asset's error, so the message names the
+/// file instead of being the library's "std::bad_alloc" or "vector::_M_default_append". The
+/// readers check sizes against the file first; this is the backstop behind those checks.
+template <class T, class Load>
+Loaded<T> loadNamingMemory(const Load& load, const std::optional<AssetFile>& file) {
+    const std::string size =
+        file ? " (" + std::to_string(file->size) + " bytes on disk)" : std::string();
+    Loaded<T> failed;
+    try {
+        return load();
+    } catch (const std::bad_alloc&) {
+        failed.error.reason = "there is not enough memory to read it" + size;
+    } catch (const std::length_error&) {
+        failed.error.reason = "it asks for more memory than can be held" + size +
+                              ": the file is corrupt or not what its name says";
+    }
+    return failed;
+}
+
+}  // namespace
+
 template <class T, class Load>
 Loaded<T> AssetCache::cached(Table<T>& table, const std::string& path, const std::string& part,
                              int& loads, int& reuses, const Load& load) {
@@ -42,7 +68,7 @@ Loaded<T> AssetCache::cached(Table<T>& table, const std::string& path, const std
         }
     }
     ++loads;
-    Loaded<T> loaded = load();
+    Loaded<T> loaded = loadNamingMemory<T>(load, file);
     if (file && loaded.value)
         table[{file->path, part}] = Entry<T>{*file, loaded.value};
     else if (file)
