@@ -163,17 +163,18 @@ private:
 
 }  // namespace cell_grid_detail
 
-using namespace cell_grid_detail;
+// Qualified rather than `using namespace`: in the unity build it would reach later files.
+namespace cgd = cell_grid_detail;
 
 struct CellGrid::Impl {
-    Tree tree{kEmptyValue};
-    std::vector<std::unique_ptr<Brick>> bricks;
+    cgd::Tree tree{cgd::kEmptyValue};
+    std::vector<std::unique_ptr<cgd::Brick>> bricks;
     BrickBuilder builder;
     std::atomic<uint64_t> built{0}, boundaryCells{0}, classified{0}, distinctNodes{0};
 
     /// The brick's content, classified now if no ray has reached it before.
     const BrickContent& content(int32_t index) {
-        Brick& b = *bricks[size_t(index)];
+        cgd::Brick& b = *bricks[size_t(index)];
         if (b.built.load(std::memory_order_acquire)) return *b.content;
         std::call_once(b.once, [&] {
             b.content = std::make_unique<BrickContent>();
@@ -195,12 +196,12 @@ CellGrid::CellGrid(const GridFrame& frame, std::vector<std::pair<CellCoord, Node
     mImpl->builder = std::move(builder);
     for (const auto& [c, size] : fullBlocks) {
         const openvdb::Coord lo(c[0], c[1], c[2]);
-        mImpl->tree.fill(openvdb::CoordBBox(lo, lo.offsetBy(size - 1)), kFullValue, false);
+        mImpl->tree.fill(openvdb::CoordBBox(lo, lo.offsetBy(size - 1)), cgd::kFullValue, false);
     }
     mImpl->bricks.reserve(bricks.size());
     for (auto& [c, node] : bricks) {
         const int32_t index = int32_t(mImpl->bricks.size());
-        auto b = std::make_unique<Brick>();
+        auto b = std::make_unique<cgd::Brick>();
         b->corner = c;
         b->node = std::move(node);
         mImpl->bricks.push_back(std::move(b));
@@ -219,7 +220,7 @@ CellGrid::Counts CellGrid::counts() const {
     c.boundaryCells = mImpl->boundaryCells.load();
     c.classified = mImpl->classified.load();
     c.distinctNodes = mImpl->distinctNodes.load();
-    c.memoryBytes = mImpl->tree.memUsage() + c.bricks * sizeof(Brick);
+    c.memoryBytes = mImpl->tree.memUsage() + c.bricks * sizeof(cgd::Brick);
     return c;
 }
 
@@ -230,8 +231,8 @@ bool CellGrid::fullAt(const Vec3& p) const {
         if (!(c >= 0.0 && c < double(mFrame.n))) return false;
         ijk[a] = int32_t(c);
     }
-    int32_t value = kEmptyValue;
-    if (!mImpl->tree.probeValue(ijk, value)) return value == kFullValue;
+    int32_t value = cgd::kEmptyValue;
+    if (!mImpl->tree.probeValue(ijk, value)) return value == cgd::kFullValue;
     const BrickContent& b = mImpl->content(value);
     return b.full[BrickContent::index(ijk[0] & 7, ijk[1] & 7, ijk[2] & 7)];
 }
@@ -239,19 +240,19 @@ bool CellGrid::fullAt(const Vec3& p) const {
 bool CellGrid::walk(const Ray& ray, double tmin, double tmax, SegmentVisitor visit, void* context,
                     uint64_t& steps) const {
     if (!(tmin <= tmax)) return true;
-    const CellWalk w{mFrame, ray, tmax, visit, context};
-    Accessor acc(mImpl->tree);
+    const cgd::CellWalk w{mFrame, ray, tmax, visit, context};
+    cgd::Accessor acc(mImpl->tree);
     openvdb::Coord ijk = w.cellAt(ray.at(tmin));
     // A walk crosses at most 3n cells; more steps can only come from rounding at corners.
     const int64_t limit = 3 * int64_t(mFrame.n) + 16;
     int64_t step = 0;
     double t = tmin;
     while (step < limit) {
-        int32_t value = kEmptyValue;
+        int32_t value = cgd::kEmptyValue;
         const bool done =
             acc.probeValue(ijk, value)
                 ? w.throughBrick(mImpl->content(value), ijk, t, step, limit, steps)
-                : w.acrossBlock(regionSize(acc.getValueDepth(ijk)), ijk, t, step, steps);
+                : w.acrossBlock(cgd::regionSize(acc.getValueDepth(ijk)), ijk, t, step, steps);
         if (done) return true;
     }
     return false;
