@@ -140,3 +140,11 @@ TEST_CASE("loadMesh::files outside the mesh's folder are refused") {
                   .triangles.size() == 8);
     }
 }
+
+TEST_CASE("loadMesh::a PLY property of an unknown type is refused before the importer reserves") {
+    // Found by kerf_fuzz_mesh: Assimp reserved the 4e9 declared vertices (48 GB) first.
+    TempDir dir;
+    std::string text = plyHeader("ascii", 4000000000u, 1) + "0 0 0\n";
+    text.replace(text.find("uchar int"), 9, "uchar dddd int");
+    requireHostileMeshError(dir.write("type.ply", text), "has a type PLY does not have");
+}
