@@ -169,16 +169,48 @@ const aiScene* readSceneOrFail(Assimp::Importer& importer, const std::string& pa
     }
 }
 
+/// Whether any face has more than three corners, with each mesh's primitive types set from
+/// its faces: Assimp 5.2's Triangulate asserts (abort()) when the types claim polygons the
+/// faces do not have, as a garbage ASCII PLY face row made them (kerf_fuzz_mesh).
+bool needsTriangulation(aiScene& scene) {
+    bool polygons = false;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        aiMesh* mesh = scene.mMeshes[m];
+        if (mesh == nullptr || mesh->mFaces == nullptr) continue;
+        unsigned types = 0;
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            const unsigned n = mesh->mFaces[f].mNumIndices;
+            types |= n == 0   ? 0u  // a garbage row: no corners, dropped with points and lines
+                     : n == 1 ? aiPrimitiveType_POINT
+                     : n == 2 ? aiPrimitiveType_LINE
+                     : n == 3 ? aiPrimitiveType_TRIANGLE
+                              : aiPrimitiveType_POLYGON;
+        }
+        mesh->mPrimitiveTypes = types;
+        polygons = polygons || (types & aiPrimitiveType_POLYGON) != 0;
+    }
+    return polygons;
+}
+
+const aiScene* triangulateOrFail(Assimp::Importer& importer, const std::string& path) {
+    try {
+        return importer.ApplyPostProcessing(aiProcess_Triangulate);
+    } catch (const std::bad_alloc&) {
+        fail(path, "the mesh is too large to load (out of memory while triangulating)");
+    }
+}
+
 /// The scene Assimp reads, triangulated and checked for the parts read later. Vertices are
 /// not joined here (no aiProcess_JoinIdenticalVertices): Assimp's join merged a NaN vertex
 /// into its neighbours before the finite check; MeshJoiner joins after checking.
 const aiScene& importScene(Assimp::Importer& importer, const std::string& path) {
     auto* io = new FolderConfinedIO(path);
     importer.SetIOHandler(io);  // the importer owns it
-    // ValidateDataStructure runs before the other steps and is load-bearing: without it,
+    // ValidateDataStructure runs before triangulating and is load-bearing: without it,
     // Assimp 5.2's Triangulate read out of bounds (valgrind) on garbage indices of a short PLY.
-    const aiScene* scene =
-        readSceneOrFail(importer, path, aiProcess_Triangulate | aiProcess_ValidateDataStructure);
+    const aiScene* scene = readSceneOrFail(importer, path, aiProcess_ValidateDataStructure);
+    if (scene != nullptr && needsTriangulation(const_cast<aiScene&>(*scene)))
+        scene = triangulateOrFail(importer, path);
     if (io->refused())
         fail(path, "refers to " + *io->refused() +
                        ", outside the mesh's folder (a mesh may read only files beside it)");

@@ -148,3 +148,24 @@ TEST_CASE("loadMesh::a PLY property of an unknown type is refused before the imp
     text.replace(text.find("uchar int"), 9, "uchar dddd int");
     requireHostileMeshError(dir.write("type.ply", text), "has a type PLY does not have");
 }
+
+TEST_CASE("loadMesh::an ASCII PLY face row of garbage bytes is an error, not abort()") {
+    // Found by kerf_fuzz_mesh: Assimp's Triangulate asserted on primitive types the faces
+    // did not have, and Debian's Assimp aborts on a failed assertion.
+    TempDir dir;
+    std::string text = plyAsciiText();
+    const size_t faces = text.find("3 ", text.find("end_header"));
+    const size_t fifth = [&] {
+        size_t at = faces;
+        for (int i = 0; i < 5; ++i) at = text.find('\n', at) + 1;
+        return at;
+    }();
+    text.insert(fifth, std::string(120, '\xff'));
+    const std::string path = dir.write("garbage.ply", text);
+    try {
+        const TriangleMesh mesh = loadMesh(path);
+        CHECK(mesh.triangles.size() <= 8);
+    } catch (const MeshError& e) {
+        CHECK(std::string(e.what()).find(path) != std::string::npos);
+    }
+}
