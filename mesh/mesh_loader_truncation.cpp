@@ -113,12 +113,13 @@ std::optional<std::string> asciiPlyShortfall(const std::vector<PlyElement>& elem
 
 std::optional<std::string> plyTruncation(const std::string& data) {
     if (data.compare(0, 4, "ply\n") != 0 && data.compare(0, 5, "ply\r\n") != 0) return std::nullopt;
-    const size_t end = data.find("end_header");
-    // Assimp reads on at the end of the file for ever without it.
+    // Assimp reads on at the end of the file for ever without it, also when the words are
+    // there but not a line of their own ("end_header;1.25 …", kerf_fuzz_mesh).
+    size_t end = data.find("\nend_header\n");
+    if (end == std::string::npos) end = data.find("\nend_header\r\n");
     if (end == std::string::npos) return "PLY header has no end_header line";
-    size_t pos = data.find('\n', end);
-    if (pos == std::string::npos) return std::nullopt;
-    ++pos;
+    ++end;
+    size_t pos = data.find('\n', end) + 1;
 
     std::istringstream header(data.substr(0, end));
     std::string line;

@@ -169,3 +169,11 @@ TEST_CASE("loadMesh::an ASCII PLY face row of garbage bytes is an error, not abo
         CHECK(std::string(e.what()).find(path) != std::string::npos);
     }
 }
+
+TEST_CASE("loadMesh::a PLY whose end_header is not a line of its own is refused, not endless") {
+    // Found by kerf_fuzz_mesh: "end_header;1.25 0 0" made Assimp read at the end for ever.
+    TempDir dir;
+    std::string text = plyAsciiText();
+    text[text.find("end_header") + 10] = ';';
+    requireHostileMeshError(dir.write("joined.ply", text), "PLY header has no end_header line");
+}
