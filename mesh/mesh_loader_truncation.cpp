@@ -111,14 +111,19 @@ std::optional<std::string> asciiPlyShortfall(const std::vector<PlyElement>& elem
     return std::nullopt;
 }
 
-std::optional<std::string> plyTruncation(const std::string& data) {
-    if (data.compare(0, 4, "ply\n") != 0 && data.compare(0, 5, "ply\r\n") != 0) return std::nullopt;
-    // Assimp reads on at the end of the file for ever without it, also when the words are
-    // there but not a line of their own ("end_header;1.25 …", kerf_fuzz_mesh).
+/// Where a PLY's end_header line starts, or npos. Assimp reads on at the end of the file for
+/// ever without one, also when the words are there but not a line of their own
+/// ("end_header;1.25 …", kerf_fuzz_mesh).
+size_t plyHeaderEnd(const std::string& data) {
     size_t end = data.find("\nend_header\n");
     if (end == std::string::npos) end = data.find("\nend_header\r\n");
+    return end == std::string::npos ? end : end + 1;
+}
+
+std::optional<std::string> plyTruncation(const std::string& data) {
+    if (data.compare(0, 4, "ply\n") != 0 && data.compare(0, 5, "ply\r\n") != 0) return std::nullopt;
+    const size_t end = plyHeaderEnd(data);
     if (end == std::string::npos) return "PLY header has no end_header line";
-    ++end;
     size_t pos = data.find('\n', end) + 1;
 
     std::istringstream header(data.substr(0, end));
