@@ -135,8 +135,9 @@ MeshReport validateMesh(const TriangleMesh& mesh) {
             r.firstBadEdge = BadEdge{*fault, va, vb, mesh.positions[va], mesh.positions[vb]};
         }
     }
-    r.solid = r.triangles > 0 && r.boundaryEdges == 0 && r.nonManifoldEdges == 0 &&
-              r.inconsistentEdges == 0;
+    // A mesh of nothing but degenerate triangles encloses no volume, whatever its edges say.
+    r.solid = r.triangles > r.degenerateTriangles && r.boundaryEdges == 0 &&
+              r.nonManifoldEdges == 0 && r.inconsistentEdges == 0;
     return r;
 }
 

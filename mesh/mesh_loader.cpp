@@ -2,8 +2,10 @@
 // incomplete scene, missing arrays, indices, finite coordinates) before anything is copied,
 // flattens the node hierarchy into one mesh, and joins equal vertices across meshes.
 #include "mesh/mesh_loader.h"
+#include "mesh/gltf_prescan.h"
 #include "mesh/mesh_loader_truncation.h"
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
@@ -16,7 +18,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
+#include <new>
+#include <optional>
 #include <unordered_map>
 
 namespace kerf {
@@ -59,7 +64,8 @@ struct Placement {
 void collect(const aiScene& scene, const aiNode& node, const glm::dmat4& parent,
              std::vector<Placement>& out, const std::string& path, int depth) {
     // A hierarchy deeper than this is a cycle or a hostile file, not a model.
-    if (depth > 1024) fail(path, "node hierarchy deeper than 1024 levels");
+    if (depth > kMeshMaxNodeDepth)
+        fail(path, "node hierarchy deeper than " + std::to_string(kMeshMaxNodeDepth) + " levels");
     const glm::dmat4 world = parent * toGlm(node.mTransformation);
     NodeTransform t;
     t.worldFromMesh = world;
@@ -111,17 +117,103 @@ void checkMeshFile(const std::string& path) {
     if (const auto why = binaryMeshTruncation(path)) fail(path, *why);
 }
 
-/// The scene Assimp reads, triangulated and checked for the parts read later.
-const aiScene& importScene(Assimp::Importer& importer, const std::string& path) {
-    const aiScene* scene = nullptr;
-    // ValidateDataStructure runs before the other steps and is load-bearing: without it,
-    // Assimp 5.2's Triangulate read out of bounds (valgrind) on garbage indices of a short PLY.
+/// Assimp's file access for one mesh: the mesh itself and files in its folder or below
+/// (OBJ's mtllib, glTF's buffers and images). A path that leaves the folder, by ".." or an
+/// absolute path, is refused and remembered, so a downloaded mesh cannot make kerf read
+/// another file of the user's. Paths are compared lexically: a symlink the user placed in
+/// the folder is followed.
+class FolderConfinedIO : public Assimp::DefaultIOSystem {
+public:
+    explicit FolderConfinedIO(const std::string& meshPath)
+        : mFolder(std::filesystem::absolute(meshPath).lexically_normal().parent_path()) {}
+
+    bool Exists(const char* file) const override {
+        return inFolder(file) && Assimp::DefaultIOSystem::Exists(file);
+    }
+
+    Assimp::IOStream* Open(const char* file, const char* mode) override {
+        if (inFolder(file)) return Assimp::DefaultIOSystem::Open(file, mode);
+        if (!mRefused) mRefused = file;
+        return nullptr;
+    }
+
+    /// The first path refused, if any.
+    const std::optional<std::string>& refused() const { return mRefused; }
+
+private:
+    bool inFolder(const char* file) const {
+        const auto wanted = std::filesystem::absolute(file).lexically_normal();
+        const auto [folderEnd, wantedEnd] =
+            std::mismatch(mFolder.begin(), mFolder.end(), wanted.begin(), wanted.end());
+        if (folderEnd == mFolder.end()) return true;
+        if (!mRefused) mRefused = file;
+        return false;
+    }
+
+    std::filesystem::path mFolder;
+    mutable std::optional<std::string> mRefused;
+};
+
+/// Assimp's exceptions and failures as a MeshError naming the file (never the library's own
+/// wording alone: std::bad_alloc and length errors say the mesh is too large).
+const aiScene* readSceneOrFail(Assimp::Importer& importer, const std::string& path,
+                               unsigned flags) {
     try {
-        scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                            aiProcess_ValidateDataStructure);
+        return importer.ReadFile(path, flags);
+    } catch (const std::bad_alloc&) {
+        fail(path, "the mesh is too large to load (the importer ran out of memory)");
+    } catch (const std::length_error&) {
+        fail(path, "the mesh is too large to load (a size in the file exceeds what fits)");
     } catch (const std::exception& e) {
         fail(path, std::string("not a readable mesh (") + e.what() + ")");
     }
+}
+
+/// Whether any face has more than three corners, with each mesh's primitive types set from
+/// its faces: Assimp 5.2's Triangulate asserts (abort()) when the types claim polygons the
+/// faces do not have, as a garbage ASCII PLY face row made them (kerf_fuzz_mesh).
+bool needsTriangulation(aiScene& scene) {
+    bool polygons = false;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        aiMesh* mesh = scene.mMeshes[m];
+        if (mesh == nullptr || mesh->mFaces == nullptr) continue;
+        unsigned types = 0;
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            const unsigned n = mesh->mFaces[f].mNumIndices;
+            types |= n == 0   ? 0u  // a garbage row: no corners, dropped with points and lines
+                     : n == 1 ? aiPrimitiveType_POINT
+                     : n == 2 ? aiPrimitiveType_LINE
+                     : n == 3 ? aiPrimitiveType_TRIANGLE
+                              : aiPrimitiveType_POLYGON;
+        }
+        mesh->mPrimitiveTypes = types;
+        polygons = polygons || (types & aiPrimitiveType_POLYGON) != 0;
+    }
+    return polygons;
+}
+
+const aiScene* triangulateOrFail(Assimp::Importer& importer, const std::string& path) {
+    try {
+        return importer.ApplyPostProcessing(aiProcess_Triangulate);
+    } catch (const std::bad_alloc&) {
+        fail(path, "the mesh is too large to load (out of memory while triangulating)");
+    }
+}
+
+/// The scene Assimp reads, triangulated and checked for the parts read later. Vertices are
+/// not joined here (no aiProcess_JoinIdenticalVertices): Assimp's join merged a NaN vertex
+/// into its neighbours before the finite check; MeshJoiner joins after checking.
+const aiScene& importScene(Assimp::Importer& importer, const std::string& path) {
+    auto* io = new FolderConfinedIO(path);
+    importer.SetIOHandler(io);  // the importer owns it
+    // ValidateDataStructure runs before triangulating and is load-bearing: without it,
+    // Assimp 5.2's Triangulate read out of bounds (valgrind) on garbage indices of a short PLY.
+    const aiScene* scene = readSceneOrFail(importer, path, aiProcess_ValidateDataStructure);
+    if (scene != nullptr && needsTriangulation(const_cast<aiScene&>(*scene)))
+        scene = triangulateOrFail(importer, path);
+    if (io->refused())
+        fail(path, "refers to " + *io->refused() +
+                       ", outside the mesh's folder (a mesh may read only files beside it)");
     if (scene == nullptr) {
         const std::string why = importer.GetErrorString();
         fail(path, "not a readable mesh" + (why.empty() ? std::string() : " (" + why + ")"));
@@ -129,6 +221,47 @@ const aiScene& importScene(Assimp::Importer& importer, const std::string& path) 
     if (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) fail(path, "incomplete scene (no mesh data)");
     if (scene->mRootNode == nullptr) fail(path, "the scene has no root node");
     return *scene;
+}
+
+/// Every vertex of every mesh of the scene finite, used or not, before anything is joined.
+/// Assimp reads floats: a coordinate beyond ±3.4e38 (1e308 in an OBJ) arrives as infinity.
+void checkFiniteVertices(const aiScene& scene, const std::string& path) {
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh* mesh = scene.mMeshes[m];
+        if (mesh == nullptr || mesh->mVertices == nullptr) continue;
+        for (unsigned i = 0; i < mesh->mNumVertices; ++i) {
+            const aiVector3D& v = mesh->mVertices[i];
+            if (std::isnan(v.x) || std::isnan(v.y) || std::isnan(v.z))
+                fail(path, "vertex " + std::to_string(i) + " has a non-finite coordinate (NaN)");
+            if (std::isinf(v.x) || std::isinf(v.y) || std::isinf(v.z))
+                fail(path, "vertex " + std::to_string(i) +
+                               " has a non-finite coordinate: infinite, or beyond the "
+                               "single-precision range (±3.4e38) the mesh reader holds");
+        }
+    }
+}
+
+/// A glTF's JSON scanned before Assimp's recursive importer sees it (see gltf_prescan.h).
+std::optional<uint64_t> prescanGltfFile(const std::string& path) {
+    const std::string ext = lowerExtension(path);
+    if (ext != ".gltf" && ext != ".glb") return std::nullopt;
+    std::ifstream in(path, std::ios::binary);
+    const std::string data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::string_view json = ext == ".glb" ? glbJsonChunk(data) : std::string_view(data);
+    return prescanGltf(path, json).triangles;
+}
+
+/// glTF: Assimp drops a triangle whose index is out of range, silently; the count tells.
+void checkDeclaredTriangles(const aiScene& scene, const std::string& path,
+                            std::optional<uint64_t> declared) {
+    if (!declared) return;
+    uint64_t read = 0;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m)
+        if (scene.mMeshes[m] != nullptr) read += scene.mMeshes[m]->mNumFaces;
+    if (read < *declared)
+        fail(path, "vertex index out of range: the file declares " + std::to_string(*declared) +
+                       " triangles, " + std::to_string(*declared - read) +
+                       " of them with an index past the vertices");
 }
 
 /// Copies the placed meshes' triangles into one mesh, joining vertices equal in position,
@@ -171,8 +304,6 @@ private:
     uint32_t joinedVertex(const aiMesh& m, const NodeTransform& transform, unsigned i) {
         const aiVector3D& a = m.mVertices[i];
         const Vec3 raw(a.x, a.y, a.z);
-        if (!allFinite(raw))
-            fail(mPath, "vertex " + std::to_string(i) + " has a non-finite coordinate");
         const Vec3 pos = Vec3(transform.worldFromMesh * glm::dvec4(raw, 1.0));
         if (!allFinite(pos))
             fail(mPath, "vertex " + std::to_string(i) + " is not finite once placed by its node");
@@ -211,12 +342,13 @@ private:
     std::vector<uint32_t> mLocal;  // the current mesh's vertex -> joined index
 };
 
-}  // namespace
-
-TriangleMesh loadMesh(const std::string& path) {
+TriangleMesh loadMeshUnguarded(const std::string& path) {
     checkMeshFile(path);
+    const std::optional<uint64_t> declaredTriangles = prescanGltfFile(path);
     Assimp::Importer importer;
     const aiScene& scene = importScene(importer, path);
+    checkFiniteVertices(scene, path);
+    checkDeclaredTriangles(scene, path, declaredTriangles);
 
     std::vector<Placement> placements;
     collect(scene, *scene.mRootNode, glm::dmat4(1.0), placements, path, 0);
@@ -236,6 +368,18 @@ TriangleMesh loadMesh(const std::string& path) {
     TriangleMesh out = joiner.take();
     if (out.triangles.empty()) fail(path, "no triangles");
     return out;
+}
+
+}  // namespace
+
+TriangleMesh loadMesh(const std::string& path) {
+    try {
+        return loadMeshUnguarded(path);
+    } catch (const std::bad_alloc&) {
+        fail(path, "the mesh is too large to load (out of memory)");
+    } catch (const std::length_error&) {
+        fail(path, "the mesh is too large to load (more elements than fit)");
+    }
 }
 
 }  // namespace kerf

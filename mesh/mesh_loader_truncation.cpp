@@ -111,14 +111,20 @@ std::optional<std::string> asciiPlyShortfall(const std::vector<PlyElement>& elem
     return std::nullopt;
 }
 
+/// Where a PLY's end_header line starts, or npos. Assimp reads on at the end of the file for
+/// ever without one, also when the words are there but not a line of their own
+/// ("end_header;1.25 …", kerf_fuzz_mesh).
+size_t plyHeaderEnd(const std::string& data) {
+    size_t end = data.find("\nend_header\n");
+    if (end == std::string::npos) end = data.find("\nend_header\r\n");
+    return end == std::string::npos ? end : end + 1;
+}
+
 std::optional<std::string> plyTruncation(const std::string& data) {
     if (data.compare(0, 4, "ply\n") != 0 && data.compare(0, 5, "ply\r\n") != 0) return std::nullopt;
-    const size_t end = data.find("end_header");
-    // Assimp reads on at the end of the file for ever without it.
+    const size_t end = plyHeaderEnd(data);
     if (end == std::string::npos) return "PLY header has no end_header line";
-    size_t pos = data.find('\n', end);
-    if (pos == std::string::npos) return std::nullopt;
-    ++pos;
+    size_t pos = data.find('\n', end) + 1;
 
     std::istringstream header(data.substr(0, end));
     std::string line;
@@ -135,7 +141,8 @@ std::optional<std::string> plyTruncation(const std::string& data) {
             bigEndian = format == "binary_big_endian";
         } else if (key == "element") {
             PlyElement e;
-            if (!(words >> e.name >> e.count)) return std::nullopt;
+            if (!(words >> e.name >> e.count))
+                return "PLY header line '" + line + "' is not 'element NAME COUNT'";
             elements.push_back(e);
         } else if (key == "property" && !elements.empty()) {
             std::string type;
@@ -147,9 +154,12 @@ std::optional<std::string> plyTruncation(const std::string& data) {
                 p.countSize = plyTypeSize(countType);
                 p.size = plyTypeSize(itemType);
                 p.countSigned = countType.find('u') != 0;
-                if (p.countSize == 0 || p.size == 0 || p.countSize > 4) return std::nullopt;
+                // Unknown types were left to Assimp, which then reserved the declared
+                // 4e9 vertices (48 GB) before reading a row (kerf_fuzz_mesh).
+                if (p.countSize == 0 || p.size == 0 || p.countSize > 4)
+                    return "PLY list property '" + line + "' has a type PLY does not have";
             } else if ((p.size = plyTypeSize(type)) == 0) {
-                return std::nullopt;
+                return "PLY property '" + line + "' has a type PLY does not have";
             }
             elements.back().properties.push_back(p);
         }
