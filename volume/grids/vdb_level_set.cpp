@@ -4,6 +4,8 @@
 // touch (its own and its seven upper neighbours) exists and their tile values agree.
 #include "volume/grids/vdb_level_set.h"
 
+#include "volume/grids/checked_vdb_layout.h"
+
 #include <openvdb/openvdb.h>
 
 #include <algorithm>
@@ -228,6 +230,7 @@ std::shared_ptr<const LevelSetGrid> loadLevelSet(const std::string& path,
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw VdbError("no such file");
     if (std::filesystem::is_directory(path, ec)) throw VdbError("it is a folder, not a .vdb file");
+    if (const std::string bad = checkVdbLayout(path); !bad.empty()) throw VdbError(bad);
     try {
         openvdb::io::File file(path);
         file.open(false);  // no delayed loading: the file may change after this returns
@@ -291,6 +294,9 @@ std::shared_ptr<const LevelSetGrid> loadLevelSet(const std::string& path,
         return result;
     } catch (const openvdb::Exception& e) {
         throw VdbError(std::string("cannot read it as a .vdb file: ") + e.what());
+    } catch (const std::bad_alloc&) {  // a length inside the grids' nodes kerf does not check
+        throw VdbError(
+            "cannot read it as a .vdb file: its grids ask for more memory than there is");
     }
 }
 
