@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <tuple>
 
 namespace kerf {
 
@@ -62,6 +64,18 @@ Bounds3 insideSamples(const float* brick) {
 
 }  // namespace
 
+void LevelSetGrid::Source::listVaryingGroups(std::vector<std::array<int32_t, 3>>& out) const {
+    const int32_t n[3] = {(blocks[0] + kGroup - 1) / kGroup, (blocks[1] + kGroup - 1) / kGroup,
+                          (blocks[2] + kGroup - 1) / kGroup};
+    for (int32_t z = 0; z < n[2]; ++z)
+        for (int32_t y = 0; y < n[1]; ++y)
+            for (int32_t x = 0; x < n[0]; ++x) out.push_back({x, y, z});
+}
+
+float LevelSetGrid::Source::groupValue(int, int, int) const { return float(background); }
+
+bool LevelSetGrid::Source::groupHasDetail(int, int, int) const { return true; }
+
 LevelSetGrid::LevelSetGrid(const Source& source, LevelSetInfo info) : mInfo(std::move(info)) {
     mBackground = static_cast<float>(source.background);
     for (int a = 0; a < 3; ++a) {
@@ -70,40 +84,88 @@ LevelSetGrid::LevelSetGrid(const Source& source, LevelSetInfo info) : mInfo(std:
         mGroups[a] = (mBlocks[a] + kGroup - 1) / kGroup;
     }
     mInsideBounds = Bounds3{};
-    mGroupList.resize(size_t(mGroups[0]) * mGroups[1] * mGroups[2]);
-    std::vector<Block> blocks(kGroup * kGroup * kGroup);
-    std::vector<float> brick(kBrickSize);
+    // Every group starts as the constant the source gives it; the listed ones are built.
+    mGroupIndex.resize(size_t(mGroups[0]) * mGroups[1] * mGroups[2]);
     size_t gi = 0;
     for (int gz = 0; gz < mGroups[2]; ++gz)
         for (int gy = 0; gy < mGroups[1]; ++gy)
-            for (int gx = 0; gx < mGroups[0]; ++gx, ++gi) {
-                Group& g = mGroupList[gi];
-                g.lo = std::numeric_limits<float>::infinity();
-                g.hi = -g.lo;
-                bool anyBrick = false;
-                size_t bi = 0;
-                for (int z = 0; z < kGroup; ++z)
-                    for (int y = 0; y < kGroup; ++y)
-                        for (int x = 0; x < kGroup; ++x, ++bi) {
-                            const Block& b = blocks[bi] = buildBlock(
-                                source, gx * kGroup + x, gy * kGroup + y, gz * kGroup + z, brick);
-                            anyBrick = anyBrick || b.brick >= 0;
-                            g.lo = std::min(g.lo, b.lo);
-                            g.hi = std::max(g.hi, b.hi);
-                        }
-                // A group of one constant stores no blocks.
-                if (anyBrick || g.lo != g.hi) {
-                    storeGroupBlocks(blocks, g);
-                } else {
-                    g.firstBlock = -1;
+            for (int gx = 0; gx < mGroups[0]; ++gx, ++gi)
+                mGroupIndex[gi] = constantGroup(source.groupValue(gx, gy, gz));
+    std::vector<std::array<int32_t, 3>> varying;
+    source.listVaryingGroups(varying);
+    // In the box's order (z, y, x), each once, so the build is the same whatever the list's.
+    std::sort(varying.begin(), varying.end(), [](const auto& a, const auto& b) {
+        return std::tie(a[2], a[1], a[0]) < std::tie(b[2], b[1], b[0]);
+    });
+    varying.erase(std::unique(varying.begin(), varying.end()), varying.end());
+    std::vector<Block> blocks(kGroup * kGroup * kGroup);
+    std::vector<float> brick(kBrickSize);
+    for (const auto& gc : varying) {
+        if (gc[0] < 0 || gc[1] < 0 || gc[2] < 0 || gc[0] >= mGroups[0] || gc[1] >= mGroups[1] ||
+            gc[2] >= mGroups[2])
+            continue;
+        buildGroup(source, gc, blocks, brick);
+    }
+    mConstantGroups.clear();
+}
+
+int32_t LevelSetGrid::constantGroup(float v) {
+    uint32_t bits;
+    std::memcpy(&bits, &v, sizeof bits);  // by bits: NaN and -0 are values of their own
+    const auto [it, made] = mConstantGroups.try_emplace(bits, int32_t(mGroupList.size()));
+    if (made) mGroupList.push_back(Group{v, v, -1});
+    return it->second;
+}
+
+void LevelSetGrid::buildGroup(const Source& source, const std::array<int32_t, 3>& gc,
+                              std::vector<Block>& blocks, std::vector<float>& brick) {
+    Group g;
+    g.lo = std::numeric_limits<float>::infinity();
+    g.hi = -g.lo;
+    const bool detail = source.groupHasDetail(gc[0], gc[1], gc[2]);
+    const float own = source.groupValue(gc[0], gc[1], gc[2]);
+    bool anyBrick = false;
+    size_t bi = 0;
+    for (int z = 0; z < kGroup; ++z)
+        for (int y = 0; y < kGroup; ++y)
+            for (int x = 0; x < kGroup; ++x, ++bi) {
+                Block& b = blocks[bi];
+                const bool upperFace = x == kGroup - 1 || y == kGroup - 1 || z == kGroup - 1;
+                if (detail || upperFace) {
+                    b = buildBlock(source, gc[0] * kGroup + x, gc[1] * kGroup + y,
+                                   gc[2] * kGroup + z, brick);
+                } else {  // inside a constant group: its samples are the group's own value
+                    b = Block{own, own, -1};
+                    if (own <= 0.f)
+                        widenInside(gc[0] * kGroup + x, gc[1] * kGroup + y, gc[2] * kGroup + z,
+                                    Vec3(0.0), Vec3(kBlock));
                 }
+                anyBrick = anyBrick || b.brick >= 0;
+                g.lo = std::min(g.lo, b.lo);
+                g.hi = std::max(g.hi, b.hi);
             }
+    const size_t at = (size_t(gc[2]) * mGroups[1] + gc[1]) * mGroups[0] + gc[0];
+    if (anyBrick || g.lo != g.hi) {  // a group of one constant stores no blocks
+        storeGroupBlocks(blocks, g);
+        mGroupIndex[at] = int32_t(mGroupList.size());
+        mGroupList.push_back(g);
+    } else {
+        mGroupIndex[at] = constantGroup(g.lo);
+    }
+}
+
+void LevelSetGrid::widenInside(int bx, int by, int bz, const Vec3& lo, const Vec3& hi) {
+    // f ≤ 0 only in cells with a corner ≤ 0: within a cell of those samples.
+    const Vec3 origin(double(mLo[0]) + double(bx) * kBlock, double(mLo[1]) + double(by) * kBlock,
+                      double(mLo[2]) + double(bz) * kBlock);
+    mInsideBounds.extend(Bounds3{origin + lo - Vec3(1.0), origin + hi + Vec3(1.0)});
 }
 
 LevelSetGrid::Block LevelSetGrid::buildBlock(const Source& source, int bx, int by, int bz,
                                              std::vector<float>& brick) {
     Block b;
     b.brick = -1;
+    ++mBlocksExamined;
     float v = mBackground;
     if (bx >= mBlocks[0] || by >= mBlocks[1] || bz >= mBlocks[2] ||
         source.isConstant(bx, by, bz, v)) {
@@ -118,12 +180,9 @@ LevelSetGrid::Block LevelSetGrid::buildBlock(const Source& source, int bx, int b
         mLipschitz = std::max(mLipschitz, neighbourDifference(brick.data()));
     }
     if (b.lo <= 0.f) {
-        // f ≤ 0 only in cells with a corner ≤ 0: within a cell of those samples.
-        const Vec3 origin(mLo[0] + bx * kBlock, mLo[1] + by * kBlock, mLo[2] + bz * kBlock);
         const Bounds3 samples =
             b.brick < 0 ? Bounds3{Vec3(0.0), Vec3(kBlock)} : insideSamples(brick.data());
-        mInsideBounds.extend(
-            Bounds3{origin + samples.lo - Vec3(1.0), origin + samples.hi + Vec3(1.0)});
+        widenInside(bx, by, bz, samples.lo, samples.hi);
     }
     return b;
 }
@@ -148,13 +207,13 @@ void LevelSetGrid::storeGroupBlocks(const std::vector<Block>& blocks, Group& g) 
 }
 
 uint64_t LevelSetGrid::memoryBytes() const {
-    return mGroupList.size() * sizeof(Group) + mBlockList.size() * sizeof(Block) +
-           mTiles.size() * sizeof(mTiles[0]) + mBricks.size() * sizeof(float);
+    return mGroupIndex.size() * sizeof(int32_t) + mGroupList.size() * sizeof(Group) +
+           mBlockList.size() * sizeof(Block) + mTiles.size() * sizeof(mTiles[0]) +
+           mBricks.size() * sizeof(float);
 }
 
 const LevelSetGrid::Block* LevelSetGrid::blockAt(int bx, int by, int bz) const {
-    const Group& g =
-        mGroupList[(size_t(bz / kGroup) * mGroups[1] + by / kGroup) * mGroups[0] + bx / kGroup];
+    const Group& g = groupAt(bx / kGroup, by / kGroup, bz / kGroup);
     if (g.firstBlock < 0) return nullptr;
     return &mBlockList[g.firstBlock + ((bz % kGroup) * kGroup + by % kGroup) * kGroup +
                        bx % kGroup];
@@ -167,11 +226,7 @@ bool LevelSetGrid::cellCorners(int i, int j, int k, float c[8]) const {
     const int bx = i / kBlock, by = j / kBlock, bz = k / kBlock;
     const Block* b = blockAt(bx, by, bz);
     if (!b || b->brick < 0) {
-        const float v =
-            b ? b->lo
-              : mGroupList[(size_t(bz / kGroup) * mGroups[1] + by / kGroup) * mGroups[0] +
-                           bx / kGroup]
-                    .lo;
+        const float v = b ? b->lo : groupAt(bx / kGroup, by / kGroup, bz / kGroup).lo;
         std::fill(c, c + 8, v);
         return true;
     }
@@ -234,7 +289,7 @@ void LevelSetGrid::sampleRange(const int lo[3], const int hi[3], float& mn, floa
     for (int gz = blo[2] / kGroup; gz <= bhi[2] / kGroup; ++gz)
         for (int gy = blo[1] / kGroup; gy <= bhi[1] / kGroup; ++gy)
             for (int gx = blo[0] / kGroup; gx <= bhi[0] / kGroup; ++gx) {
-                const Group& g = mGroupList[(size_t(gz) * mGroups[1] + gy) * mGroups[0] + gx];
+                const Group& g = groupAt(gx, gy, gz);
                 const int g0[3] = {gx * kGroup, gy * kGroup, gz * kGroup};
                 const bool covered = blo[0] <= g0[0] && blo[1] <= g0[1] && blo[2] <= g0[2] &&
                                      bhi[0] >= g0[0] + kGroup - 1 && bhi[1] >= g0[1] + kGroup - 1 &&

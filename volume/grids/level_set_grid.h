@@ -19,6 +19,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace kerf {
@@ -45,6 +46,14 @@ public:
     static constexpr int kBlock = 8;   ///< cells per block side
     static constexpr int kGroup = 16;  ///< blocks per group side
     static constexpr int kTile = 4;    ///< blocks per tile side: a group has 4³ tiles
+    static constexpr int kGroupVoxels = kBlock * kGroup;  ///< 128: one OpenVDB internal node
+    /// At most this many groups in the grid's box (a 4-byte index each, 16 MB; a box of about
+    /// 20,000 voxels a side): the coarse level is dense over the box, everything finer is
+    /// stored only where the source says a group varies.
+    static constexpr uint64_t kMaxGroups = uint64_t(1) << 22;
+    /// Index coordinates of data are within ±kMaxIndex (2^31 − 512), so a group's margin and
+    /// its ninth samples stay in the int range.
+    static constexpr int64_t kMaxIndex = (int64_t(1) << 31) - 512;
 
     /// The samples by block, for the constructor: blocks (bx, by, bz) cover the integer points
     /// of [lo, lo + 8·blocks]; beyond them the value is `background` (> 0), which the samples on
@@ -59,6 +68,15 @@ public:
         virtual bool isConstant(int bx, int by, int bz, float& value) const = 0;
         /// Fills the block's 9³ samples, x fastest.
         virtual void fillBrick(int bx, int by, int bz, float* samples) const = 0;
+        /// Appends the groups (kGroup blocks a side, counted from lo) whose samples may not all
+        /// be groupValue(g): every other group is stored as that constant, without asking
+        /// about its blocks. Duplicates are allowed. By default every group of the box.
+        virtual void listVaryingGroups(std::vector<std::array<int32_t, 3>>& out) const;
+        /// The value of every sample of a group not listed (by default the background).
+        virtual float groupValue(int gx, int gy, int gz) const;
+        /// False when the group's own 128³ voxels are one constant, so only its blocks on the
+        /// upper faces (whose ninth samples reach the next group) can vary.
+        virtual bool groupHasDetail(int gx, int gy, int gz) const;
         virtual ~Source() = default;
     };
 
@@ -69,6 +87,11 @@ public:
     const Bounds3& insideBounds() const { return mInsideBounds; }
     /// Blocks that hold a brick, and the bytes this grid uses.
     uint64_t brickCount() const { return mBrickCount; }
+    /// Blocks whose samples were asked of the source while building: the build's work, which
+    /// follows the groups the source lists, not the box.
+    uint64_t blocksExamined() const { return mBlocksExamined; }
+    /// Groups that store their blocks.
+    uint64_t storedGroups() const { return mBlockList.size() / (kGroup * kGroup * kGroup); }
     uint64_t memoryBytes() const;
 
     /// Appends to `out` (cleared first) the crossings of the interpolant's zero set along
@@ -108,14 +131,27 @@ private:
     /// (`brick` is scratch), with mLipschitz and mInsideBounds widened to hold it; and a
     /// group's blocks stored, with the ranges of their tiles.
     Block buildBlock(const Source& source, int bx, int by, int bz, std::vector<float>& brick);
+    void buildGroup(const Source& source, const std::array<int32_t, 3>& gc,
+                    std::vector<Block>& blocks, std::vector<float>& brick);
     void storeGroupBlocks(const std::vector<Block>& blocks, Group& g);
+    /// mInsideBounds widened by the samples [lo, hi] (block units from block b's corner).
+    void widenInside(int bx, int by, int bz, const Vec3& lo, const Vec3& hi);
+    /// The index in mGroupList of a constant group of value v (one entry per value).
+    int32_t constantGroup(float v);
+    const Group& groupAt(int gx, int gy, int gz) const {
+        return mGroupList[mGroupIndex[(size_t(gz) * mGroups[1] + gy) * mGroups[0] + gx]];
+    }
 
     LevelSetInfo mInfo;
     int32_t mLo[3];      ///< index of sample (0, 0, 0)
     int32_t mBlocks[3];  ///< blocks per axis
     int32_t mGroups[3];  ///< groups per axis
     float mBackground;
+    /// Per group of the box, x fastest: its entry in mGroupList (groups that store blocks
+    /// have one each; constant groups share one per value).
+    std::vector<int32_t> mGroupIndex;
     std::vector<Group> mGroupList;
+    std::unordered_map<uint32_t, int32_t> mConstantGroups;  ///< while building: value bits → group
     std::vector<Block> mBlockList;  ///< kGroup³ per group that has any non-constant block
     /// The min and max of each tile of 4³ blocks, (kGroup / kTile)³ per group in mBlockList
     /// (in the same order), so a walk crosses empty space inside a group 32 cells at a step.
@@ -123,6 +159,7 @@ private:
     std::vector<float> mBricks;  ///< 9³ floats per brick
     Bounds3 mInsideBounds;
     uint64_t mBrickCount = 0;
+    uint64_t mBlocksExamined = 0;
     double mLipschitz = 0.0;
 };
 

@@ -38,9 +38,7 @@ public:
     void run(double t0, double t1) {
         const int lo[3] = {0, 0, 0};
         dda(double(kGroupCells), lo, mGrid.mGroups, t0, t1, [&](const int* g, double a, double b) {
-            const LevelSetGrid::Group& group =
-                mGrid
-                    .mGroupList[(size_t(g[2]) * mGrid.mGroups[1] + g[1]) * mGrid.mGroups[0] + g[0]];
+            const LevelSetGrid::Group& group = mGrid.groupAt(g[0], g[1], g[2]);
             if (group.firstBlock < 0 || group.lo > 0.f || group.hi <= 0.f)
                 return region(a, group.hi <= 0.f);
             // Tiles of 4³ blocks, then the blocks of a tile that can change sign.

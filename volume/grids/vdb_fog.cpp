@@ -3,6 +3,7 @@
 #include "volume/grids/vdb_fog.h"
 
 #include "volume/grids/block_pyramid.h"
+#include "volume/grids/checked_vdb_layout.h"
 
 #include <openvdb/openvdb.h>
 
@@ -150,12 +151,15 @@ VdbFog loadVdbFog(const std::string& path, const std::string& gridName) {
     openvdb::initialize();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) throw VdbFogError("no such file");
+    if (const std::string bad = checkVdbLayout(path); !bad.empty()) throw VdbFogError(bad);
     openvdb::io::File file(path);
     openvdb::GridPtrVecPtr grids;
     try {
         file.open(false);
         grids = file.getGrids();
         file.close();
+    } catch (const std::bad_alloc&) {  // a length inside the grids' nodes kerf does not check
+        throw VdbFogError("not a readable .vdb file: its grids ask for more memory than there is");
     } catch (const std::exception& e) {
         throw VdbFogError(std::string("not a readable .vdb file (") + e.what() + ")");
     }

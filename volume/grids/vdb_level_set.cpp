@@ -4,6 +4,8 @@
 // touch (its own and its seven upper neighbours) exists and their tile values agree.
 #include "volume/grids/vdb_level_set.h"
 
+#include "volume/grids/checked_vdb_layout.h"
+
 #include <openvdb/openvdb.h>
 
 #include <algorithm>
@@ -44,15 +46,48 @@ std::string describeGrids(const openvdb::GridPtrVec& grids) {
 /// single-threaded).
 class TreeSource final : public LevelSetGrid::Source {
 public:
-    TreeSource(const FloatTree& tree, const openvdb::CoordBBox& box) : mAcc(tree) {
+    /// `box` is within ±LevelSetGrid::kMaxIndex (checked by the caller), so every coordinate
+    /// below fits an int with room for a group's margin.
+    TreeSource(const FloatTree& tree, const openvdb::CoordBBox& box) : mTree(tree), mAcc(tree) {
         background = tree.background();
         for (int a = 0; a < 3; ++a) {
-            // A block of background on each side, so the walk starts and ends outside.
-            const int first = (box.min()[a] >> 3) * 8 - LevelSetGrid::kBlock;
-            const int last = (box.max()[a] >> 3) * 8 + 2 * LevelSetGrid::kBlock;  // exclusive
-            lo[a] = first;
-            blocks[a] = (last - first) / LevelSetGrid::kBlock;
+            // Groups line up with OpenVDB's 128³ internal nodes; a block of background before
+            // and after the data, so the walk starts and ends outside.
+            const int64_t first =
+                floorDivide(int64_t(box.min()[a]) - 8, kGroupVoxels) * kGroupVoxels;
+            const int64_t last = floorDivide(box.max()[a], 8) * 8 + 2 * LevelSetGrid::kBlock;
+            lo[a] = int32_t(first);
+            blocks[a] = int32_t((last - first) / LevelSetGrid::kBlock);
         }
+    }
+
+    /// Each 128³ internal node and each tile other than the background makes the groups whose
+    /// samples reach it vary: the node's group and its lower neighbours, a tile's shell.
+    void listVaryingGroups(std::vector<std::array<int32_t, 3>>& out) const override {
+        for (auto node = mTree.cbeginNode(); node; ++node) {
+            if (node.getDepth() != kInternal1Depth) continue;
+            openvdb::CoordBBox nb;
+            node.getBoundingBox(nb);
+            const std::array<int32_t, 3> g = groupOf(nb.min());
+            for (int c = 0; c < 8; ++c)
+                out.push_back({g[0] - (c & 1), g[1] - ((c >> 1) & 1), g[2] - ((c >> 2) & 1)});
+        }
+        auto tile = mTree.cbeginValueAll();
+        tile.setMaxDepth(kInternal1Depth - 1);  // tiles of 128³ voxels and more
+        for (; tile; ++tile) {
+            if (tile.isVoxelValue() || *tile == mTree.background()) continue;
+            openvdb::CoordBBox tb;
+            tile.getBoundingBox(tb);
+            listTileShell(groupOf(tb.min()), groupOf(tb.max()), out);
+        }
+    }
+
+    float groupValue(int gx, int gy, int gz) const override {
+        return mAcc.getValue(groupOrigin(gx, gy, gz));
+    }
+
+    bool groupHasDetail(int gx, int gy, int gz) const override {
+        return mAcc.probeConstNode<Internal1>(groupOrigin(gx, gy, gz)) != nullptr;
     }
 
     bool isConstant(int bx, int by, int bz, float& value) const override {
@@ -87,6 +122,43 @@ public:
     }
 
 private:
+    using Internal1 = FloatTree::RootNodeType::ChildNodeType::ChildNodeType;
+    static constexpr int kInternal1Depth = 2;  // root 0, 4096³ nodes 1, 128³ nodes 2, leaves 3
+    static constexpr int64_t kGroupVoxels = LevelSetGrid::kGroupVoxels;
+
+    static int64_t floorDivide(int64_t a, int64_t b) {
+        return a >= 0 ? a / b : -((-a + b - 1) / b);
+    }
+
+    std::array<int32_t, 3> groupOf(const Coord& c) const {
+        std::array<int32_t, 3> g;
+        for (int a = 0; a < 3; ++a)
+            g[a] = int32_t(floorDivide(int64_t(c[a]) - lo[a], kGroupVoxels));
+        return g;
+    }
+    Coord groupOrigin(int gx, int gy, int gz) const {
+        return Coord(int32_t(lo[0] + int64_t(gx) * kGroupVoxels),
+                     int32_t(lo[1] + int64_t(gy) * kGroupVoxels),
+                     int32_t(lo[2] + int64_t(gz) * kGroupVoxels));
+    }
+
+    /// The groups whose samples reach both the tile of groups [a, b] and beyond it: those of
+    /// [a − 1, b] outside [a, b − 1].
+    static void listTileShell(const std::array<int32_t, 3>& a, const std::array<int32_t, 3>& b,
+                              std::vector<std::array<int32_t, 3>>& out) {
+        const auto inner = [&](int axis, int32_t v) { return v >= a[axis] && v < b[axis]; };
+        for (int32_t z = a[2] - 1; z <= b[2]; ++z)
+            for (int32_t y = a[1] - 1; y <= b[1]; ++y) {
+                if (inner(1, y) && inner(2, z)) {  // only the two ends of the row are in the shell
+                    out.push_back({a[0] - 1, y, z});
+                    out.push_back({b[0], y, z});
+                    continue;
+                }
+                for (int32_t x = a[0] - 1; x <= b[0]; ++x) out.push_back({x, y, z});
+            }
+    }
+
+    const FloatTree& mTree;
     mutable openvdb::tree::ValueAccessor<const FloatTree> mAcc;
 };
 
@@ -105,6 +177,50 @@ openvdb::CoordBBox storedBox(const FloatTree& tree) {
     return box;
 }
 
+/// The grid's box against LevelSetGrid's limits, in 64 bits (its corners may be near the int
+/// range, where OpenVDB's own dim() overflows).
+void checkLevelSetExtent(const std::string& what, const openvdb::CoordBBox& box) {
+    for (int a = 0; a < 3; ++a)
+        for (const int64_t c : {int64_t(box.min()[a]), int64_t(box.max()[a])})
+            if (c < -LevelSetGrid::kMaxIndex || c > LevelSetGrid::kMaxIndex)
+                throw VdbError(what + " has data at index " + std::to_string(c) + " along " +
+                                   "xyz"[a] + ", beyond ±" +
+                                   std::to_string(LevelSetGrid::kMaxIndex) +
+                                   " (kerf's range for a level set's index coordinates)",
+                               true);
+    uint64_t groups = 1;  // each factor ≤ 2^25 + 3, and the product stops at the limit
+    std::string sides;
+    for (int a = 0; a < 3; ++a) {
+        const int64_t side = int64_t(box.max()[a]) - box.min()[a] + 1;
+        sides += (a ? " x " : "") + std::to_string(side);
+        groups = std::min<uint64_t>(groups * uint64_t(side / LevelSetGrid::kGroupVoxels + 3),
+                                    LevelSetGrid::kMaxGroups + 1);
+    }
+    if (groups > LevelSetGrid::kMaxGroups)
+        throw VdbError(what + "'s data spans a box of " + sides +
+                           " voxels (its leaves and tiles); a level set's box may hold at most " +
+                           std::to_string(LevelSetGrid::kMaxGroups) +
+                           " blocks of 128³ voxels (about 20,000 voxels a side)",
+                       true);
+}
+
+/// What `kerf check` says about the grid, from the file.
+LevelSetInfo levelSetInfo(const FloatGrid& grid, const std::string& path) {
+    LevelSetInfo info;
+    info.file = path;
+    info.gridName = grid.getName();
+    const openvdb::Vec3d vs = grid.transform().voxelSize();
+    info.voxelSize = Vec3(vs.x(), vs.y(), vs.z());
+    info.activeVoxels = grid.activeVoxelCount();
+    info.background = grid.tree().background();
+    // OpenVDB's matrices act on row vectors: world = index · M, translation in row 3.
+    const openvdb::Mat4d m = grid.transform().baseMap()->getAffineMap()->getMat4();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) info.worldFromIndex.linear[i][j] = m(i, j);
+    info.worldFromIndex.offset = Vec3(m(3, 0), m(3, 1), m(3, 2));
+    return info;
+}
+
 }  // namespace
 
 std::shared_ptr<const LevelSetGrid> loadLevelSet(const std::string& path,
@@ -114,6 +230,7 @@ std::shared_ptr<const LevelSetGrid> loadLevelSet(const std::string& path,
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw VdbError("no such file");
     if (std::filesystem::is_directory(path, ec)) throw VdbError("it is a folder, not a .vdb file");
+    if (const std::string bad = checkVdbLayout(path); !bad.empty()) throw VdbError(bad);
     try {
         openvdb::io::File file(path);
         file.open(false);  // no delayed loading: the file may change after this returns
@@ -165,22 +282,11 @@ std::shared_ptr<const LevelSetGrid> loadLevelSet(const std::string& path,
                                ": a level set's outside must be positive",
                            true);
 
-        LevelSetInfo info;
-        info.file = path;
-        info.gridName = name;
-        const openvdb::Vec3d vs = grid->transform().voxelSize();
-        info.voxelSize = Vec3(vs.x(), vs.y(), vs.z());
-        info.activeVoxels = grid->activeVoxelCount();
-        info.background = tree.background();
-        // OpenVDB's matrices act on row vectors: world = index · M, translation in row 3.
-        const openvdb::Mat4d m = grid->transform().baseMap()->getAffineMap()->getMat4();
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) info.worldFromIndex.linear[i][j] = m(i, j);
-        info.worldFromIndex.offset = Vec3(m(3, 0), m(3, 1), m(3, 2));
-
+        LevelSetInfo info = levelSetInfo(*grid, path);
         const openvdb::CoordBBox box = storedBox(tree);
         if (box.empty())
             throw VdbError(what + " is empty: it has no values besides the background", true);
+        checkLevelSetExtent(what, box);
         auto result = std::make_shared<const LevelSetGrid>(TreeSource(tree, box), std::move(info));
         if (result->insideBounds().empty())
             throw VdbError(
@@ -188,6 +294,9 @@ std::shared_ptr<const LevelSetGrid> loadLevelSet(const std::string& path,
         return result;
     } catch (const openvdb::Exception& e) {
         throw VdbError(std::string("cannot read it as a .vdb file: ") + e.what());
+    } catch (const std::bad_alloc&) {  // a length inside the grids' nodes kerf does not check
+        throw VdbError(
+            "cannot read it as a .vdb file: its grids ask for more memory than there is");
     }
 }
 
