@@ -9,6 +9,7 @@
 
 #include <ft2build.h>
 
+#include "io/number_text.h"
 #include "io/outline_overlap.h"
 #include FT_FREETYPE_H
 #include FT_OUTLINE_H
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace kerf {
 namespace {
@@ -224,6 +226,10 @@ std::u32string checkedText(const TextSpec& spec) {
         throw FontError(FontError::Subject::Text, "text spacing must be finite and greater than 0");
     }
     std::u32string chars = decodeUtf8(spec.text);
+    if (chars.size() > kMaxTextCharacters)
+        throw FontError(FontError::Subject::Text, "text has " + std::to_string(chars.size()) +
+                                                      " characters; one text may have at most " +
+                                                      std::to_string(kMaxTextCharacters));
     for (char32_t c : chars) {
         if (c == U'\n' || c == U'\r')
             throw FontError(FontError::Subject::Text,
@@ -246,6 +252,20 @@ void openFace(FreeTypeFace& ft, const FontLocation& location, const TextSpec& sp
     }
 }
 
+/// Refuses a layout whose pen or ink left the double range (size or spacing 1e308 drew part
+/// of the text, the rest at infinity).
+void checkFinite(const TextSpec& spec, const TextOutline& out) {
+    const bool finite =
+        std::isfinite(out.advance) &&
+        (out.ink.empty() || (std::isfinite(out.ink.lo.x) && std::isfinite(out.ink.lo.y) &&
+                             std::isfinite(out.ink.hi.x) && std::isfinite(out.ink.hi.y)));
+    if (!finite)
+        throw FontError(FontError::Subject::Text,
+                        "text size " + exactNumber(spec.size) + " with spacing " +
+                            exactNumber(spec.spacing) +
+                            " is too large: the outline's coordinates would overflow");
+}
+
 /// Lays the glyphs out along the baseline, kerned and spaced; returns each inked glyph's bounds.
 std::vector<InkBounds> layOutGlyphs(FT_Face face, const TextSpec& spec, const std::u32string& chars,
                                     TextOutline& out) {
@@ -257,6 +277,12 @@ std::vector<InkBounds> layOutGlyphs(FT_Face face, const TextSpec& spec, const st
 
     OutlineSink sink;
     sink.scale = spec.size / static_cast<double>(face->units_per_EM);
+    // Coordinates are font units (integers) times the scale: below the smallest normal double
+    // they would lose their precision, then vanish (size 1e-308 drew nothing).
+    if (sink.scale < std::numeric_limits<double>::min())
+        throw FontError(FontError::Subject::Text,
+                        "text size " + exactNumber(spec.size) +
+                            " is too small: the outline's coordinates would underflow");
     std::vector<InkBounds> glyphInk;
     FT_UInt previous = 0;
     for (char32_t c : chars) {
@@ -300,6 +326,7 @@ std::vector<InkBounds> layOutGlyphs(FT_Face face, const TextSpec& spec, const st
         previous = index;
     }
     out.advance = sink.pen.x * sink.scale;
+    checkFinite(spec, out);
     return glyphInk;
 }
 

@@ -32,6 +32,11 @@ struct FontError : std::runtime_error {
     std::string hint;
 };
 
+/// The most characters one text may have (docs/robustness.md, "Limits"): each glyph costs
+/// about 8 kB of outline and overlap tests, so the 1 MB string the language allows took 35 s
+/// and 8.3 GB; 10,000 is several pages of one line, 80 MB and a fraction of a second.
+constexpr size_t kMaxTextCharacters = 10000;
+
 struct TextSpec {
     enum class HAlign { Left, Center, Right, AdvanceCenter };
     enum class VAlign { Baseline, Top, Center, Bottom };

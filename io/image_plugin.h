@@ -22,6 +22,13 @@ typedef struct KerfTexture KerfTexture;
 #define KERF_TEXTURE_WRAP_PERIODIC 0
 #define KERF_TEXTURE_WRAP_CLAMP 1
 
+/// The largest texture `textureOpen` decodes, checked on the file's header before any pixel is
+/// allocated (docs/robustness.md, "Limits"): 16,384 texels a side and 2^26 texels in all
+/// (8,192², or 16,384 × 4,096). At the limit the linear RGB copy is 768 MB and the cache's
+/// MIP levels about as much again; a header may claim 2^31 a side in 70 bytes.
+#define KERF_TEXTURE_MAX_SIDE 16384
+#define KERF_TEXTURE_MAX_TEXELS (1 << 26)
+
 /// Called by `read` once the file's size is known; returns room for width·height·channels
 /// floats (or null to abort). `integerCoded` is 1 when the file stores 8- or 16-bit codes.
 typedef float* (*KerfImageAllocate)(void* user, int width, int height, int channels,

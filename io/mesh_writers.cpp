@@ -1,6 +1,7 @@
 // OBJ, binary PLY and binary STL encoders, and the atomic write of their bytes.
 #include "io/mesh_writers.h"
 
+#include "io/mesh_weld.h"
 #include "io/number_text.h"
 
 #include <algorithm>
@@ -106,10 +107,17 @@ bool meshFormatFromPath(const std::string& path, MeshFormat& format) {
 }
 
 std::string encodeMesh(MeshFormat format, const MeshArrays& mesh) {
+    // One vertex per position as written: OBJ writes the doubles, PLY and STL floats.
+    const WeldedMesh welded = weldWrittenPositions(mesh, format != MeshFormat::Obj);
+    MeshArrays joined;
+    joined.xyz = welded.xyz.data();
+    joined.vertexCount = welded.xyz.size() / 3;
+    joined.indices = welded.indices.data();
+    joined.triangleCount = welded.indices.size() / 3;
     switch (format) {
-        case MeshFormat::Obj: return encodeObj(mesh);
-        case MeshFormat::Ply: return encodePly(mesh);
-        default: return encodeStl(mesh);
+        case MeshFormat::Obj: return encodeObj(joined);
+        case MeshFormat::Ply: return encodePly(joined);
+        default: return encodeStl(joined);
     }
 }
 

@@ -25,7 +25,8 @@ struct MeshArrays {
 /// The format named by the path's extension (.obj, .ply, .stl, any case); false for others.
 bool meshFormatFromPath(const std::string& path, MeshFormat& format);
 
-/// The file's bytes. OBJ: `v x y z` with the shortest decimal that reads back to the same
+/// The file's bytes, with vertices at one written position joined first (io/mesh_weld.h).
+/// OBJ: `v x y z` with the shortest decimal that reads back to the same
 /// double, `f a b c` 1-based. PLY: float x, y, z and a uchar-counted list of uint indices.
 /// STL: an 80-byte header, the count, and per triangle its unit normal (float zeros for a
 /// degenerate one), its corners as floats and a zero attribute word.

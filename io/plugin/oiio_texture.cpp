@@ -11,7 +11,9 @@
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/texture.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <map>
@@ -101,7 +103,48 @@ double srgbDecode(double encoded) {  // IEC 61966-2-1, as io/srgb.h
     return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
 }
 
-/// Decodes `path` into linear grey or RGB (alpha and other channels are dropped).
+/// Why an image of this header cannot be a texture (too large, or not 2-D), or empty.
+std::string headerProblem(const OIIO::ImageSpec& spec) {
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1)
+        return "not a two-dimensional image";
+    const int64_t texels = int64_t(spec.width) * int64_t(spec.height);
+    if (spec.width > KERF_TEXTURE_MAX_SIDE || spec.height > KERF_TEXTURE_MAX_SIDE ||
+        texels > KERF_TEXTURE_MAX_TEXELS)
+        return "its header says " + std::to_string(spec.width) + " x " +
+               std::to_string(spec.height) + " pixels; a texture may have at most " +
+               std::to_string(KERF_TEXTURE_MAX_SIDE) + " a side and " +
+               std::to_string(KERF_TEXTURE_MAX_TEXELS) + " in all";
+    return {};
+}
+
+/// Rows decoded at a time: the float copy of all the file's channels is one strip, never the
+/// whole image.
+constexpr int kTextureStripRows = 64;
+
+/// Reads the image `in` has open into `out` (sized), made linear, strip by strip.
+bool readLinearStrips(OIIO::ImageInput& in, bool integerCoded, LinearPixels& out,
+                      std::string& why) {
+    const size_t row = size_t(out.width) * size_t(out.channels);
+    std::vector<float> strip(row * kTextureStripRows);
+    for (int y0 = 0; y0 < out.height; y0 += kTextureStripRows) {
+        const int y1 = std::min(out.height, y0 + kTextureStripRows);
+        if (!in.read_scanlines(0, 0, y0, y1, 0, 0, out.channels, OIIO::TypeDesc::FLOAT,
+                               strip.data())) {
+            why = in.geterror();
+            if (why.empty()) why = "its pixels cannot be read";
+            return false;
+        }
+        float* const dst = out.values.data() + size_t(y0) * row;
+        for (size_t i = 0; i < size_t(y1 - y0) * row; ++i) {
+            const float v = strip[i];
+            dst[i] = integerCoded ? float(srgbDecode(v)) : (std::isfinite(v) ? v : 0.0f);
+        }
+    }
+    return true;
+}
+
+/// Decodes `path` into linear grey or RGB (alpha and other channels are dropped). The header
+/// is checked against the texture limits before any pixel is allocated.
 std::shared_ptr<LinearPixels> decode(const char* path, std::string& why) {
     std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
     if (!in) {
@@ -110,17 +153,8 @@ std::shared_ptr<LinearPixels> decode(const char* path, std::string& why) {
         return nullptr;
     }
     const OIIO::ImageSpec spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1) {
-        why = "not a two-dimensional image";
-        return nullptr;
-    }
-    std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data())) {
-        why = in->geterror();
-        if (why.empty()) why = "its pixels cannot be read";
-        return nullptr;
-    }
-    in->close();
+    why = headerProblem(spec);
+    if (!why.empty()) return nullptr;
     auto out = std::make_shared<LinearPixels>();
     out->width = spec.width;
     out->height = spec.height;
@@ -128,14 +162,9 @@ std::shared_ptr<LinearPixels> decode(const char* path, std::string& why) {
     out->channels = spec.nchannels >= 3 ? 3 : 1;
     const bool integerCoded = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
                               spec.format.basetype == OIIO::TypeDesc::UINT16;
-    const size_t pixels = size_t(spec.width) * spec.height;
-    out->values.resize(pixels * out->channels);
-    for (size_t i = 0; i < pixels; ++i)
-        for (int c = 0; c < out->channels; ++c) {
-            const float v = all[i * spec.nchannels + c];
-            out->values[i * out->channels + c] =
-                integerCoded ? float(srgbDecode(v)) : (std::isfinite(v) ? v : 0.0f);
-        }
+    out->values.resize(size_t(spec.width) * size_t(spec.height) * size_t(out->channels));
+    if (!readLinearStrips(*in, integerCoded, *out, why)) return nullptr;
+    in->close();
     return out;
 }
 

@@ -399,3 +399,45 @@ TEST_CASE("font_outline::errors") {
         CHECK_THAT(message(), Catch::Contains("has no such style"));
     }
 }
+
+TEST_CASE("font_outline::limits on the characters and on the size's range") {
+    TextSpec spec;
+    spec.font = kFont;
+    auto message = [&]() -> std::string {
+        try {
+            layoutText(spec);
+        } catch (const FontError& e) {
+            return (e.subject == FontError::Subject::Font ? "font: " : "text: ") +
+                   std::string(e.what());
+        }
+        return "(no error)";
+    };
+    SECTION("at most kMaxTextCharacters characters (a 1 MB string took 35 s and 8.3 GB)") {
+        spec.text = std::string(kMaxTextCharacters, '.');
+        CHECK(message() == "(no error)");
+        spec.text += '.';
+        CHECK(message() == "text: text has 10001 characters; one text may have at most 10000");
+    }
+    SECTION("a size or spacing whose outline leaves the double range") {
+        spec.text = "kerf kerf";
+        spec.size = 1e308;
+        CHECK_THAT(message(), Catch::StartsWith("text: text size 1e+308 with spacing 1 is too "
+                                                "large: the outline's coordinates would overflow"));
+        spec.size = 1.0;
+        spec.spacing = 1e308;
+        CHECK_THAT(message(), Catch::Contains("is too large"));
+        spec.spacing = 1.0;
+        spec.size = 1e-308;
+        CHECK_THAT(message(), Catch::StartsWith("text: text size 1e-308 is too small"));
+    }
+    SECTION("large and small sizes that stay in range are drawn, scaled exactly") {
+        spec.text = "kerf";
+        for (const double size : {1e300, 1e-300}) {
+            spec.size = size;
+            const TextOutline out = layoutText(spec);
+            CHECK(std::isfinite(out.advance));
+            CHECK(out.advance > 0.0);
+            CHECK(out.glyphs.size() == 4);
+        }
+    }
+}
