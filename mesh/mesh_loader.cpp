@@ -180,11 +180,12 @@ bool needsTriangulation(aiScene& scene) {
         unsigned types = 0;
         for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
             const unsigned n = mesh->mFaces[f].mNumIndices;
-            types |= n == 0   ? 0u  // a garbage row: no corners, dropped with points and lines
-                     : n == 1 ? aiPrimitiveType_POINT
-                     : n == 2 ? aiPrimitiveType_LINE
-                     : n == 3 ? aiPrimitiveType_TRIANGLE
-                              : aiPrimitiveType_POLYGON;
+            // n == 0: a garbage row, no corners, dropped with points and lines.
+            const aiPrimitiveType type = n == 1   ? aiPrimitiveType_POINT
+                                         : n == 2 ? aiPrimitiveType_LINE
+                                         : n == 3 ? aiPrimitiveType_TRIANGLE
+                                                  : aiPrimitiveType_POLYGON;
+            if (n > 0) types |= static_cast<unsigned>(type);
         }
         mesh->mPrimitiveTypes = types;
         polygons = polygons || (types & aiPrimitiveType_POLYGON) != 0;
