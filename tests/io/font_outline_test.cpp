@@ -182,6 +182,17 @@ void checkClosed(const PathShape& shape) {
     }
 }
 
+/// layoutText's error with its subject first ("font: …" or "text: …"), or "(no error)".
+std::string layoutError(const TextSpec& spec) {
+    try {
+        layoutText(spec);
+    } catch (const FontError& e) {
+        return (e.subject == FontError::Subject::Font ? "font: " : "text: ") +
+               std::string(e.what());
+    }
+    return "(no error)";
+}
+
 }  // namespace
 
 TEST_CASE("font_outline::glyphs match FreeType's rasteriser") {
@@ -342,16 +353,7 @@ TEST_CASE("font_outline::alignment") {
 TEST_CASE("font_outline::errors") {
     TextSpec spec;
     spec.text = "kerf";
-    // what() with the subject first: "font: …" or "text: …".
-    auto message = [&]() -> std::string {
-        try {
-            layoutText(spec);
-        } catch (const FontError& e) {
-            return (e.subject == FontError::Subject::Font ? "font: " : "text: ") +
-                   std::string(e.what());
-        }
-        return "(no error)";
-    };
+    auto message = [&] { return layoutError(spec); };
     SECTION("a family fontconfig does not have is not silently substituted") {
         spec.font = "Kerf No Such Font";
         std::string m = message();
@@ -403,15 +405,7 @@ TEST_CASE("font_outline::errors") {
 TEST_CASE("font_outline::limits on the characters and on the size's range") {
     TextSpec spec;
     spec.font = kFont;
-    auto message = [&]() -> std::string {
-        try {
-            layoutText(spec);
-        } catch (const FontError& e) {
-            return (e.subject == FontError::Subject::Font ? "font: " : "text: ") +
-                   std::string(e.what());
-        }
-        return "(no error)";
-    };
+    auto message = [&] { return layoutError(spec); };
     SECTION("at most kMaxTextCharacters characters (a 1 MB string took 35 s and 8.3 GB)") {
         spec.text = std::string(kMaxTextCharacters, '.');
         CHECK(message() == "(no error)");

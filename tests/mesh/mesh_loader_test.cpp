@@ -2,6 +2,7 @@
 // every malformed file is a MeshError naming the file.
 #include "mesh/mesh_loader.h"
 #include "mesh/half_edges.h"
+#include "mesh/mesh_error_check.h"
 #include "mesh/mesh_files.h"
 
 #include "app/kerf_runner.h"
@@ -13,24 +14,6 @@
 
 using namespace kerf;
 using namespace kerf::test;
-
-namespace {
-
-/// Expects loadMesh(path) to throw a MeshError whose message names the file and contains
-/// `what` (empty: any reason, for errors Assimp itself words).
-void requireMeshError(const std::string& path, const std::string& what) {
-    try {
-        loadMesh(path);
-        FAIL("no MeshError for " << path);
-    } catch (const MeshError& e) {
-        const std::string message = e.what();
-        INFO(message);
-        CHECK(message.find(path) != std::string::npos);
-        CHECK(message.find(what) != std::string::npos);
-    }
-}
-
-}  // namespace
 
 TEST_CASE("loadMesh::every format gives the same solid octahedron") {
     TempDir dir;
