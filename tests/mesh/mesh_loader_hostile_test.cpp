@@ -166,3 +166,20 @@ TEST_CASE("loadMesh::a PLY whose end_header is not a line of its own is refused,
     text[text.find("end_header") + 10] = ';';
     requireMeshError(dir.write("joined.ply", text), "PLY header has no end_header line");
 }
+
+TEST_CASE("loadMesh::PLY rows of no properties are refused, however many are declared") {
+    // Found by kerf_fuzz_mesh (tests/fuzz/corpus/mesh/ply-rows-without-properties): misspelt
+    // property lines left 4e9 vertex rows of no bytes, which Assimp walked for minutes.
+    TempDir dir;
+    for (const char* format : {"ascii", "binary_little_endian"}) {
+        INFO(format);
+        std::string text = plyHeader(format, 4000000000u, 1) + "0 0 0\n";
+        for (const char* axis : {"x", "y", "z"}) {
+            const std::string line = std::string("property float ") + axis + "\n";
+            text.replace(text.find(line), line.size(),
+                         std::string("xroperty float ") + axis + "\n");
+        }
+        requireMeshError(dir.write(std::string(format) + ".ply", text),
+                         "PLY element 'vertex' declares 4000000000 rows but no properties");
+    }
+}

@@ -14,8 +14,9 @@ namespace kerf::test {
 
 using Grid = VdbGridToWrite;
 
-inline void writeGrids(const std::string& path, const std::vector<Grid>& grids) {
-    writeVdbGrids(path, grids);
+inline void writeGrids(const std::string& path, const std::vector<Grid>& grids,
+                       const VdbCompression& compression = {}) {
+    writeVdbGrids(path, grids, compression);
 }
 
 /// A level set of the signed distance `sdf` (world units) over the index box ±n, half-width 3

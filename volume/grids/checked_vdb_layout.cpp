@@ -10,20 +10,17 @@
 // are a uint32 length and the bytes.
 #include "volume/grids/checked_vdb_layout.h"
 
-#include <cstring>
-#include <fstream>
-#include <stdexcept>
+#include "volume/grids/checked_vdb_tree.h"
+#include "volume/grids/vdb_layout_reader.h"
+
 #include <string_view>
-#include <vector>
 
 namespace kerf {
 
 namespace {
 
-/// Thrown inside the check with what is wrong; checkVdbLayout returns its text.
-struct VdbLayoutProblem : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
+using vdb_layout::VdbLayoutProblem;
+using vdb_layout::VdbLayoutReader;
 
 /// The value size OpenVDB's TypedMetadata reads for a type name (it ignores the stored size,
 /// so another stored size would put every later read out of step), or 0: any size.
@@ -37,90 +34,49 @@ uint64_t fixedMetadataSize(std::string_view type) {
     return 0;
 }
 
-class VdbLayoutReader {
-public:
-    explicit VdbLayoutReader(const std::string& path) : mIn(path, std::ios::binary) {
-        if (!mIn) throw VdbLayoutProblem("cannot open it for reading");
-        mIn.seekg(0, std::ios::end);
-        const std::streamoff end = mIn.tellg();
-        if (end < 0) throw VdbLayoutProblem("cannot find its size");
-        mSize = uint64_t(end);
-        mIn.seekg(0);
-    }
-
-    uint64_t size() const { return mSize; }
-    uint64_t at() const { return mPos; }
-    uint64_t left() const { return mSize - mPos; }
-
-    void seek(uint64_t pos) {
-        mPos = pos;
-        mIn.seekg(std::streamoff(pos));
-    }
-
-    /// n bytes of `what`, or the truncation named.
-    void read(void* out, uint64_t n, const std::string& what) {
-        need(n, what);
-        mIn.read(static_cast<char*>(out), std::streamsize(n));
-        if (!mIn)
-            throw VdbLayoutProblem("cannot read " + what + " at byte " + std::to_string(mPos));
-        mPos += n;
-    }
-    void need(uint64_t n, const std::string& what) const {
-        if (n > left())
-            throw VdbLayoutProblem("truncated at byte " + std::to_string(mPos) + ": " + what +
-                                   " needs " + std::to_string(n) + " bytes, " +
-                                   std::to_string(left()) + " remain of " + std::to_string(mSize));
-    }
-    template <typename T>
-    T value(const std::string& what) {
-        T v;
-        read(&v, sizeof v, what);
-        return v;
-    }
-    /// A length-prefixed string, its length checked against the bytes left (and `most`).
-    std::string string(const std::string& what, uint64_t most = UINT64_MAX) {
-        const uint64_t start = mPos;
-        const uint64_t n = value<uint32_t>("the length of " + what);
-        if (n > left() || n > most)
-            throw VdbLayoutProblem("bad length at byte " + std::to_string(start) + ": " + what +
-                                   " claims " + std::to_string(n) + " bytes, " +
-                                   (n > left() ? std::to_string(left()) + " remain"
-                                               : "at most " + std::to_string(most) + " allowed"));
-        std::string s(n, '\0');
-        if (n) read(s.data(), n, what);
-        return s;
-    }
-    void skip(uint64_t n, const std::string& what) {
-        need(n, what);
-        seek(mPos + n);
-    }
-
-private:
-    std::ifstream mIn;
-    uint64_t mSize = 0;
-    uint64_t mPos = 0;
-};
-
 /// OpenVDB's compression flags: zip, active mask, Blosc.
 constexpr uint32_t kVdbCompressionFlags = 1 | 2 | 4;
 
 /// Names and types of OpenVDB's objects are short; 4 kB is far beyond any written.
 constexpr uint64_t kMaxVdbName = 4096;
 
-/// One array of delayed-load metadata: a uint32 compressed size, then that many bytes of Blosc
-/// data, or (size 0) `count · element` raw bytes. Returns the bytes it takes after its size.
+/// One array of delayed-load metadata (io::DelayedLoadMetadata::readValue): a uint32 size,
+/// then that many bytes of Blosc data whose header must say `count · element` bytes or its
+/// padding (OpenVDB reserves what the header says), or (size 0) `count · element` raw bytes.
+/// Returns the bytes it takes after its size.
 uint64_t delayedLoadArray(VdbLayoutReader& in, uint64_t count, uint64_t element,
                           const std::string& what) {
+    const uint64_t sizeAt = in.at();
     const uint64_t compressed = in.value<uint32_t>("the compressed size in " + what);
-    const uint64_t bytes = compressed == 0 ? count * element : compressed;
-    in.skip(bytes, what);
-    return bytes;
+    if (compressed == 0) {
+        in.skip(count * element, what);
+        return count * element;
+    }
+    constexpr uint64_t kBloscHeader = 16;  // version, flags, type size; uint32 sizes
+    if (compressed < kBloscHeader)
+        throw VdbLayoutProblem("bad size at byte " + std::to_string(sizeAt) + ": " + what +
+                               " holds " + std::to_string(compressed) +
+                               " compressed bytes, less than a Blosc header");
+    unsigned char header[kBloscHeader];
+    in.read(header, kBloscHeader, "the Blosc header in " + what);
+    const uint64_t unpacked = uint64_t(header[4]) | uint64_t(header[5]) << 8 |
+                              uint64_t(header[6]) << 16 | uint64_t(header[7]) << 24;
+    // OpenVDB pads arrays under 128 bytes to 128 before compressing (points/StreamCompression).
+    constexpr uint64_t kBloscPad = 128;
+    if (unpacked != count * element && !(unpacked == kBloscPad && count * element <= kBloscPad))
+        throw VdbLayoutProblem("bad size at byte " + std::to_string(sizeAt + 8) + ": " + what +
+                               " unpacks to " + std::to_string(unpacked) + " bytes, not the " +
+                               std::to_string(count * element) + " of its " +
+                               std::to_string(count) + " leaves");
+    in.skip(compressed - kBloscHeader, what);
+    return compressed;
 }
 
-/// OpenVDB's delayed-load metadata: a uint32 count of leaves, then a byte per leaf and an
-/// int64 per leaf, each array raw or compressed. OpenVDB allocates 9 bytes a leaf from the
-/// count, so the count is held to the leaves the file can hold (each takes at least its 64-byte
-/// mask), and the arrays must fill the item's size exactly.
+/// OpenVDB's delayed-load metadata: a uint32 count of leaves, then a byte per leaf and
+/// (unless its size is 0xFFFFFFFF, as uncompressed grids write) an int64 per leaf, each array
+/// raw or compressed; bytes beyond them up to the item's size are skipped, as OpenVDB does.
+/// OpenVDB allocates 9 bytes a leaf from the count, so the count is held to the leaves the
+/// file can hold (each takes at least its 64-byte mask).
 void checkDelayedLoad(VdbLayoutReader& in, uint64_t size, const std::string& what) {
     if (size == 0) return;
     const uint64_t start = in.at();
@@ -130,14 +86,23 @@ void checkDelayedLoad(VdbLayoutReader& in, uint64_t size, const std::string& wha
                                " claims " + std::to_string(leaves) + " leaves, more than a " +
                                std::to_string(in.size()) + "-byte file can hold");
     uint64_t used = 4 + 4 + delayedLoadArray(in, leaves, 1, what);
-    used += 4 + delayedLoadArray(in, leaves, 8, what);
-    if (used != size)
+    const uint64_t secondAt = in.at();
+    used += 4;
+    if (in.value<uint32_t>("the compressed size in " + what) != UINT32_MAX) {
+        in.seek(secondAt);
+        used += delayedLoadArray(in, leaves, 8, what);
+    }
+    if (used > size)
         throw VdbLayoutProblem("bad size at byte " + std::to_string(start - 4) + ": " + what +
                                " claims " + std::to_string(size) + " bytes, its arrays take " +
                                std::to_string(used));
+    in.skip(size - used, what);
 }
 
-void checkMetadata(VdbLayoutReader& in, const std::string& owner) {
+/// Checks a metadata map and returns whether it says "is_saved_as_half_float" (a grid's tree
+/// then holds halves).
+bool checkMetadata(VdbLayoutReader& in, const std::string& owner) {
+    bool halfFloat = false;
     const uint64_t start = in.at();
     const uint64_t count = in.value<uint32_t>("the metadata count of " + owner);
     // Each item takes at least its two string lengths and its size: 12 bytes.
@@ -149,6 +114,7 @@ void checkMetadata(VdbLayoutReader& in, const std::string& owner) {
         const std::string item = "metadata item " + std::to_string(i + 1) + " of " + owner;
         const std::string name = in.string("the name of " + item, kMaxVdbName);
         const std::string what = "metadata '" + name + "' of " + owner;
+        const uint64_t typeAt = in.at();
         const std::string type = in.string("the type of " + what, kMaxVdbName);
         const uint64_t sizeAt = in.at();
         const uint64_t size = in.value<uint32_t>("the size of " + what);
@@ -158,14 +124,28 @@ void checkMetadata(VdbLayoutReader& in, const std::string& owner) {
             throw VdbLayoutProblem("bad size at byte " + std::to_string(sizeAt) + ": " + what +
                                    " of type " + type + " claims " + std::to_string(size) +
                                    " bytes, a " + type + " has " + std::to_string(fixed));
-        if (type == "__delayedload")
+        if (name == "is_saved_as_half_float" && type != "bool")  // OpenVDB takes any type
+            throw VdbLayoutProblem("bad type at byte " + std::to_string(typeAt) + ": " + what +
+                                   " is not a bool");
+        if (type == "__delayedload") {
             checkDelayedLoad(in, size, what);
-        else
+        } else if (type == "bool") {  // OpenVDB reads the byte into a bool
+            const uint64_t valueAt = in.at();
+            const auto value = in.value<uint8_t>(what);
+            if (value > 1)
+                throw VdbLayoutProblem("bad value at byte " + std::to_string(valueAt) + ": " +
+                                       what + " of type bool is " + std::to_string(value) +
+                                       ", not 0 or 1");
+            if (name == "is_saved_as_half_float") halfFloat = value == 1;
+        } else {
             in.skip(size, what);
+        }
     }
+    return halfFloat;
 }
 
-void checkHeader(VdbLayoutReader& in) {
+/// Checks the header and returns the file version.
+uint32_t checkHeader(VdbLayoutReader& in) {
     int64_t magic = 0;
     in.read(&magic, 8, "the header");
     if (magic != 0x56444220)
@@ -183,16 +163,30 @@ void checkHeader(VdbLayoutReader& in) {
             ".vdb files as OpenVDB's io::File writes them");
     if (version < 222) in.skip(1, "the compression flag");
     in.skip(36, "the UUID");
+    return version;
 }
+
+/// The bytes of a linear map as its read() takes them (math/Maps.h), or 0 for another map
+/// (a frustum, which the readers refuse before reading the tree, or a name OpenVDB refuses).
+uint64_t linearMapBytes(std::string_view type) {
+    if (type == "AffineMap" || type == "UnitaryMap") return 128;  // a Mat4d
+    if (type == "ScaleMap" || type == "UniformScaleMap") return 5 * 24;
+    if (type == "ScaleTranslateMap" || type == "UniformScaleTranslateMap") return 6 * 24;
+    if (type == "TranslationMap") return 24;
+    return 0;
+}
+
+/// The tree type of every float grid; "_HalfFloat" marks a descriptor of one saved as halves.
+constexpr std::string_view kFloatTreeType = "Tree_float_5_4_3";
 
 /// Grid `index`'s descriptor at the reader's position, its section's offsets, and at its
 /// offset its compression, metadata and transform type. Returns where the next one starts.
-uint64_t checkGrid(VdbLayoutReader& in, int64_t index) {
+uint64_t checkGrid(VdbLayoutReader& in, int64_t index, uint32_t fileVersion) {
     const std::string which = "grid " + std::to_string(index + 1);
     const std::string name = in.string("the name of " + which, kMaxVdbName);
     const std::string grid = "grid '" + name + "'";
-    in.string("the type of " + grid, kMaxVdbName);
-    in.string("the instance parent of " + grid, kMaxVdbName);
+    const std::string type = in.string("the type of " + grid, kMaxVdbName);
+    const bool instance = !in.string("the instance parent of " + grid, kMaxVdbName).empty();
     const uint64_t offsetsAt = in.at();
     int64_t pos[3];
     in.read(pos, sizeof pos, "the offsets of " + grid);
@@ -212,12 +206,29 @@ uint64_t checkGrid(VdbLayoutReader& in, int64_t index) {
         throw VdbLayoutProblem("bad compression flags at byte " + std::to_string(compressionAt) +
                                ": " + grid + " has " + std::to_string(compression) +
                                ", OpenVDB's are 1, 2 and 4");
-    checkMetadata(in, grid);
-    in.string("the transform type of " + grid, kMaxVdbName);
+    const bool halfFloat = checkMetadata(in, grid);
+    const std::string map = in.string("the transform type of " + grid, kMaxVdbName);
     if (in.at() > uint64_t(pos[1]))
         throw VdbLayoutProblem("bad offsets: " + grid + "'s metadata runs to byte " +
                                std::to_string(in.at()) + ", past its data at byte " +
                                std::to_string(pos[1]));
+    // Only float trees are read (the readers refuse other grids from their metadata), and an
+    // instance shares its parent's tree.
+    const bool floatTree =
+        type == kFloatTreeType || type == std::string(kFloatTreeType) + "_HalfFloat";
+    if (floatTree && !instance && linearMapBytes(map) != 0) {
+        in.skip(linearMapBytes(map), "the transform of " + grid);
+        const vdb_layout::VdbTreeEnds ends =
+            vdb_layout::checkFloatTreeLayout(in, {fileVersion, compression, halfFloat}, grid);
+        // OpenVDB's writer records both ends; its reader reads on from the transform, so a
+        // record out of step with the tree is a corrupted file.
+        if (ends.topology != uint64_t(pos[1]) || ends.buffers != uint64_t(pos[2]))
+            throw VdbLayoutProblem("bad offsets at byte " + std::to_string(offsetsAt) + ": " +
+                                   grid + "'s tree ends at byte " + std::to_string(ends.topology) +
+                                   " and its data at byte " + std::to_string(ends.buffers) +
+                                   ", its offsets say " + std::to_string(pos[1]) + " and " +
+                                   std::to_string(pos[2]));
+    }
     return uint64_t(pos[2]);
 }
 
@@ -226,7 +237,7 @@ uint64_t checkGrid(VdbLayoutReader& in, int64_t index) {
 std::string checkVdbLayout(const std::string& path) {
     try {
         VdbLayoutReader in(path);
-        checkHeader(in);
+        const uint32_t version = checkHeader(in);
         checkMetadata(in, "the file");
         const uint64_t countAt = in.at();
         const int64_t grids = in.value<int32_t>("the grid count");
@@ -235,7 +246,7 @@ std::string checkVdbLayout(const std::string& path) {
             throw VdbLayoutProblem("bad count at byte " + std::to_string(countAt) + ": " +
                                    std::to_string(grids) + " grids, " + std::to_string(in.left()) +
                                    " bytes remain");
-        for (int64_t g = 0; g < grids; ++g) in.seek(checkGrid(in, g));
+        for (int64_t g = 0; g < grids; ++g) in.seek(checkGrid(in, g, version));
         return "";
     } catch (const VdbLayoutProblem& e) {
         return e.what();

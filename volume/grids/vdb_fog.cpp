@@ -156,10 +156,7 @@ VdbFog loadVdbFog(const std::string& path, const std::string& gridName) {
     openvdb::GridPtrVecPtr grids;
     try {
         file.open(false);
-        grids = file.getGrids();
-        file.close();
-    } catch (const std::bad_alloc&) {  // a length inside the grids' nodes kerf does not check
-        throw VdbFogError("not a readable .vdb file: its grids ask for more memory than there is");
+        grids = file.readAllGridMetadata();  // the trees of the chosen grid only, below
     } catch (const std::exception& e) {
         throw VdbFogError(std::string("not a readable .vdb file (") + e.what() + ")");
     }
@@ -183,11 +180,17 @@ VdbFog loadVdbFog(const std::string& path, const std::string& gridName) {
     if (chosen->getGridClass() == openvdb::GRID_LEVEL_SET)
         throw VdbFogError("grid '" + chosen->getName() +
                           "' is a level set (a surface), not a fog volume of density");
-    auto grid = openvdb::gridConstPtrCast<openvdb::FloatGrid>(chosen);
+    if (!chosen->transform().isLinear())
+        throw VdbFogError("grid '" + chosen->getName() + "' has a non-linear transform");
+    openvdb::FloatGrid::ConstPtr grid;
+    try {
+        grid = openvdb::gridConstPtrCast<openvdb::FloatGrid>(file.readGrid(chosen->getName()));
+        file.close();
+    } catch (const std::exception& e) {
+        throw VdbFogError(std::string("not a readable .vdb file (") + e.what() + ")");
+    }
     if (grid->activeVoxelCount() == 0)
         throw VdbFogError("grid '" + chosen->getName() + "' has no active voxels");
-    if (!grid->transform().isLinear())
-        throw VdbFogError("grid '" + chosen->getName() + "' has a non-linear transform");
     auto field = std::make_shared<FogField>(grid);
     if (field->minValue() < 0.0f)
         throw VdbFogError("grid '" + chosen->getName() + "' holds negative density (down to " +

@@ -23,6 +23,7 @@ void place(GridT& grid, const VdbGridToWrite& in) {
         transform->postTranslate(openvdb::Vec3d(in.move.x, in.move.y, in.move.z));
     grid.setTransform(transform);
     grid.setName(in.name);
+    grid.setSaveFloatAsHalf(in.saveAsHalf);
 }
 
 openvdb::GridBase::Ptr makeGrid(const VdbGridToWrite& in) {
@@ -46,12 +47,19 @@ openvdb::GridBase::Ptr makeGrid(const VdbGridToWrite& in) {
 
 }  // namespace
 
-void writeVdbGrids(const std::string& path, const std::vector<VdbGridToWrite>& grids) {
+void writeVdbGrids(const std::string& path, const std::vector<VdbGridToWrite>& grids,
+                   const VdbCompression& compression) {
     openvdb::initialize();
     openvdb::GridPtrVec out;
     for (const VdbGridToWrite& g : grids) out.push_back(makeGrid(g));
     try {
         openvdb::io::File file(path);
+        using Codec = VdbCompression::Codec;
+        file.setCompression((compression.codec == Codec::Blosc ? openvdb::io::COMPRESS_BLOSC
+                             : compression.codec == Codec::Zip ? openvdb::io::COMPRESS_ZIP
+                                                               : openvdb::io::COMPRESS_NONE) |
+                            (compression.activeMask ? openvdb::io::COMPRESS_ACTIVE_MASK
+                                                    : openvdb::io::COMPRESS_NONE));
         file.write(out);
         file.close();
     } catch (const openvdb::Exception& e) {

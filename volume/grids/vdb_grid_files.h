@@ -30,10 +30,20 @@ struct VdbGridToWrite {
     /// A level set's inactive voxels take the sign of the band next to them (OpenVDB's signed
     /// flood fill), so its inside is negative beyond the band too.
     bool fillSigns = false;
+    /// Stored as 16-bit halves (OpenVDB's "is_saved_as_half_float").
+    bool saveAsHalf = false;
+};
+
+/// How the trees are stored: OpenVDB's default is Blosc with active-mask compression.
+struct VdbCompression {
+    enum class Codec : uint8_t { Blosc, Zip, None };
+    Codec codec = Codec::Blosc;
+    bool activeMask = true;  ///< inactive values left out where the masks can restore them
 };
 
 /// Writes the grids to one .vdb file. Throws std::runtime_error when it cannot.
-void writeVdbGrids(const std::string& path, const std::vector<VdbGridToWrite>& grids);
+void writeVdbGrids(const std::string& path, const std::vector<VdbGridToWrite>& grids,
+                   const VdbCompression& compression = {});
 
 /// A float grid read from a .vdb file (shared, read-only).
 class VdbFloatGrid {
