@@ -121,7 +121,10 @@ size_t plyHeaderEnd(const std::string& data) {
 }
 
 std::optional<std::string> plyTruncation(const std::string& data) {
-    if (data.compare(0, 4, "ply\n") != 0 && data.compare(0, 5, "ply\r\n") != 0) return std::nullopt;
+    // Assimp takes any file starting "ply" as PLY, whatever follows on the line (kerf_fuzz_mesh:
+    // "ply\x01…" got past this check and Assimp reserved 48 GB for its vertices).
+    if (data.compare(0, 4, "ply\n") != 0 && data.compare(0, 5, "ply\r\n") != 0)
+        return "PLY file whose first line is not 'ply'";
     const size_t end = plyHeaderEnd(data);
     if (end == std::string::npos) return "PLY header has no end_header line";
     size_t pos = data.find('\n', end) + 1;
@@ -210,10 +213,15 @@ std::optional<std::string> plyTruncation(const std::string& data) {
 std::optional<std::string> binaryMeshTruncation(const std::string& path) {
     std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".stl" && ext != ".ply" && ext != ".glb") return std::nullopt;
+    // PLY and binary glTF by their first bytes too: Assimp falls back on them for any name.
+    char head[4] = {0, 0, 0, 0};
+    std::ifstream(path, std::ios::binary).read(head, 4);
+    const bool ply = ext == ".ply" || std::memcmp(head, "ply", 3) == 0;
+    const bool glb = ext == ".glb" || std::memcmp(head, "glTF", 4) == 0;
+    if (ext != ".stl" && !ply && !glb) return std::nullopt;
     const std::string data = readAll(path);
-    if (ext == ".glb") return glbTruncation(data);
-    return ext == ".stl" ? stlTruncation(data) : plyTruncation(data);
+    if (glb) return glbTruncation(data);
+    return ply ? plyTruncation(data) : stlTruncation(data);
 }
 
 }  // namespace kerf

@@ -183,3 +183,14 @@ TEST_CASE("loadMesh::PLY rows of no properties are refused, however many are dec
                          "PLY element 'vertex' declares 4000000000 rows but no properties");
     }
 }
+
+TEST_CASE("loadMesh::a file starting 'ply' is checked as PLY, whatever its first line or name") {
+    // Found by kerf_fuzz_mesh (tests/fuzz/corpus/mesh/ply-first-line-not-ply): "ply\x01…" got
+    // past the PLY check and Assimp reserved 48 GB for 4e9 declared vertices.
+    TempDir dir;
+    std::string text = plyHeader("ascii", 4000000000u, 1) + "0 0 0\n";
+    text.insert(3, std::string("\x01\0\0*", 4));
+    requireMeshError(dir.write("odd.ply", text), "PLY file whose first line is not 'ply'");
+    text.erase(3, 4);
+    requireMeshError(dir.write("named.off", text), "more than its");
+}

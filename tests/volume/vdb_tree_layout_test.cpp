@@ -97,8 +97,7 @@ TEST_CASE("checkVdbLayout/float trees in every storage pass the walk and load", 
     }
 }
 
-TEST_CASE("checkVdbLayout/every word of a float tree corrupted is a reader's message",
-          "[volume]") {
+TEST_CASE("checkVdbLayout/every word of a float tree corrupted is a reader's message", "[volume]") {
     TempDir dir;
     const std::string good = dir.file("good.vdb");
     const std::string bad = dir.file("bad.vdb");
@@ -146,10 +145,10 @@ TEST_CASE("checkVdbLayout/what is wrong in a tree and where", "[volume]") {
     // The tree: int32 buffer count, float background, uint32 tiles, uint32 children, then the
     // first child's origin and its two 4 kB masks, its compression byte and its values' size.
     const uint32_t tiles = 0x7FFFFFFF;
-    CHECK(corrupted(start + 8, &tiles, 4).rfind(
-              "bad count at byte " + std::to_string(start + 16) +
-                  ": grid 'density''s root claims 2147483647 tiles and 1 children, ",
-              0) == 0);
+    CHECK(corrupted(start + 8, &tiles, 4)
+              .rfind("bad count at byte " + std::to_string(start + 16) +
+                         ": grid 'density''s root claims 2147483647 tiles and 1 children, ",
+                     0) == 0);
     const int32_t origin = 100;
     CHECK(corrupted(start + 16, &origin, 4) ==
           "bad origin at byte " + std::to_string(start + 16) +
@@ -166,4 +165,22 @@ TEST_CASE("checkVdbLayout/what is wrong in a tree and where", "[volume]") {
     const int64_t raw = -12;
     CHECK(corrupted(sizeAt, &raw, 8).find("are 12 uncompressed bytes, not the ") !=
           std::string::npos);
+}
+
+TEST_CASE("checkVdbLayout/two root entries at one origin are refused", "[volume]") {
+    // Found by kerf_fuzz_vdb: OpenVDB keeps the last and leaks the node it replaces.
+    TempDir dir;
+    const std::string path = dir.file("two.vdb");
+    test::Grid g = test::fogGrid();
+    g.values.push_back({{5000, 0, 0}, 0.5f});  // a second root child, at (4096, 0, 0)
+    test::writeGrids(path, {g});
+    CHECK(checkVdbLayout(path).empty());
+    std::string bytes = fileBytes(path);
+    const std::string second("\x00\x10\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00", 12);
+    const size_t at = bytes.find(second, treeStart(bytes) + 16 + 12);
+    REQUIRE(at != std::string::npos);
+    bytes.replace(at, 12, std::string(12, '\0'));
+    writeBytes(path, bytes);
+    CHECK(checkVdbLayout(path) ==
+          "bad tree: grid 'density''s root has 1 entries at an origin an earlier one has");
 }
