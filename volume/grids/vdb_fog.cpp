@@ -191,7 +191,13 @@ VdbFog loadVdbFog(const std::string& path, const std::string& gridName) {
     }
     if (grid->activeVoxelCount() == 0)
         throw VdbFogError("grid '" + chosen->getName() + "' has no active voxels");
-    auto field = std::make_shared<FogField>(grid);
+    std::shared_ptr<FogField> field;
+    try {
+        field = std::make_shared<FogField>(grid);
+    } catch (const std::bad_alloc&) {  // its leaves' pyramid, 4 bytes a voxel block
+        throw VdbFogError("grid '" + chosen->getName() +
+                          "' needs more memory than there is to sample as fog");
+    }
     if (field->minValue() < 0.0f)
         throw VdbFogError("grid '" + chosen->getName() + "' holds negative density (down to " +
                           std::to_string(field->minValue()) + ")");
