@@ -194,7 +194,7 @@ VdbFog loadVdbFog(const std::string& path, const std::string& gridName) {
     std::shared_ptr<FogField> field;
     try {
         field = std::make_shared<FogField>(grid);
-    } catch (const std::bad_alloc&) {  // its leaves' pyramid, 4 bytes a voxel block
+    } catch (const std::bad_alloc&) {  // its min/max pyramid over the leaves
         throw VdbFogError("grid '" + chosen->getName() +
                           "' needs more memory than there is to sample as fog");
     }
