@@ -38,8 +38,9 @@ void printMeshStats(const MeshExportStats& s, const WatertightMesh& mesh, double
         << " OpenVDB leaves with the ring), " << s.fullRegions << " full regions\n";
     out << "  vertices:             " << mesh.vertices.size() << " (" << s.placement.features
         << " on creases, " << s.placement.projected << " projected, " << s.placement.kept
-        << " kept)\n";
-    out << "  triangles:            " << mesh.triangles.size() << "\n";
+        << " kept; " << s.placement.unpinched << " crease points given up to unpinch edges)\n";
+    out << "  triangles:            " << mesh.triangles.size() << " (" << s.crowdedEdges
+        << " edges of more than two faces left)\n";
     std::snprintf(line, sizeof line,
                   "  hausdorff (mesh to surface): %.3e (%.4f voxels), mean %.3e, over %llu points "
                   "(vertices, edge midpoints, centroids), %llu first-order\n",

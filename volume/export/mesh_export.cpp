@@ -4,6 +4,7 @@
 #include "csg/primitives/surfaces.h"
 #include "csg/stopwatch.h"
 #include "csg/tape/tree_tape.h"
+#include "volume/export/mesh_unpinch.h"
 #include "volume/export/vdb_mesh.h"
 
 #include <chrono>
@@ -57,8 +58,12 @@ WatertightMesh exportMesh(const std::vector<NodePtr>& objects, const MeshExportO
     stats.leaves = polygons.leaves;
 
     t0 = std::chrono::steady_clock::now();
+    const std::vector<Vec3> openvdbPoints = polygons.points;
     placeVertices(field, polygons.points, stats.placement);
     splitQuads(field, polygons.points, polygons.quads, polygons.triangles);
+    stats.placement.unpinched =
+        unpinchCreases(field, openvdbPoints, polygons.points, polygons.triangles);
+    stats.crowdedEdges = crowdedEdges(polygons.points, polygons.triangles);
     stats.secondsPlace = secondsSince(t0);
 
     WatertightMesh mesh{std::move(polygons.points), std::move(polygons.triangles)};

@@ -38,6 +38,7 @@ struct MeshExportStats {
     uint64_t fullRegions = 0;
     uint64_t leaves = 0;  ///< OpenVDB leaves (boundary blocks and the ring round them)
     PlacementStats placement;
+    uint64_t crowdedEdges = 0;  ///< edges of more than two faces left (mesh_unpinch.h)
     double secondsClassify = 0.0, secondsPolygonize = 0.0, secondsPlace = 0.0, secondsMeasure = 0.0;
     // With `measure`:
     SurfaceDistance distance;

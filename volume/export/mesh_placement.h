@@ -19,6 +19,7 @@ struct PlacementStats {
     uint64_t features = 0;   ///< placed on an edge or corner by the quadric
     uint64_t projected = 0;  ///< moved onto the surface along the gradient
     uint64_t kept = 0;       ///< left where OpenVDB put them (no crossing found)
+    uint64_t unpinched = 0;  ///< crease points given up for edges of four faces (mesh_unpinch.h)
 };
 
 /// `points` are in lattice index space on entry and in model space on return.
