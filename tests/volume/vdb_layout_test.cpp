@@ -10,6 +10,7 @@
 
 #include "../app/kerf_peak_memory.h"
 #include "util/level_set_files.h"
+#include "util/vdb_file_bytes.h"
 
 #include <catch2/catch.hpp>
 
@@ -21,38 +22,12 @@ using kerf::test::TempDir;
 
 namespace {
 
-std::string vdbBytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
+std::string vdbBytes(const std::string& path) { return test::fileBytes(path); }
 void writeVdbBytes(const std::string& path, const std::string& bytes) {
-    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+    test::writeBytes(path, bytes);
 }
-
-/// What each reader says about the file: "" when it reads, the reader's message otherwise;
-/// "UNEXPECTED: …" for any other exception.
-std::string levelSetVerdict(const std::string& path) {
-    try {
-        loadLevelSet(path);
-    } catch (const VdbError& e) {
-        return e.what();
-    } catch (const std::exception& e) {
-        return std::string("UNEXPECTED: ") + e.what();
-    }
-    return "";
-}
-
-std::string fogVerdict(const std::string& path) {
-    try {
-        loadVdbFog(path, "");
-    } catch (const VdbFogError& e) {
-        return e.what();
-    } catch (const std::exception& e) {
-        return std::string("UNEXPECTED: ") + e.what();
-    }
-    return "";
-}
+std::string levelSetVerdict(const std::string& path) { return test::readerVerdict(path, false); }
+std::string fogVerdict(const std::string& path) { return test::readerVerdict(path, true); }
 
 /// Where the first grid's transform type string starts: the end of the part kerf checks.
 size_t transformStart(const std::string& bytes) {

@@ -7,48 +7,24 @@
 // offsets say); every word of their trees corrupted is a reader's message, never an
 // allocation the file cannot back.
 #include "volume/grids/checked_vdb_layout.h"
-#include "volume/grids/vdb_fog.h"
-#include "volume/grids/vdb_level_set.h"
 
 #include "../app/kerf_runner.h"
 #include "util/level_set_files.h"
+#include "util/vdb_file_bytes.h"
 
 #include <catch2/catch.hpp>
 
 #include <cstring>
-#include <fstream>
 
 using namespace kerf;
 using kerf::test::TempDir;
 
 namespace {
 
-std::string fileBytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::fileBytes;
+using test::writeBytes;
 
-void writeBytes(const std::string& path, const std::string& bytes) {
-    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
-}
-
-/// "" when the reader takes the file, its message otherwise, "UNEXPECTED: …" for any other
-/// exception.
-std::string verdict(const std::string& path, bool fog) {
-    try {
-        if (fog)
-            loadVdbFog(path, "");
-        else
-            loadLevelSet(path);
-    } catch (const VdbError& e) {
-        return e.what();
-    } catch (const VdbFogError& e) {
-        return e.what();
-    } catch (const std::exception& e) {
-        return std::string("UNEXPECTED: ") + e.what();
-    }
-    return "";
-}
+std::string verdict(const std::string& path, bool fog) { return test::readerVerdict(path, fog); }
 
 struct Storage {
     const char* name;
