@@ -133,10 +133,19 @@ std::optional<std::string> plyTruncation(const std::string& data) {
     std::string line;
     bool binary = false, bigEndian = false;
     std::vector<PlyElement> elements;
+    int lineNumber = 0;
     while (std::getline(header, line)) {
+        ++lineNumber;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
         std::istringstream words(line);
         std::string key;
         words >> key;
+        // Assimp reads on through lines it does not know, and a misspelt keyword or a name
+        // with digits in front put its counts out of step (kerf_fuzz_mesh: 80 GB asked for).
+        if (lineNumber > 1 && !key.empty() && key != "format" && key != "comment" &&
+            key != "obj_info" && key != "element" && key != "property")
+            return "PLY header line " + std::to_string(lineNumber) +
+                   " does not start with format, comment, obj_info, element or property";
         if (key == "format") {
             std::string format;
             words >> format;
@@ -144,8 +153,10 @@ std::optional<std::string> plyTruncation(const std::string& data) {
             bigEndian = format == "binary_big_endian";
         } else if (key == "element") {
             PlyElement e;
-            if (!(words >> e.name >> e.count))
-                return "PLY header line '" + line + "' is not 'element NAME COUNT'";
+            if (!(words >> e.name >> e.count) ||
+                !std::isalpha(static_cast<unsigned char>(e.name[0])))
+                return "PLY header line " + std::to_string(lineNumber) +
+                       " is not 'element NAME COUNT' with a NAME that starts with a letter";
             elements.push_back(e);
         } else if (key == "property" && !elements.empty()) {
             std::string type;

@@ -169,17 +169,22 @@ TEST_CASE("loadMesh::a PLY whose end_header is not a line of its own is refused,
 
 TEST_CASE("loadMesh::PLY rows of no properties are refused, however many are declared") {
     // Found by kerf_fuzz_mesh (tests/fuzz/corpus/mesh/ply-rows-without-properties): misspelt
-    // property lines left 4e9 vertex rows of no bytes, which Assimp walked for minutes.
+    // property lines left 4e9 vertex rows of no bytes, which Assimp walked for minutes. The
+    // misspelt lines are now refused themselves; rows of no property lines at all too.
     TempDir dir;
     for (const char* format : {"ascii", "binary_little_endian"}) {
         INFO(format);
-        std::string text = plyHeader(format, 4000000000u, 1) + "0 0 0\n";
+        const std::string header = plyHeader(format, 4000000000u, 1);
+        std::string misspelt = header, bare = header;
         for (const char* axis : {"x", "y", "z"}) {
             const std::string line = std::string("property float ") + axis + "\n";
-            text.replace(text.find(line), line.size(),
-                         std::string("xroperty float ") + axis + "\n");
+            misspelt.replace(misspelt.find(line), line.size(),
+                             "xroperty float " + std::string(axis) + "\n");
+            bare.erase(bare.find(line), line.size());
         }
-        requireMeshError(dir.write(std::string(format) + ".ply", text),
+        requireMeshError(dir.write(std::string(format) + "_misspelt.ply", misspelt + "0 0 0\n"),
+                         "PLY header line 4 does not start with format");
+        requireMeshError(dir.write(std::string(format) + "_bare.ply", bare + "0 0 0\n"),
                          "PLY element 'vertex' declares 4000000000 rows but no properties");
     }
 }
@@ -193,4 +198,24 @@ TEST_CASE("loadMesh::a file starting 'ply' is checked as PLY, whatever its first
     requireMeshError(dir.write("odd.ply", text), "PLY file whose first line is not 'ply'");
     text.erase(3, 4);
     requireMeshError(dir.write("named.off", text), "more than its");
+}
+
+TEST_CASE(
+    "loadMesh::PLY header lines of no PLY keyword, and element names not a word, are refused") {
+    // Found by the one-hour kerf_fuzz_mesh run (tests/fuzz/corpus/mesh/ply-element-name-digits):
+    // "element 111…1face 8" and a garbled property line made Assimp ask for 80 GB.
+    TempDir dir;
+    std::string text = plyAsciiText();
+    text.replace(text.find("element face"), 12, "element 1111face");
+    requireMeshError(dir.write("digits.ply", text),
+                     "is not 'element NAME COUNT' with a NAME that starts with a letter");
+    text = plyAsciiText();
+    text.replace(text.find("property float y"), 8, "prop\x01\xdc");
+    requireMeshError(dir.write("garbled.ply", text),
+                     "PLY header line 5 does not start with format, comment, obj_info, element");
+    SECTION("comments and obj_info lines still load") {
+        text = plyAsciiText();
+        text.insert(text.find("element vertex"), "comment made by hand\nobj_info nothing\n");
+        CHECK(loadMesh(dir.write("comments.ply", text)).triangles.size() == 8);
+    }
 }
