@@ -120,19 +120,15 @@ size_t plyHeaderEnd(const std::string& data) {
     return end == std::string::npos ? end : end + 1;
 }
 
-std::optional<std::string> plyTruncation(const std::string& data) {
-    // Assimp takes any file starting "ply" as PLY, whatever follows on the line (kerf_fuzz_mesh:
-    // "ply\x01…" got past this check and Assimp reserved 48 GB for its vertices).
-    if (data.compare(0, 4, "ply\n") != 0 && data.compare(0, 5, "ply\r\n") != 0)
-        return "PLY file whose first line is not 'ply'";
-    const size_t end = plyHeaderEnd(data);
-    if (end == std::string::npos) return "PLY header has no end_header line";
-    size_t pos = data.find('\n', end) + 1;
-
-    std::istringstream header(data.substr(0, end));
-    std::string line;
+struct PlyHeader {
     bool binary = false, bigEndian = false;
     std::vector<PlyElement> elements;
+};
+
+/// The header's lines before end_header: its format and elements, or what is wrong.
+std::optional<std::string> parsePlyHeader(const std::string& text, PlyHeader& out) {
+    std::istringstream header(text);
+    std::string line;
     int lineNumber = 0;
     while (std::getline(header, line)) {
         ++lineNumber;
@@ -149,16 +145,16 @@ std::optional<std::string> plyTruncation(const std::string& data) {
         if (key == "format") {
             std::string format;
             words >> format;
-            binary = format != "ascii";
-            bigEndian = format == "binary_big_endian";
+            out.binary = format != "ascii";
+            out.bigEndian = format == "binary_big_endian";
         } else if (key == "element") {
             PlyElement e;
             if (!(words >> e.name >> e.count) ||
                 !std::isalpha(static_cast<unsigned char>(e.name[0])))
                 return "PLY header line " + std::to_string(lineNumber) +
                        " is not 'element NAME COUNT' with a NAME that starts with a letter";
-            elements.push_back(e);
-        } else if (key == "property" && !elements.empty()) {
+            out.elements.push_back(e);
+        } else if (key == "property" && !out.elements.empty()) {
             std::string type;
             words >> type;
             PlyProperty p;
@@ -175,17 +171,17 @@ std::optional<std::string> plyTruncation(const std::string& data) {
             } else if ((p.size = plyTypeSize(type)) == 0) {
                 return "PLY property '" + line + "' has a type PLY does not have";
             }
-            elements.back().properties.push_back(p);
+            out.elements.back().properties.push_back(p);
         }
     }
-    // Rows of no properties take no bytes, so no size bounds their count; Assimp walked 4e9
-    // of them for minutes (kerf_fuzz_mesh, a header whose property lines were misspelt).
-    for (const PlyElement& e : elements)
-        if (e.count > 0 && e.properties.empty())
-            return "PLY element '" + e.name + "' declares " + std::to_string(e.count) +
-                   " rows but no properties";
-    if (!binary) return asciiPlyShortfall(elements, data.size() - pos);
+    return std::nullopt;
+}
 
+/// Walks a binary PLY's rows from `pos`, each list's count read to skip its items.
+std::optional<std::string> binaryPlyShortfall(const std::string& data, size_t pos,
+                                              const PlyHeader& h) {
+    const std::vector<PlyElement>& elements = h.elements;
+    const bool bigEndian = h.bigEndian;
     const uint64_t size = data.size();
     auto truncated = [&](const PlyElement& e, uint64_t row) {
         return "truncated binary PLY: the data ends after " + std::to_string(row) + " of the " +
@@ -217,6 +213,26 @@ std::optional<std::string> plyTruncation(const std::string& data) {
         }
     }
     return std::nullopt;
+}
+
+std::optional<std::string> plyTruncation(const std::string& data) {
+    // Assimp takes any file starting "ply" as PLY, whatever follows on the line (kerf_fuzz_mesh:
+    // "ply\x01…" got past this check and Assimp reserved 48 GB for its vertices).
+    if (data.compare(0, 4, "ply\n") != 0 && data.compare(0, 5, "ply\r\n") != 0)
+        return "PLY file whose first line is not 'ply'";
+    const size_t end = plyHeaderEnd(data);
+    if (end == std::string::npos) return "PLY header has no end_header line";
+    const size_t pos = data.find('\n', end) + 1;
+    PlyHeader h;
+    if (auto bad = parsePlyHeader(data.substr(0, end), h)) return bad;
+    // Rows of no properties take no bytes, so no size bounds their count; Assimp walked 4e9
+    // of them for minutes (kerf_fuzz_mesh, a header whose property lines were misspelt).
+    for (const PlyElement& e : h.elements)
+        if (e.count > 0 && e.properties.empty())
+            return "PLY element '" + e.name + "' declares " + std::to_string(e.count) +
+                   " rows but no properties";
+    return h.binary ? binaryPlyShortfall(data, pos, h)
+                    : asciiPlyShortfall(h.elements, data.size() - pos);
 }
 
 }  // namespace
