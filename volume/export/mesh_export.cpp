@@ -61,9 +61,10 @@ WatertightMesh exportMesh(const std::vector<NodePtr>& objects, const MeshExportO
     const std::vector<Vec3> openvdbPoints = polygons.points;
     placeVertices(field, polygons.points, stats.placement);
     splitQuads(field, polygons.points, polygons.quads, polygons.triangles);
-    stats.placement.unpinched =
+    const UnpinchResult unpinched =
         unpinchCreases(field, openvdbPoints, polygons.points, polygons.triangles);
-    stats.crowdedEdges = crowdedEdges(polygons.points, polygons.triangles);
+    stats.placement.unpinched = unpinched.replaced;
+    stats.crowdedEdges = unpinched.crowdedLeft;
     stats.secondsPlace = secondsSince(t0);
 
     WatertightMesh mesh{std::move(polygons.points), std::move(polygons.triangles)};

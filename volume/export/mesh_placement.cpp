@@ -21,8 +21,6 @@ namespace {
 constexpr double kRankThreshold = 0.1;
 /// The largest first-order distance from the surface, in voxels, of an accepted crease point.
 constexpr double kCreaseDistance = 0.1;
-/// Root-finding tolerance, as a fraction of the voxel.
-constexpr double kRootTolerance = 1e-9;
 
 /// Eigen-decomposition of a symmetric 3×3 matrix by cyclic Jacobi rotations: a = v·diag(w)·vᵀ,
 /// the eigenvectors in v's columns.
@@ -78,8 +76,8 @@ bool creasePoint(const Tape& tape, const MeshLattice& l, const std::array<int64_
             const int k2 = k | (1 << a);
             if ((value[k] <= 0.0) == (value[k2] <= 0.0)) continue;
             const Vec3 dir = corner[k2] - corner[k];
-            const double t =
-                refineCrossing(tape, corner[k], dir, 0.0, value[k], 1.0, value[k2], kRootTolerance);
+            const double t = refineCrossing(tape, corner[k], dir, 0.0, value[k], 1.0, value[k2],
+                                            kPlacementRootTolerance);
             const Vec3 p = corner[k] + t * dir;
             Vec3 g;
             tape.evalGradient(p, g);
@@ -163,7 +161,7 @@ void placeVertices(const SampledField& field, std::vector<Vec3>& points, Placeme
         if (creaseNear(tape, l, points[i], placed)) {
             points[i] = placed;
             features.fetch_add(1, std::memory_order_relaxed);
-        } else if (rootAlongGradient(tape, p, l.voxel, kRootTolerance * l.voxel, placed)) {
+        } else if (rootAlongGradient(tape, p, l.voxel, kPlacementRootTolerance * l.voxel, placed)) {
             points[i] = placed;
             projected.fetch_add(1, std::memory_order_relaxed);
         } else {

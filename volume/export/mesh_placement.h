@@ -15,6 +15,9 @@
 
 namespace kerf {
 
+/// Root-finding tolerance of vertex placement, as a fraction of the voxel.
+constexpr double kPlacementRootTolerance = 1e-9;
+
 struct PlacementStats {
     uint64_t features = 0;   ///< placed on an edge or corner by the quadric
     uint64_t projected = 0;  ///< moved onto the surface along the gradient

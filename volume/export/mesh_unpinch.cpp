@@ -13,8 +13,6 @@ namespace kerf {
 
 namespace {
 
-/// Root-finding tolerance, as a fraction of the voxel (as mesh_placement.cpp's).
-constexpr double kUnpinchRootTolerance = 1e-9;
 constexpr int kUnpinchRounds = 4;
 
 struct PositionHash {
@@ -45,10 +43,9 @@ std::vector<uint32_t> joinedIds(const std::vector<Vec3>& points) {
 }
 
 /// The joined ids at the ends of edges shared by more than two faces, and how many such edges.
-uint64_t crowded(const std::vector<Vec3>& points,
+uint64_t crowded(const std::vector<uint32_t>& id,
                  const std::vector<std::array<uint32_t, 3>>& triangles,
                  std::unordered_set<uint32_t>* ends) {
-    const std::vector<uint32_t> id = joinedIds(points);
     std::unordered_map<uint64_t, uint32_t> faces;
     faces.reserve(3 * triangles.size());
     for (const auto& t : triangles) {
@@ -73,19 +70,20 @@ uint64_t crowded(const std::vector<Vec3>& points,
 
 uint64_t crowdedEdges(const std::vector<Vec3>& points,
                       const std::vector<std::array<uint32_t, 3>>& triangles) {
-    return crowded(points, triangles, nullptr);
+    return crowded(joinedIds(points), triangles, nullptr);
 }
 
-uint64_t unpinchCreases(const SampledField& field, const std::vector<Vec3>& lattice,
-                        std::vector<Vec3>& points,
-                        const std::vector<std::array<uint32_t, 3>>& triangles) {
+UnpinchResult unpinchCreases(const SampledField& field, const std::vector<Vec3>& lattice,
+                             std::vector<Vec3>& points,
+                             const std::vector<std::array<uint32_t, 3>>& triangles) {
     const MeshLattice& l = field.lattice;
     std::vector<uint8_t> replaced(points.size(), 0);
-    uint64_t total = 0;
-    for (int round = 0; round < kUnpinchRounds; ++round) {
+    UnpinchResult result;
+    for (int round = 0;; ++round) {
         std::unordered_set<uint32_t> ends;
-        if (crowded(points, triangles, &ends) == 0) break;
         const std::vector<uint32_t> id = joinedIds(points);
+        result.crowdedLeft = crowded(id, triangles, &ends);
+        if (result.crowdedLeft == 0 || round == kUnpinchRounds) break;
         uint64_t moved = 0;
         for (uint32_t i = 0; i < points.size(); ++i) {
             if (replaced[i] || !ends.count(id[i])) continue;
@@ -93,15 +91,16 @@ uint64_t unpinchCreases(const SampledField& field, const std::vector<Vec3>& latt
             const Vec3 p = modelFromIndex(l, lattice[i]);
             Vec3 placed;
             const Tape& tape = tapeNear(field, lattice[i]);
-            points[i] = rootAlongGradient(tape, p, l.voxel, kUnpinchRootTolerance * l.voxel, placed)
-                            ? placed
-                            : p;
+            points[i] =
+                rootAlongGradient(tape, p, l.voxel, kPlacementRootTolerance * l.voxel, placed)
+                    ? placed
+                    : p;
             ++moved;
         }
-        total += moved;
+        result.replaced += moved;
         if (moved == 0) break;
     }
-    return total;
+    return result;
 }
 
 }  // namespace kerf

@@ -15,12 +15,17 @@
 
 namespace kerf {
 
+struct UnpinchResult {
+    uint64_t replaced = 0;     ///< vertices placed again
+    uint64_t crowdedLeft = 0;  ///< edges of more than two faces after the last round
+};
+
 /// Rounds of re-placement, each over the vertices of the edges still shared by more than two
-/// faces; returns how many vertices were placed again. `lattice` are OpenVDB's positions
-/// (lattice index space), `points` the placed ones (model space).
-uint64_t unpinchCreases(const SampledField& field, const std::vector<Vec3>& lattice,
-                        std::vector<Vec3>& points,
-                        const std::vector<std::array<uint32_t, 3>>& triangles);
+/// faces. `lattice` are OpenVDB's positions (lattice index space), `points` the placed ones
+/// (model space).
+UnpinchResult unpinchCreases(const SampledField& field, const std::vector<Vec3>& lattice,
+                             std::vector<Vec3>& points,
+                             const std::vector<std::array<uint32_t, 3>>& triangles);
 
 /// The number of edges shared by more than two faces once equal positions are joined
 /// (triangles left with two equal corners do not count, as the writers drop them).
