@@ -4,8 +4,10 @@
 #include "mesh/mesh_loader.h"
 #include "mesh/gltf_prescan.h"
 #include "mesh/mesh_loader_truncation.h"
+#include "mesh/ply_line_end.h"
 
 #include <assimp/DefaultIOSystem.h>
+#include <assimp/MemoryIOWrapper.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
@@ -121,17 +123,25 @@ void checkMeshFile(const std::string& path) {
 /// (OBJ's mtllib, glTF's buffers and images). A path that leaves the folder, by ".." or an
 /// absolute path, is refused and remembered, so a downloaded mesh cannot make kerf read
 /// another file of the user's. Paths are compared lexically: a symlink the user placed in
-/// the folder is followed.
+/// the folder is followed. A binary PLY Assimp would misread is given as bytes respelt in
+/// memory (mesh/ply_line_end.h).
 class FolderConfinedIO : public Assimp::DefaultIOSystem {
 public:
     explicit FolderConfinedIO(const std::string& meshPath)
-        : mFolder(std::filesystem::absolute(meshPath).lexically_normal().parent_path()) {}
+        : mMesh(std::filesystem::absolute(meshPath).lexically_normal()),
+          mFolder(mMesh.parent_path()),
+          mRespelt(plyWithCrLfHeaderEnd(meshPath)) {}
 
     bool Exists(const char* file) const override {
         return inFolder(file) && Assimp::DefaultIOSystem::Exists(file);
     }
 
     Assimp::IOStream* Open(const char* file, const char* mode) override {
+        if (mRespelt && std::filesystem::absolute(file).lexically_normal() == mMesh) {
+            auto* bytes = new uint8_t[mRespelt->size()];  // the stream owns it
+            std::memcpy(bytes, mRespelt->data(), mRespelt->size());
+            return new Assimp::MemoryIOStream(bytes, mRespelt->size(), true);
+        }
         if (inFolder(file)) return Assimp::DefaultIOSystem::Open(file, mode);
         if (!mRefused) mRefused = file;
         return nullptr;
@@ -150,7 +160,8 @@ private:
         return false;
     }
 
-    std::filesystem::path mFolder;
+    std::filesystem::path mMesh, mFolder;
+    std::optional<std::string> mRespelt;
     mutable std::optional<std::string> mRefused;
 };
 
