@@ -46,6 +46,20 @@ std::string encodeObj(const MeshArrays& m) {
     return out;
 }
 
+/// The vertex to write first in a binary PLY: one whose first byte is not '\n'. Assimp 5.2
+/// takes a '\n' right after "end_header\n" for part of the line end and reads every value
+/// after it one byte off (kerf's reader works around it, mesh/ply_line_end.h; other Assimp
+/// readers do not).
+uint32_t firstVertexNotNewline(const MeshArrays& m) {
+    for (uint32_t i = 0; i < m.vertexCount; ++i) {
+        const float x = float(m.xyz[3 * size_t(i)]);
+        unsigned char low;
+        std::memcpy(&low, &x, 1);
+        if (low != '\n') return i;
+    }
+    return 0;
+}
+
 std::string encodePly(const MeshArrays& m) {
     std::string out = "ply\nformat binary_little_endian 1.0\ncomment kerf mesh\nelement vertex " +
                       std::to_string(m.vertexCount) +
@@ -53,10 +67,13 @@ std::string encodePly(const MeshArrays& m) {
                       std::to_string(m.triangleCount) +
                       "\nproperty list uchar uint vertex_indices\nend_header\n";
     out.reserve(out.size() + 12 * m.vertexCount + 13 * m.triangleCount);
-    for (size_t i = 0; i < 3 * m.vertexCount; ++i) put(out, float(m.xyz[i]));
+    const uint32_t first = firstVertexNotNewline(m);
+    const auto order = [first](uint32_t i) { return i == 0 ? first : i == first ? 0 : i; };
+    for (uint32_t i = 0; i < m.vertexCount; ++i)
+        for (int a = 0; a < 3; ++a) put(out, float(m.xyz[3 * size_t(order(i)) + size_t(a)]));
     for (size_t t = 0; t < m.triangleCount; ++t) {
         put(out, uint8_t(3));
-        for (int k = 0; k < 3; ++k) put(out, m.indices[3 * t + size_t(k)]);
+        for (int k = 0; k < 3; ++k) put(out, order(m.indices[3 * t + size_t(k)]));
     }
     return out;
 }
