@@ -6,6 +6,7 @@
 #include "volume/octree/surface_search.h"
 
 #include <cstring>
+#include <cstdio>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -33,12 +34,18 @@ struct PositionEqual {
     }
 };
 
-/// Each vertex's joined id: the first vertex at its position.
+/// Each vertex's joined id: the first vertex at its position as a float. PLY and STL store
+/// floats, and Assimp reads OBJ's decimals into floats too, so every reader of the file joins
+/// vertices equal as floats.
 std::vector<uint32_t> joinedIds(const std::vector<Vec3>& points) {
     std::unordered_map<Vec3, uint32_t, PositionHash, PositionEqual> first;
     first.reserve(points.size());
     std::vector<uint32_t> id(points.size());
-    for (uint32_t i = 0; i < points.size(); ++i) id[i] = first.emplace(points[i], i).first->second;
+    for (uint32_t i = 0; i < points.size(); ++i) {
+        const Vec3& p = points[i];
+        const Vec3 asRead(double(float(p.x)), double(float(p.y)), double(float(p.z)));
+        id[i] = first.emplace(asRead, i).first->second;
+    }
     return id;
 }
 
@@ -66,6 +73,29 @@ uint64_t crowded(const std::vector<uint32_t>& id,
     return n;
 }
 
+/// Places again the vertices at the ends of crowded edges not placed again before: projected
+/// along the gradient from OpenVDB's position, or, as a last resort, every such vertex at
+/// OpenVDB's own position. Those are distinct, whereas two vertices projected along one
+/// gradient (a flat face) can still land on one point. Returns how many were placed.
+uint64_t placeAgain(const SampledField& field, const std::vector<Vec3>& lattice,
+                    const std::vector<uint32_t>& id, const std::unordered_set<uint32_t>& ends,
+                    bool lastResort, std::vector<uint8_t>& replaced, std::vector<Vec3>& points) {
+    const MeshLattice& l = field.lattice;
+    uint64_t moved = 0;
+    for (uint32_t i = 0; i < points.size(); ++i) {
+        if (!ends.count(id[i]) || (replaced[i] && !lastResort)) continue;
+        replaced[i] = 1;
+        const Vec3 p = modelFromIndex(l, lattice[i]);
+        Vec3 placed;
+        points[i] = !lastResort && rootAlongGradient(tapeNear(field, lattice[i]), p, l.voxel,
+                                                     kPlacementRootTolerance * l.voxel, placed)
+                        ? placed
+                        : p;
+        ++moved;
+    }
+    return moved;
+}
+
 }  // namespace
 
 uint64_t crowdedEdges(const std::vector<Vec3>& points,
@@ -76,30 +106,21 @@ uint64_t crowdedEdges(const std::vector<Vec3>& points,
 UnpinchResult unpinchCreases(const SampledField& field, const std::vector<Vec3>& lattice,
                              std::vector<Vec3>& points,
                              const std::vector<std::array<uint32_t, 3>>& triangles) {
-    const MeshLattice& l = field.lattice;
     std::vector<uint8_t> replaced(points.size(), 0);
     UnpinchResult result;
+    bool lastResort = false;
     for (int round = 0;; ++round) {
         std::unordered_set<uint32_t> ends;
         const std::vector<uint32_t> id = joinedIds(points);
         result.crowdedLeft = crowded(id, triangles, &ends);
-        if (result.crowdedLeft == 0 || round == kUnpinchRounds) break;
-        uint64_t moved = 0;
-        for (uint32_t i = 0; i < points.size(); ++i) {
-            if (replaced[i] || !ends.count(id[i])) continue;
-            replaced[i] = 1;
-            const Vec3 p = modelFromIndex(l, lattice[i]);
-            Vec3 placed;
-            const Tape& tape = tapeNear(field, lattice[i]);
-            points[i] =
-                rootAlongGradient(tape, p, l.voxel, kPlacementRootTolerance * l.voxel, placed)
-                    ? placed
-                    : p;
-            ++moved;
+        if (result.crowdedLeft == 0 || lastResort) break;
+        lastResort = round == kUnpinchRounds;
+        if (placeAgain(field, lattice, id, ends, lastResort, replaced, points) == 0 && !lastResort) {
+            lastResort = true;
+            placeAgain(field, lattice, id, ends, lastResort, replaced, points);
         }
-        result.replaced += moved;
-        if (moved == 0) break;
     }
+    for (const uint8_t r : replaced) result.replaced += r;
     return result;
 }
 
