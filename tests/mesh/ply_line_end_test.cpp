@@ -2,6 +2,7 @@
 // it one byte off ("no triangles"); kerf reads the values as written.
 #include "mesh/mesh_loader.h"
 #include "mesh/half_edges.h"
+#include "mesh/mesh_files.h"
 
 #include "app/kerf_runner.h"
 
@@ -11,17 +12,6 @@
 
 using namespace kerf;
 using namespace kerf::test;
-
-namespace {
-
-template <class T>
-void put(std::string& out, T value) {
-    char bytes[sizeof(T)];
-    std::memcpy(bytes, &value, sizeof(T));
-    out.append(bytes, sizeof(T));
-}
-
-}  // namespace
 
 TEST_CASE("loadMesh::a binary PLY whose data begins with a newline byte is read as written") {
     const unsigned char xBytes[4] = {0x0a, 0x00, 0x00, 0xbd};  // about -0.03125, low byte '\n'
@@ -34,10 +24,10 @@ TEST_CASE("loadMesh::a binary PLY whose data begins with a newline byte is read 
         "property float y\nproperty float z\nelement face 4\n"
         "property list uchar uint vertex_indices\nend_header\n";
     for (const auto& p : v)
-        for (float c : p) put(text, c);
+        for (float c : p) appendBytes(text, c);
     for (const auto& t : f) {
-        put(text, uint8_t(3));
-        for (uint32_t i : t) put(text, i);
+        appendBytes(text, uint8_t(3));
+        for (uint32_t i : t) appendBytes(text, i);
     }
     TempDir dir;
     const TriangleMesh mesh = loadMesh(dir.write("newline.ply", text));

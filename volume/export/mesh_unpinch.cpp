@@ -6,7 +6,6 @@
 #include "volume/octree/surface_search.h"
 
 #include <cstring>
-#include <cstdio>
 #include <unordered_map>
 #include <unordered_set>
 
