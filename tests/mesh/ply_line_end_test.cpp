@@ -1,8 +1,8 @@
 // A binary PLY whose data starts with the byte '\n' (mesh/ply_line_end.h): Assimp 5.2 alone read
 // it one byte off ("no triangles"); kerf reads the values as written.
-#include "mesh/mesh_loader.h"
 #include "mesh/half_edges.h"
 #include "mesh/mesh_files.h"
+#include "mesh/mesh_loader.h"
 
 #include "app/kerf_runner.h"
 

@@ -114,7 +114,8 @@ UnpinchResult unpinchCreases(const SampledField& field, const std::vector<Vec3>&
         result.crowdedLeft = crowded(id, triangles, &ends);
         if (result.crowdedLeft == 0 || lastResort) break;
         lastResort = round == kUnpinchRounds;
-        if (placeAgain(field, lattice, id, ends, lastResort, replaced, points) == 0 && !lastResort) {
+        if (placeAgain(field, lattice, id, ends, lastResort, replaced, points) == 0 &&
+            !lastResort) {
             lastResort = true;
             placeAgain(field, lattice, id, ends, lastResort, replaced, points);
         }
