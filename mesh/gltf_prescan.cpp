@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -22,12 +24,62 @@ struct GltfPrimitive {
     int64_t indices = -1, position = -1, mode = 4;
 };
 
-/// One open object or array: the key of the value being read, or its index.
+/// One open object or array: the key of the value being read (escapes decoded), or its index.
+/// An object remembers its keys: JSON readers differ on a repeated key (Assimp's takes the
+/// first), so a repeat is refused rather than scanning other facts than the importer reads.
 struct GltfFrame {
     bool array = false;
     uint64_t index = 0;
-    std::string_view key;
+    std::string key;
+    std::unordered_set<std::string> keys;
 };
+
+/// The hexadecimal value of a \u escape's four digits, or -1.
+int hexQuad(std::string_view s) {
+    int v = 0;
+    for (char c : s) {
+        const int d = c >= '0' && c <= '9'   ? c - '0'
+                      : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                      : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                             : -1;
+        if (d < 0) return -1;
+        v = v * 16 + d;
+    }
+    return v;
+}
+
+/// A string token's text with JSON's escapes decoded (\u as UTF-8, surrogates kept as
+/// their own 3-byte codes: only equality with plain ASCII keys matters here), or nullopt when
+/// an escape is malformed.
+std::optional<std::string> decodeJsonString(std::string_view raw) {
+    std::string out;
+    out.reserve(raw.size());
+    for (size_t i = 0; i < raw.size(); ++i) {
+        if (raw[i] != '\\') {
+            out += raw[i];
+            continue;
+        }
+        if (++i >= raw.size()) return std::nullopt;
+        static constexpr std::string_view kNames = "\"\\/bfnrt", kMeant = "\"\\/\b\f\n\r\t";
+        if (const size_t k = kNames.find(raw[i]); k != std::string_view::npos) {
+            out += kMeant[k];
+            continue;
+        }
+        if (raw[i] != 'u' || i + 5 > raw.size()) return std::nullopt;
+        const int u = hexQuad(raw.substr(i + 1, 4));
+        if (u < 0) return std::nullopt;
+        i += 4;
+        if (u < 0x80) {
+            out += char(u);
+        } else if (u < 0x800) {
+            out += char(0xC0 | (u >> 6)), out += char(0x80 | (u & 0x3F));
+        } else {
+            out += char(0xE0 | (u >> 12)), out += char(0x80 | ((u >> 6) & 0x3F));
+            out += char(0x80 | (u & 0x3F));
+        }
+    }
+    return out;
+}
 
 /// The facts kept from the JSON, all indices as written (checked afterwards).
 struct GltfFacts {
@@ -101,7 +153,7 @@ private:
             gltfScanFail(mPath, "glTF JSON nests deeper than " +
                                     std::to_string(kGltfMaxJsonNesting) + " levels");
         ++mPos;
-        mStack.push_back({array, 0, {}});
+        mStack.push_back({array, 0, {}, {}});
         if (at(array ? ']' : '}')) return false;  // empty: closed by closeContainers
         if (!array) readKey();
         mStack.back().index = 1;  // 1-based while inside: 0 means "empty, close me"
@@ -109,7 +161,15 @@ private:
     }
 
     void readKey() {
-        mStack.back().key = stringToken();
+        const size_t at = mPos;
+        std::optional<std::string> key = decodeJsonString(stringToken());
+        if (!key) error("bad escape in a key");
+        GltfFrame& top = mStack.back();
+        if (!top.keys.insert(*key).second) {
+            mPos = at;
+            error("the key \"" + *key + "\" appears twice in one object");
+        }
+        top.key = std::move(*key);
         expect(':');
     }
 
@@ -191,6 +251,7 @@ void checkGltfNodeGraph(const std::string& path, const GltfFacts& facts) {
     if (n >= std::numeric_limits<uint32_t>::max()) gltfScanFail(path, "too many glTF nodes");
     std::vector<uint32_t> parent(n, std::numeric_limits<uint32_t>::max()), first(n + 1, 0);
     for (const auto& [p, c] : facts.children) {
+        if (p >= n) gltfScanFail(path, "glTF node " + std::to_string(p) + " is past the nodes");
         if (c < 0 || uint64_t(c) >= n)
             gltfScanFail(path, "glTF node " + std::to_string(p) + " has child " +
                                    (c < 0 ? "index out of range" : std::to_string(c)) +
@@ -236,6 +297,14 @@ std::optional<uint64_t> declaredGltfTriangles(const std::string& path, const Glt
         const int64_t indices = count(p.indices, "indices");
         const int64_t positions = count(p.position, "POSITION");
         const int64_t corners = p.indices >= 0 ? indices : positions;
+        // Assimp counts a strip's or fan's triangles as corners - 2 (a line strip's segments
+        // as corners - 1) in unsigned arithmetic: fewer corners ask for 2^32 faces.
+        const int64_t least = p.mode == 5 || p.mode == 6 ? 3 : p.mode == 2 || p.mode == 3 ? 2 : 0;
+        if (least > 0 && corners < least)
+            gltfScanFail(path,
+                         "a glTF primitive of mode " + std::to_string(p.mode) + " has " +
+                             (corners < 0 ? "no corners" : std::to_string(corners) + " corners") +
+                             ", fewer than the " + std::to_string(least) + " it needs");
         if (p.mode != 4 || corners < 0) total.reset();
         if (total) *total += uint64_t(corners) / 3;
     }

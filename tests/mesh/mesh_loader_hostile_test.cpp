@@ -219,3 +219,29 @@ TEST_CASE(
         CHECK(loadMesh(dir.write("comments.ply", text)).triangles.size() == 8);
     }
 }
+
+// Found by kerf_fuzz_mesh (corpus: gltf-nodes-key-twice, gltf-strip-without-corners).
+TEST_CASE("loadMesh::the glTF pre-scan reads the keys the importer reads") {
+    TempDir dir;
+    SECTION("a key twice in one object is refused (readers differ on which one counts)") {
+        std::string twice = gltfText();
+        twice.insert(twice.size() - 1, R"(, "nodes": [{"mesh": 0}])");
+        requireMeshError(dir.write("twice.gltf", twice), "the key \"nodes\" appears twice");
+    }
+    SECTION("an escaped key is the key it spells") {
+        std::string escaped = gltfWithNodeChain(30000);
+        escaped.replace(escaped.find(R"("nodes": [{)"), 7, R"("node\u0073")");
+        requireMeshError(dir.write("escaped.gltf", escaped), "node hierarchy deeper than 1024");
+    }
+    SECTION("a strip or fan of fewer than 3 corners (2^32 faces to Assimp)") {
+        std::string strip = gltfText();
+        strip.replace(strip.find(R"("indices": 1, "mode": 4)"), 23, R"("mode": 5)");
+        strip.replace(strip.find(R"("count": 6)"), 10, R"("count": 2)");
+        requireMeshError(dir.write("strip.gltf", strip),
+                         "a glTF primitive of mode 5 has 2 corners, fewer than the 3 it needs");
+        std::string fan = gltfText();
+        fan.replace(fan.find(R"({"POSITION": 0}, "indices": 1, "mode": 4)"), 40,
+                    R"({}, "mode": 6)");
+        requireMeshError(dir.write("fan.gltf", fan), "mode 6 has no corners");
+    }
+}
