@@ -195,6 +195,28 @@ TEST_CASE("mesh_export/gyroid ball model: watertight, volume within the model's 
     }
 }
 
+// cup.kerf at voxel 0.08: two vertices 2^-55 apart in y (and off the float grid in x) were
+// left unjoined by a GCC 12.2 -O2 miscompile of the float rounding, so an edge of four faces
+// in the written file went uncounted and unfixed.
+TEST_CASE("mesh_export/crowded edges are counted on positions as floats") {
+    const double x = 2.6094427190999907, z0 = -0.6747877654413359, z1 = -0.61622697442571095;
+    const std::vector<Vec3> points = {{x, 0.19999999999999998, z0},
+                                      {x, 0.19999999999999993, z1},  // the edge, sheet 1
+                                      {x, 0.19999999999999996, z0},
+                                      {x, 0.19999999999999991, z1},  // the same as floats
+                                      {2.5, 0.2, -0.65},
+                                      {2.7, 0.2, -0.65},  // sheet 1's other corners
+                                      {2.5, 0.25, -0.65},
+                                      {2.7, 0.25, -0.65}};  // sheet 2's
+    const std::vector<std::array<uint32_t, 3>> triangles = {
+        {0, 1, 4}, {1, 0, 5}, {2, 3, 6}, {3, 2, 7}};
+    CHECK(crowdedEdges(points, triangles) == 1);
+    // Apart by more than a float's spacing, the sheets share no edge.
+    std::vector<Vec3> apart = points;
+    apart[2].y = apart[3].y = 0.2 + 1e-6;
+    CHECK(crowdedEdges(apart, triangles) == 0);
+}
+
 TEST_CASE("mesh_export/bad voxel sizes are refused") {
     const Scene scene = test::compiledScene(kSphere);
     MeshExportStats stats;

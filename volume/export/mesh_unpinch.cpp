@@ -5,6 +5,7 @@
 #include "volume/export/mesh_placement.h"
 #include "volume/octree/surface_search.h"
 
+#include <array>
 #include <cstring>
 #include <unordered_map>
 #include <unordered_set>
@@ -15,34 +16,33 @@ namespace {
 
 constexpr int kUnpinchRounds = 4;
 
-struct PositionHash {
-    size_t operator()(const Vec3& p) const {
+/// A position as a reader stores it: three floats, -0 as +0.
+using FloatPosition = std::array<float, 3>;
+
+struct FloatPositionHash {
+    size_t operator()(const FloatPosition& p) const {
         uint64_t h = 1469598103934665603ull;
-        for (int a = 0; a < 3; ++a) {
-            const double c = p[a] + 0.0;  // -0 and +0 are one position
-            uint64_t bits;
-            std::memcpy(&bits, &c, 8);
+        for (const float c : p) {
+            uint32_t bits;
+            std::memcpy(&bits, &c, 4);
             h = (h ^ bits) * 1099511628211ull;
         }
         return size_t(h);
     }
 };
-struct PositionEqual {
-    bool operator()(const Vec3& a, const Vec3& b) const {
-        return a.x == b.x && a.y == b.y && a.z == b.z;
-    }
-};
 
 /// Each vertex's joined id: the first vertex at its position as a float. PLY and STL store
 /// floats, and Assimp reads OBJ's decimals into floats too, so every reader of the file joins
-/// vertices equal as floats.
+/// vertices equal as floats. The key is the floats themselves: GCC 12.2 at -O2 compiles
+/// `dvec3(double(float(x)), double(float(y)), ...)` to a copy of x and y (its SLP vectorizer
+/// drops the round trip of a pair), which left vertices 2^-55 apart unjoined here.
 std::vector<uint32_t> joinedIds(const std::vector<Vec3>& points) {
-    std::unordered_map<Vec3, uint32_t, PositionHash, PositionEqual> first;
+    std::unordered_map<FloatPosition, uint32_t, FloatPositionHash> first;
     first.reserve(points.size());
     std::vector<uint32_t> id(points.size());
     for (uint32_t i = 0; i < points.size(); ++i) {
         const Vec3& p = points[i];
-        const Vec3 asRead(double(float(p.x)), double(float(p.y)), double(float(p.z)));
+        const FloatPosition asRead{float(p.x) + 0.0f, float(p.y) + 0.0f, float(p.z) + 0.0f};
         id[i] = first.emplace(asRead, i).first->second;
     }
     return id;
