@@ -189,7 +189,7 @@ void splitQuads(const SampledField& field, const std::vector<Vec3>& points,
             d[k] = std::fabs(f) / glm::length(g);
             if (!std::isfinite(d[k])) d[k] = HUGE_VAL;
         }
-        alternate[i] = d[1] < d[0];
+        alternate[i] = d[0] - d[1] > 1e-7 * l.voxel;
     });
     triangles.reserve(triangles.size() + 2 * quads.size());
     for (size_t i = 0; i < quads.size(); ++i) {
