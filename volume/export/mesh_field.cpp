@@ -158,6 +158,13 @@ void sampleBoundaryBlock(const MeshLattice& lattice, const Tape& tape, BoundaryB
 
 }  // namespace
 
+/// The lattice's planes sit this fraction of a voxel off the model's bounds. Models put faces
+/// at round coordinates, often a whole number of voxels from the bounds: a face on a lattice
+/// plane has its samples at f = 0, and a crease there gets vertices from two cell layers, which
+/// crease placement sends to one point (an edge of four faces once joined). 2 − φ is as far from
+/// every simple fraction of a voxel as a number can be.
+constexpr double kLatticeShift = 0.3819660112501051;
+
 MeshLattice meshLattice(const Bounds3& bounds, double voxel) {
     if (!std::isfinite(voxel) || !(voxel > 0.0))
         throw MeshInputError("--voxel must be a finite number greater than 0, not " +
@@ -165,14 +172,16 @@ MeshLattice meshLattice(const Bounds3& bounds, double voxel) {
     MeshLattice l;
     l.voxel = voxel;
     for (int a = 0; a < 3; ++a) {
-        // Two voxels of margin each side, so the surface lies strictly inside the lattice.
-        const double cells = std::ceil((bounds.hi[a] - bounds.lo[a]) / voxel) + 4.0;
+        // At least two voxels of margin each side, so the surface lies strictly inside the
+        // lattice; the lower margin is 2 + kLatticeShift voxels, so one more cell keeps the
+        // upper one above two.
+        const double cells = std::ceil((bounds.hi[a] - bounds.lo[a]) / voxel) + 5.0;
         if (!(cells < double(kMeshMaxAxisPoints)))
             throw MeshInputError(
                 "--voxel " + voxelText(voxel) + " is too fine for this model: more than " +
                 std::to_string(kMeshMaxAxisPoints) + " voxels along an axis of its bounds");
         l.points[a] = int64_t(cells) + 1;
-        l.origin[a] = bounds.lo[a] - 2.0 * voxel;
+        l.origin[a] = bounds.lo[a] - (2.0 + kLatticeShift) * voxel;
     }
     return l;
 }
