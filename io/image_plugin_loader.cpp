@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "io/image.h"
+#include "io/png_errors_quiet.h"
 
 namespace kerf {
 namespace {
@@ -62,6 +63,7 @@ void load(PluginState& s, const std::string& path) {
     // Never closed: OpenImageIO keeps threads and static state until the process ends.
     // RTLD_LAZY as at process start: RTLD_NOW would bind every symbol of the ~260 libraries
     // OpenImageIO pulls in, most of which are never called.
+    keepPngErrorsQuiet();
     void* handle = ::dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
     if (handle == nullptr) return fail(::dlerror());
     const auto entry =

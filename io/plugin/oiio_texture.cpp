@@ -94,8 +94,21 @@ private:
 
 OIIO::ImageInput* createLinearInput() { return new LinearInput; }
 
+/// OpenImageIO's error text on one line: its lines (one per message it kept) joined by "; ",
+/// so kerf's `file:line:col: error:` line stays one line.
+std::string oneLine(const std::string& message) {
+    std::string out;
+    size_t start = 0;
+    while (start <= message.size()) {
+        const size_t end = std::min(message.find('\n', start), message.size());
+        if (end > start) out += (out.empty() ? "" : "; ") + message.substr(start, end - start);
+        start = end + 1;
+    }
+    return out;
+}
+
 int failWith(const std::string& message, char* error, size_t errorSize) {
-    if (errorSize > 0) std::snprintf(error, errorSize, "%s", message.c_str());
+    if (errorSize > 0) std::snprintf(error, errorSize, "%s", oneLine(message).c_str());
     return 1;
 }
 

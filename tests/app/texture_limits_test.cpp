@@ -8,6 +8,7 @@
 #include "io/image.h"
 #include "kerf_peak_memory.h"
 #include "util/hostile_image_headers.h"
+#include "util/scratch_folder.h"
 
 #include <catch2/catch.hpp>
 
@@ -85,4 +86,29 @@ TEST_CASE("kerf check: a texture at the size limit's side is read, one past it i
     CHECK(wider.exitCode == app::kExitUsage);
     CHECK_THAT(wider.err, Catch::Contains("'wider.png': its header says 16385 x 1 pixels; a "
                                           "texture may have at most 16384 a side"));
+}
+
+// libpng's default error handler printed "libpng error: ..." ahead of kerf's message, since
+// OpenImageIO's handler returns (io/png_errors_quiet.cpp now longjmps for it, silently).
+TEST_CASE("kerf check: a corrupt PNG texture is kerf's one-line message, no libpng line") {
+    TempDir dir;
+    writeImage(Image(4, 4, 3), (dir.path() / "good.png").string());
+    const std::string good = test::slurp((dir.path() / "good.png").string());
+    const size_t idat = good.find("IDAT");
+    REQUIRE(idat != std::string::npos);
+    std::string crc = good;
+    crc[idat + 6] = char(crc[idat + 6] ^ 0x5a);  // the data no longer matches the chunk's CRC
+    dir.write("crc.png", crc);
+    dir.write("cut.png", good.substr(0, idat + 10));  // ends inside the image data
+    for (const char* name : {"crc.png", "cut.png"}) {
+        dir.write("t.kerf", modelTexturing(name));
+        const KerfRun run = runKerf(dir, {"check", "t.kerf"});
+        INFO(run.err);
+        CHECK(run.exitCode == app::kExitUsage);
+        CHECK(run.err.rfind("t.kerf:2:", 0) == 0);  // kerf's message comes first
+        CHECK_THAT(run.err, Catch::Contains("cannot read texture '" + std::string(name) + "'"));
+        CHECK_THAT(run.err, !Catch::Contains("libpng"));
+        const std::string firstLine = run.err.substr(0, run.err.find('\n'));
+        CHECK_THAT(firstLine, Catch::Contains("PNG"));
+    }
 }
