@@ -27,12 +27,27 @@ namespace {
 
 using namespace kerf::app;
 
-/// Whether `kerf slice -o PATH` writes a raster (through the image plug-in), not SVG or DXF.
+bool endsWithPng(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == ".png";
+}
+
+/// Whether `kerf slice -o PATH` writes a raster (through the image plug-in: a slice's raster
+/// has an alpha channel, which io/png_write.h leaves to it), not SVG or DXF.
 bool sliceWritesImage(const std::string& output) {
     std::string ext = std::filesystem::path(output).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return ext != ".svg" && ext != ".dxf";
+}
+
+/// Whether every file `kerf render` writes is a whole RGB PNG, which kerf encodes itself
+/// (io/png_write.h): the plug-in is then loaded only if the model reads a texture.
+bool renderWritesOnlyWholePngs(const RenderCommandLine& line) {
+    if (!line.region.empty() || !endsWithPng(line.output)) return false;
+    return std::all_of(line.aovs.begin(), line.aovs.end(), endsWithPng);
 }
 
 /// Commands that will read or write an image load the plug-in before any work, so a kerf
@@ -84,7 +99,8 @@ int run(int argc, char** argv) {
         return kExitUsage;
     }
 
-    const bool needsImages = renderCmd->parsed() || assembleCmd->parsed() ||
+    const bool needsImages = (renderCmd->parsed() && !renderWritesOnlyWholePngs(renderLine)) ||
+                             assembleCmd->parsed() ||
                              (sliceCmd->parsed() && sliceWritesImage(sliceLine.output));
     if (const int code = checkImageSupport(needsImages); code >= 0) return code;
 

@@ -1,13 +1,14 @@
 /// @file io/image_io.cpp
 /// @brief Image files through the image plug-in (OpenImageIO, loaded on first use), which
-/// encodes them in memory; the bytes are written by the one checked write path
-/// (io/atomic_file.h), so a failure never leaves a half file nor clobbers an earlier one. The
-/// sRGB coding is done here, so the plug-in only moves buffers.
+/// encodes them in memory (a whole PNG through libpng here, with no plug-in); the bytes are written
+/// by the one checked write path (io/atomic_file.h), so a failure never leaves a half file nor
+/// clobbers an earlier one. The sRGB coding is done here, so the plug-in only moves buffers.
 #include "io/image.h"
 
 #include "io/atomic_file.h"
 #include "io/file_checks.h"
 #include "io/image_plugin_loader.h"
+#include "io/png_write.h"
 #include "io/srgb.h"
 
 #include <algorithm>
@@ -113,7 +114,19 @@ void writeImage(const Image& image, const std::string& path, const ImageWindow& 
     const std::string problem = outputProblem(path, false);
     if (!problem.empty()) fail(path, problem);
     std::string bytes;
-    const std::string error = encode(imagePlugin(), image, path, encoding, window, bytes);
+    // A whole grey or RGB PNG is libpng's alone (io/png_write.h); a window of a larger image
+    // keeps the plug-in, which records the window as OpenImageIO reads it back, and so does
+    // alpha, which OpenImageIO stores unassociated (kerf writes none today).
+    const bool whole = window.x == 0 && window.y == 0 && window.fullWidth == image.width &&
+                       window.fullHeight == image.height;
+    std::string error;
+    if (ext == ".png" && whole && (image.channels == 1 || image.channels == 3)) {
+        std::vector<uint8_t> codes(image.pixels.size());
+        std::transform(image.pixels.begin(), image.pixels.end(), codes.begin(), srgbByte);
+        error = encodePngSrgb8(codes.data(), image.width, image.height, image.channels, bytes);
+    } else {
+        error = encode(imagePlugin(), image, path, encoding, window, bytes);
+    }
     if (!error.empty()) fail(path, error);
     // The temporary keeps the real extension, so a tool looking at it sees what it is.
     const std::string writeError = replaceFile(path, ext, bytes.data(), bytes.size());

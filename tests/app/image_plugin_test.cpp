@@ -1,5 +1,6 @@
-// End-to-end tests of the image plug-in's loading: commands that write no image load no image
-// library, and a missing plug-in is a clear error that leaves no file behind.
+// End-to-end tests of the image plug-in's loading: commands that write no image, or only whole
+// PNGs (io/png_write.h), load no image library, and a missing plug-in is a clear error that
+// leaves no file behind.
 #include <catch2/catch.hpp>
 
 #include "io/image.h"
@@ -52,9 +53,20 @@ TEST_CASE("kerf --version, --help and check load no image library") {
         CHECK(run.err.find("OpenImageIO") == std::string::npos);
         CHECK(run.err.find("kerf_image_plugin") == std::string::npos);
     }
-    SECTION("a render loads the plug-in and OpenImageIO") {
+    SECTION("a PNG render loads neither: kerf encodes the PNG with libpng") {
         const KerfRun run =
             runBinary(dir, "LD_DEBUG=files", KERF_BINARY, {"render", "ball.kerf", "-o", "b.png"});
+        CHECK(run.exitCode == 0);
+        CHECK(run.err.find("file=") != std::string::npos);
+        CHECK(run.err.find("kerf_image_plugin") == std::string::npos);
+        CHECK(run.err.find("OpenImageIO") == std::string::npos);
+        const kerf::Image image = kerf::readImage(dir.file("b.png"));
+        CHECK(image.width == 8);
+        CHECK(image.height == 6);
+    }
+    SECTION("a TIFF render loads the plug-in and OpenImageIO") {
+        const KerfRun run =
+            runBinary(dir, "LD_DEBUG=files", KERF_BINARY, {"render", "ball.kerf", "-o", "b.tif"});
         CHECK(run.exitCode == 0);
         CHECK(run.err.find("kerf_image_plugin") != std::string::npos);
         CHECK(run.err.find("OpenImageIO") != std::string::npos);
@@ -73,8 +85,13 @@ TEST_CASE("kerf without its image plug-in") {
         const KerfRun run = runBinary(dir, "", kerf, {"check", "ball.kerf"});
         CHECK(run.exitCode == 0);
     }
-    SECTION("render fails at once with the paths it tried and writes nothing") {
+    SECTION("a PNG render needs no plug-in") {
         const KerfRun run = runBinary(dir, "", kerf, {"render", "ball.kerf", "-o", "b.png"});
+        CHECK(run.exitCode == 0);
+        CHECK(fs::exists(dir.file("b.png")));
+    }
+    SECTION("render fails at once with the paths it tried and writes nothing") {
+        const KerfRun run = runBinary(dir, "", kerf, {"render", "ball.kerf", "-o", "b.tif"});
         CHECK(run.exitCode == 2);
         const std::string installed =
             (dir.path().parent_path() / "lib" / "kerf" / "kerf_image_plugin.so").string();
@@ -84,7 +101,7 @@ TEST_CASE("kerf without its image plug-in") {
                   plugin + "', '" + installed + "'\n");
         CHECK(dir.listing() == std::vector<std::string>{"ball.kerf", "kerf"});
     }
-    SECTION("slice to PNG checks too; slice to SVG needs no plug-in") {
+    SECTION("slice to PNG checks too (a slice has alpha); slice to SVG needs no plug-in") {
         const std::vector<std::string> slice = {"slice", "ball.kerf", "--plane", "z=0", "-o"};
         std::vector<std::string> png = slice, svg = slice;
         png.push_back("cut.png");
@@ -98,19 +115,19 @@ TEST_CASE("kerf without its image plug-in") {
     }
     SECTION("a shared object without the entry point is refused") {
         fs::copy_file(KERF_SOME_SHARED_LIBRARY, plugin);
-        const KerfRun run = runBinary(dir, "", kerf, {"render", "ball.kerf", "-o", "b.png"});
+        const KerfRun run = runBinary(dir, "", kerf, {"render", "ball.kerf", "-o", "b.tif"});
         CHECK(run.exitCode == 2);
         CHECK(run.err.rfind(
                   "kerf: error: cannot load image support '" + plugin + "': no entry point", 0) ==
               0);
-        CHECK(!fs::exists(dir.file("b.png")));
+        CHECK(!fs::exists(dir.file("b.tif")));
     }
     SECTION("a file that is not a plug-in is refused the same way") {
         dir.write("kerf_image_plugin.so", "not a shared object");
-        const KerfRun run = runBinary(dir, "", kerf, {"render", "ball.kerf", "-o", "b.png"});
+        const KerfRun run = runBinary(dir, "", kerf, {"render", "ball.kerf", "-o", "b.tif"});
         CHECK(run.exitCode == 2);
         CHECK(run.err.rfind("kerf: error: cannot load image support '" + plugin + "': ", 0) == 0);
-        CHECK(!fs::exists(dir.file("b.png")));
+        CHECK(!fs::exists(dir.file("b.tif")));
     }
 }
 
@@ -128,13 +145,13 @@ TEST_CASE("an installed kerf finds its plug-in in ../lib/kerf, wherever the pref
     fs::rename(first, moved);
 
     const KerfRun installed = runBinary(dir, "", (moved / "bin" / "kerf").string(),
-                                        {"render", "ball.kerf", "-o", "installed.png"});
+                                        {"render", "ball.kerf", "-o", "installed.tif"});
     REQUIRE(installed.exitCode == 0);
     // The oracle: the build tree's kerf, which finds the plug-in beside itself.
-    REQUIRE(runBinary(dir, "", KERF_BINARY, {"render", "ball.kerf", "-o", "built.png"}).exitCode ==
+    REQUIRE(runBinary(dir, "", KERF_BINARY, {"render", "ball.kerf", "-o", "built.tif"}).exitCode ==
             0);
-    const kerf::Image got = kerf::readImage(dir.file("installed.png"));
-    const kerf::Image want = kerf::readImage(dir.file("built.png"));
+    const kerf::Image got = kerf::readImage(dir.file("installed.tif"));
+    const kerf::Image want = kerf::readImage(dir.file("built.tif"));
     REQUIRE(got.width == 8);
     REQUIRE(got.height == 6);
     REQUIRE(got.pixels.size() == want.pixels.size());

@@ -74,6 +74,36 @@ TEST_CASE("writeImage / readImage round trips") {
         CHECK(dir.entries() == 1);  // no temporary left behind
     }
 
+    SECTION("grey and RGB PNGs (libpng's, io/png_write.h), marked sRGB, read back exactly") {
+        for (const int channels : {1, 3}) {
+            INFO(channels << " channels");
+            const Image image = pattern(7, 4, channels);
+            const std::string file = dir.file("c" + std::to_string(channels) + ".png");
+            writeImage(image, file);
+            const std::string bytes = slurp(file);
+            CHECK(bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
+            CHECK(bytes.find("sRGB") != std::string::npos);
+            CHECK(bytes.find("gAMA") != std::string::npos);
+            const Image back = readImage(file);
+            REQUIRE(back.width == 7);
+            REQUIRE(back.height == 4);
+            REQUIRE(back.channels == channels);
+            for (size_t k = 0; k < image.pixels.size(); ++k)
+                CHECK(back.pixels[k] ==
+                      Approx(srgbDecode(srgbByte(image.pixels[k]) / 255.0)).margin(1e-6));
+        }
+    }
+
+    SECTION("a PNG that is a window of a larger image keeps its place (through the plug-in)") {
+        const Image image = pattern(3, 2, 3);
+        writeImage(image, dir.file("part.png"), ImageWindow{4, 5, 10, 9});
+        ImageWindow window;
+        const Image back = readImage(dir.file("part.png"), window);
+        CHECK(back.width == 3);
+        CHECK(window.x == 4);
+        CHECK(window.y == 5);
+    }
+
     SECTION("EXR and TIFF: float linear, exact, infinities kept") {
         Image depth = pattern(4, 3, 1);
         depth.pixels[2] = std::numeric_limits<float>::infinity();
