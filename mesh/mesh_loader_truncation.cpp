@@ -2,6 +2,8 @@
 // walked (for PLY lists, each count is read to skip its items), never beyond the file's end.
 #include "mesh/mesh_loader_truncation.h"
 
+#include "mesh/off_counts.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
@@ -241,14 +243,19 @@ std::optional<std::string> binaryMeshTruncation(const std::string& path) {
     std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : "";
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     // PLY and binary glTF by their first bytes too: Assimp falls back on them for any name.
-    char head[4] = {0, 0, 0, 0};
-    std::ifstream(path, std::ios::binary).read(head, 4);
-    const bool ply = ext == ".ply" || std::memcmp(head, "ply", 3) == 0;
-    const bool glb = ext == ".glb" || std::memcmp(head, "glTF", 4) == 0;
-    if (ext != ".stl" && !ply && !glb) return std::nullopt;
+    char head[64] = {};
+    std::ifstream in(path, std::ios::binary);
+    in.read(head, sizeof head);
+    const std::string first(head, size_t(in.gcount()));
+    const bool ply = ext == ".ply" || first.compare(0, 3, "ply") == 0;
+    const bool glb = ext == ".glb" || first.compare(0, 4, "glTF") == 0;
+    // OFF by its first word too: Assimp tries its OFF reader on a file of any name.
+    const bool off = ext == ".off" || looksLikeOff(first);
+    if (ext != ".stl" && !ply && !glb && !off) return std::nullopt;
     const std::string data = readAll(path);
     if (glb) return glbTruncation(data);
-    return ply ? plyTruncation(data) : stlTruncation(data);
+    if (ply) return plyTruncation(data);
+    return ext == ".stl" ? stlTruncation(data) : offCountsShortfall(data);
 }
 
 }  // namespace kerf

@@ -10,7 +10,8 @@
 
 namespace kerf {
 
-/// @brief For a binary STL (not starting with "solid") or a binary PLY: what is missing
+/// @brief For a binary STL (not starting with "solid"), a PLY, a binary glTF or an OFF
+/// (mesh/off_counts.h): what is missing
 /// ("truncated: …"), or nothing when the file is complete, ASCII, or of another format (then
 /// the importer decides). Reads only the header and, for PLY lists, their counts.
 std::optional<std::string> binaryMeshTruncation(const std::string& path);

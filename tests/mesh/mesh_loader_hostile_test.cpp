@@ -245,3 +245,21 @@ TEST_CASE("loadMesh::the glTF pre-scan reads the keys the importer reads") {
         requireMeshError(dir.write("fan.gltf", fan), "mode 6 has no corners");
     }
 }
+
+// Found by kerf_fuzz_mesh (corpus: off-count-80-digits): Assimp read the face count as a
+// wrapping 32-bit number and asked for 53 GB before reading a row.
+TEST_CASE("loadMesh::OFF counts are checked against the file before the importer allocates") {
+    TempDir dir;
+    const std::string rows =
+        "1.25 0 0\n-1.25 0 0\n0 1.25 0\n0 -1.25 0\n0 0 1.25\n0 0 -1.25\n"
+        "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n";
+    CHECK(loadMesh(dir.write("octa.off", "OFF\n6 8 0\n" + rows)).triangles.size() == 8);
+    requireMeshError(dir.write("digits.off", "OFF\n6 8" + std::string(80, '1') + " 0\n" + rows),
+                     "OFF header: the face count '8111");
+    requireMeshError(dir.write("huge.off", "OFF\n4000000000 4000000000 0\n0 0 0\n"),
+                     "truncated OFF file: the header declares 4000000000 vertices");
+    SECTION("by its first word whatever its name, with the rows its prefix letters ask for") {
+        requireMeshError(dir.write("colours.obj", "COFF\n600 8 0\n" + rows),
+                         "at least 7232 bytes");  // 600 × 2 × (3 + 3) + 8 × 4
+    }
+}

@@ -35,6 +35,11 @@ std::string stlClaimingFacets(uint32_t facets) {
     return stlBinary(octa, facets);
 }
 
+std::string octahedronOff() {
+    return "OFF\n6 8 0\n1.25 0 0\n-1.25 0 0\n0 1.25 0\n0 -1.25 0\n0 0 1.25\n0 0 -1.25\n"
+           "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n";
+}
+
 std::string gltfClaimingAccessorCount() {
     std::string json = gltfText();
     const std::string count = R"("count": 6,)";
@@ -59,6 +64,7 @@ TEST_CASE("loadMesh::hostile headers and counts cost no more than the file justi
         {"STL binary", "ok.stl", stlBinaryText(), "bad.stl", stlClaimingFacets(0xFFFFFFFFu)},
         {"glTF", "ok.gltf", gltfText(), "bad.gltf", gltfClaimingAccessorCount()},
         {"GLB", "ok.glb", glbText(), "bad.glb", glbHeaderClaiming(0xFFFFFFF0u)},
+        {"OFF", "ok.off", octahedronOff(), "bad.off", "OFF\n4000000000 4000000000 0\n0 0 0\n"},
     };
     for (const Case& c : cases) {
         SECTION(c.format) {
