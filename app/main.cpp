@@ -34,16 +34,16 @@ bool endsWithPng(const std::string& path) {
     return ext == ".png";
 }
 
-/// Whether `kerf slice -o PATH` writes a raster (through the image plug-in: a slice's raster
-/// has an alpha channel, which io/png_write.h leaves to it), not SVG or DXF.
-bool sliceWritesImage(const std::string& output) {
+/// Whether `kerf slice -o PATH` needs the plug-in: a raster other than PNG (SVG and DXF are
+/// text kerf writes, a PNG kerf encodes itself, io/png_write.h).
+bool sliceNeedsPlugin(const std::string& output) {
     std::string ext = std::filesystem::path(output).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext != ".svg" && ext != ".dxf";
+    return ext != ".svg" && ext != ".dxf" && ext != ".png";
 }
 
-/// Whether every file `kerf render` writes is a whole RGB PNG, which kerf encodes itself
+/// Whether every file `kerf render` writes is a whole PNG, which kerf encodes itself
 /// (io/png_write.h): the plug-in is then loaded only if the model reads a texture.
 bool renderWritesOnlyWholePngs(const RenderCommandLine& line) {
     if (!line.region.empty() || !endsWithPng(line.output)) return false;
@@ -101,7 +101,7 @@ int run(int argc, char** argv) {
 
     const bool needsImages = (renderCmd->parsed() && !renderWritesOnlyWholePngs(renderLine)) ||
                              assembleCmd->parsed() ||
-                             (sliceCmd->parsed() && sliceWritesImage(sliceLine.output));
+                             (sliceCmd->parsed() && sliceNeedsPlugin(sliceLine.output));
     if (const int code = checkImageSupport(needsImages); code >= 0) return code;
 
     try {

@@ -13,7 +13,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace kerf {
 namespace {
@@ -39,6 +41,24 @@ Encoding encodingFor(const std::string& ext) {
     throw ImageWriteError(cannotWrite(path, reason));
 }
 
+/// Whether channel `c` of an image of `channels` is alpha (grey + alpha, RGBA).
+bool isAlpha(int c, int channels) { return (channels == 2 || channels == 4) && c == channels - 1; }
+
+/// The 8-bit codes of `image`: colour as sRGB, alpha linear (PNG and JPEG store alpha as
+/// coverage, not light).
+std::vector<uint8_t> eightBitCodes(const Image& image) {
+    std::vector<uint8_t> codes(image.pixels.size());
+    const int n = image.channels;
+    for (size_t k = 0; k < codes.size(); ++k) {
+        const float v = image.pixels[k];
+        codes[k] =
+            isAlpha(int(k % size_t(n)), n)
+                ? uint8_t(std::lround(std::clamp(std::isnan(v) ? 0.0f : v, 0.0f, 1.0f) * 255.0f))
+                : srgbByte(v);
+    }
+    return codes;
+}
+
 /// Takes the encoded file from the plug-in (a C callback: nothing may be thrown through it).
 int keepBytes(void* user, const void* data, size_t size) {
     try {
@@ -56,8 +76,7 @@ std::string encode(const KerfImagePlugin& plugin, const Image& image, const std:
     char error[1024] = "";
     int failed;
     if (encoding == Encoding::Srgb8) {
-        std::vector<uint8_t> codes(image.pixels.size());
-        std::transform(image.pixels.begin(), image.pixels.end(), codes.begin(), srgbByte);
+        const std::vector<uint8_t> codes = eightBitCodes(image);
         failed = plugin.encodeWindow(path.c_str(), image.width, image.height, image.channels, 1,
                                      codes.data(), "sRGB", w.x, w.y, w.fullWidth, w.fullHeight,
                                      keepBytes, &bytes, error, sizeof error);
@@ -114,15 +133,14 @@ void writeImage(const Image& image, const std::string& path, const ImageWindow& 
     const std::string problem = outputProblem(path, false);
     if (!problem.empty()) fail(path, problem);
     std::string bytes;
-    // A whole grey or RGB PNG is libpng's alone (io/png_write.h); a window of a larger image
-    // keeps the plug-in, which records the window as OpenImageIO reads it back, and so does
-    // alpha, which OpenImageIO stores unassociated (kerf writes none today).
+    // A whole PNG is libpng's alone (io/png_write.h); a window of a larger image keeps the
+    // plug-in, which records the window as OpenImageIO reads it back. Alpha is straight in
+    // both, as PNG defines it.
     const bool whole = window.x == 0 && window.y == 0 && window.fullWidth == image.width &&
                        window.fullHeight == image.height;
     std::string error;
-    if (ext == ".png" && whole && (image.channels == 1 || image.channels == 3)) {
-        std::vector<uint8_t> codes(image.pixels.size());
-        std::transform(image.pixels.begin(), image.pixels.end(), codes.begin(), srgbByte);
+    if (ext == ".png" && whole) {
+        const std::vector<uint8_t> codes = eightBitCodes(image);
         error = encodePngSrgb8(codes.data(), image.width, image.height, image.channels, bytes);
     } else {
         error = encode(imagePlugin(), image, path, encoding, window, bytes);
@@ -149,9 +167,14 @@ Image readImage(const std::string& path, ImageWindow& window) {
     if (plugin.readWindow(path.c_str(), allocateFor, &target, w, error, sizeof error) != 0)
         throw std::runtime_error("cannot read '" + path + "': " + error);
     window = ImageWindow{w[0], w[1], w[2], w[3]};
-    // Integer files hold sRGB codes (that is how writeImage stores them): back to linear.
-    if (target.integerCoded)
-        for (float& v : target.image.pixels) v = float(srgbDecode(v));
+    // Integer files hold sRGB codes (that is how writeImage stores them): back to linear; alpha
+    // is linear already.
+    if (target.integerCoded) {
+        const int n = target.image.channels;
+        for (size_t k = 0; k < target.image.pixels.size(); ++k)
+            if (!isAlpha(int(k % size_t(n)), n))
+                target.image.pixels[k] = float(srgbDecode(target.image.pixels[k]));
+    }
     return std::move(target.image);
 }
 

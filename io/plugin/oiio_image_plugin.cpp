@@ -55,6 +55,12 @@ int encodeUnguarded(void* data) {
         spec.full_width = c.fullWidth;
         spec.full_height = c.fullHeight;
         spec.attribute("oiio:ColorSpace", c.colorSpace);
+        if (c.channels == 2 || c.channels == 4) {
+            // kerf's alpha is straight (a slice's colour is its materials' coverage-weighted
+            // mean): without this OpenImageIO divides the colour by alpha as it writes.
+            spec.alpha_channel = c.channels - 1;
+            spec.attribute("oiio:UnassociatedAlpha", 1);
+        }
         void* proxyPointer = &proxy;
         spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxyPointer);
         // Only the return values decide: geterror() can hold a warning after a success (the
@@ -98,7 +104,10 @@ int encodeImage(const char* fileName, int width, int height, int channels, int b
 int readImageWindow(const char* path, KerfImageAllocate allocate, void* user, int window[4],
                     char* error, size_t errorSize) {
     try {
-        std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+        // Straight alpha, as kerf writes it: OpenImageIO would multiply the colour by it.
+        OIIO::ImageSpec config;
+        config.attribute("oiio:UnassociatedAlpha", 1);
+        std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path, &config);
         if (!in) return fail(OIIO::geterror(), error, errorSize);
         const OIIO::ImageSpec& spec = in->spec();
         const bool integerCoded = spec.format.basetype == OIIO::TypeDesc::UINT8 ||

@@ -101,17 +101,20 @@ TEST_CASE("kerf without its image plug-in") {
                   plugin + "', '" + installed + "'\n");
         CHECK(dir.listing() == std::vector<std::string>{"ball.kerf", "kerf"});
     }
-    SECTION("slice to PNG checks too (a slice has alpha); slice to SVG needs no plug-in") {
+    SECTION("slice to TIFF checks too; slice to SVG or PNG needs no plug-in") {
         const std::vector<std::string> slice = {"slice", "ball.kerf", "--plane", "z=0", "-o"};
-        std::vector<std::string> png = slice, svg = slice;
-        png.push_back("cut.png");
+        std::vector<std::string> tif = slice, svg = slice, png = slice;
+        tif.push_back("cut.tif");
         svg.push_back("cut.svg");
-        const KerfRun toPng = runBinary(dir, "", kerf, png);
-        CHECK(toPng.exitCode == 2);
-        CHECK(toPng.err.find("is in none of the places kerf looks") != std::string::npos);
-        CHECK(!fs::exists(dir.file("cut.png")));
+        png.push_back("cut.png");
+        const KerfRun toTif = runBinary(dir, "", kerf, tif);
+        CHECK(toTif.exitCode == 2);
+        CHECK(toTif.err.find("is in none of the places kerf looks") != std::string::npos);
+        CHECK(!fs::exists(dir.file("cut.tif")));
         CHECK(runBinary(dir, "", kerf, svg).exitCode == 0);
         CHECK(fs::exists(dir.file("cut.svg")));
+        CHECK(runBinary(dir, "", kerf, png).exitCode == 0);
+        CHECK(fs::exists(dir.file("cut.png")));
     }
     SECTION("a shared object without the entry point is refused") {
         fs::copy_file(KERF_SOME_SHARED_LIBRARY, plugin);
