@@ -27,19 +27,19 @@ namespace {
 
 using namespace kerf::app;
 
-bool endsWithPng(const std::string& path) {
+std::string lowerExtension(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext == ".png";
+    return ext;
 }
+
+bool endsWithPng(const std::string& path) { return lowerExtension(path) == ".png"; }
 
 /// Whether `kerf slice -o PATH` needs the plug-in: a raster other than PNG (SVG and DXF are
 /// text kerf writes, a PNG kerf encodes itself, io/png_write.h).
 bool sliceNeedsPlugin(const std::string& output) {
-    std::string ext = std::filesystem::path(output).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ext = lowerExtension(output);
     return ext != ".svg" && ext != ".dxf" && ext != ".png";
 }
 
