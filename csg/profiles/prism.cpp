@@ -2,7 +2,7 @@
 // (csg/profiles/prism.h).
 #include "csg/profiles/prism.h"
 
-#include "csg/primitives/closed_primitive.h"
+#include "csg/profiles/implicit_backed.h"
 
 #include <algorithm>
 #include <array>
@@ -44,14 +44,10 @@ Vec2 tangent(const std::array<Vec2, 4>& p, double s) {
     return d != Vec2(0.0) ? d : p[3] - p[0];
 }
 
-class Prism final : public ClosedFormPrimitive<Prism> {
+class Prism final : public ImplicitBackedPrimitive<Prism> {
 public:
     Prism(const PathShape& shape, double y0, double y1, NodePtr implicitForm)
-        : mY0(y0),
-          mY1(y1),
-          mImplicit(std::move(implicitForm)),
-          mForm(static_cast<const Primitive&>(*mImplicit)) {
-        mBounds = mImplicit->bounds();
+        : ImplicitBackedPrimitive(std::move(implicitForm)), mY0(y0), mY1(y1) {
         for (const PathLoop& loop : shape.loops) {
             std::vector<BezierPiece> pieces;
             for (const PathSegment& s : loop.segments) {
@@ -75,19 +71,6 @@ public:
             if (!pieces.empty()) mLoops.push_back(std::move(pieces));
         }
     }
-
-    double value(const Vec3& p) const override { return mImplicit->value(p); }
-    long double valueExtended(const LVec3& p) const override { return mImplicit->valueExtended(p); }
-    Interval valueInterval(const IntervalVec3& box) const override {
-        return mImplicit->valueInterval(box);
-    }
-    NodeKind kind() const override { return mImplicit->kind(); }
-    NodeParams params() const override { return mImplicit->params(); }
-    ExprId implicitExpr(ExprGraph& g, ExprId x, ExprId y, ExprId z) const override {
-        return mForm.implicitExpr(g, x, y, z);
-    }
-    const Tape* compiledForm() const override { return mForm.compiledForm(); }
-    double lipschitz() const override { return mForm.lipschitz(); }
 
 private:
     friend class ClosedFormPrimitive<Prism>;
@@ -221,8 +204,6 @@ private:
 
     std::vector<std::vector<BezierPiece>> mLoops;
     double mY0, mY1;
-    NodePtr mImplicit;
-    const Primitive& mForm;
     static thread_local std::vector<Crossing> mScratch;
 };
 

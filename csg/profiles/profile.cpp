@@ -1,6 +1,7 @@
 // 2-D profiles as expressions, and the extrude / revolve solids built on them.
 #include "csg/profiles/profile.h"
 
+#include "csg/profiles/lathe.h"
 #include "csg/profiles/prism.h"
 #include "csg/tape/tape.h"
 #include "csg/tree/solids.h"
@@ -268,6 +269,36 @@ NodePtr plainExtrusion(const PlainOutline& plain, double y0, double y1,
     return nullptr;
 }
 
+/// A full turn of a plain outline as a closed-form solid, or null: a circle clear of the axis
+/// is a torus, a rectangle or polygon a lathe. Béziers and arcs stay implicit (not yet solved
+/// along the ray in closed form).
+NodePtr plainRevolution(const PlainOutline& plain, const NodePtr& implicitForm) {
+    switch (plain.kind) {
+        case PlainOutline::Kind::Circle:
+            if (!(plain.a.x > plain.radius)) return nullptr;
+            return makeTransform(makeTorus(plain.a.x, plain.radius),
+                                 Affine::translate(Vec3(0.0, plain.a.y, 0.0)));
+        case PlainOutline::Kind::Rect:
+            return makeLathe(
+                {{plain.a, Vec2(plain.b.x, plain.a.y), plain.b, Vec2(plain.a.x, plain.b.y)}},
+                implicitForm);
+        case PlainOutline::Kind::Path: {
+            std::vector<std::vector<Vec2>> loops;
+            for (const PathLoop& loop : plain.path.loops) {
+                std::vector<Vec2> points;
+                for (const PathSegment& s : loop.segments) {
+                    if (s.kind != PathSegment::Kind::Line) return nullptr;
+                    points.push_back(s.start());
+                }
+                if (!points.empty()) loops.push_back(std::move(points));
+            }
+            return makeLathe(loops, implicitForm);
+        }
+        case PlainOutline::Kind::None: break;
+    }
+    return nullptr;
+}
+
 }  // namespace
 
 NodePtr makeExtrude(const Profile& profile, const ExtrudeOptions& o) {
@@ -344,7 +375,10 @@ NodePtr makeRevolve(const Profile& profile, double degrees) {
     const double reach = std::max(profile.bounds.hi.x, 0.0);  // only u ≥ 0 is turned
     const Bounds3 bound{Vec3(-reach, profile.bounds.lo.y, -reach),
                         Vec3(reach, profile.bounds.hi.y, reach)};
-    return makeImplicit(Tape::compile(g, f), padded(bound));
+    NodePtr implicitForm = makeImplicit(Tape::compile(g, f), padded(bound));
+    if (degrees == 360.0 && profile.plain)
+        if (NodePtr exact = plainRevolution(*profile.plain, implicitForm)) return exact;
+    return implicitForm;
 }
 
 }  // namespace kerf

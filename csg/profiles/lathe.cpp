@@ -1,0 +1,217 @@
+// The lathe: closed-form spans of a polygon in the (r, y) plane turned about the y axis
+// (csg/profiles/lathe.h).
+#include "csg/profiles/lathe.h"
+
+#include "csg/profiles/implicit_backed.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace kerf {
+
+namespace {
+
+/// One edge of the outline in (r, y), both ends at r ≥ 0.
+struct LatheEdge {
+    Vec2 a, b;
+};
+
+/// Where the ray crosses the surface of one segment.
+struct LatheCrossing {
+    double t;
+    Vec3 normal;  ///< unit, either side
+};
+
+/// The loops' edges with the part at r < 0 put on the axis (split where an edge crosses it):
+/// a point at r > 0 is inside the clamped loops exactly when it is inside the given ones (the
+/// even-odd count along +r never reaches r < 0). Edges on the axis turn into nothing.
+std::vector<LatheEdge> clampedEdges(const std::vector<std::vector<Vec2>>& loops) {
+    std::vector<LatheEdge> out;
+    const auto add = [&](Vec2 a, Vec2 b) {
+        a.x = std::max(a.x, 0.0);
+        b.x = std::max(b.x, 0.0);
+        if (a != b && !(a.x == 0.0 && b.x == 0.0)) out.push_back({a, b});
+    };
+    for (const std::vector<Vec2>& loop : loops)
+        for (size_t i = 0; i < loop.size(); ++i) {
+            const Vec2 p = loop[i], q = loop[(i + 1) % loop.size()];
+            if ((p.x < 0.0 && q.x > 0.0) || (p.x > 0.0 && q.x < 0.0)) {
+                const Vec2 m(0.0, p.y + p.x / (p.x - q.x) * (q.y - p.y));
+                add(p, m);
+                add(m, q);
+            } else {
+                add(p, q);
+            }
+        }
+    return out;
+}
+
+/// The roots of a·x² + b·x + c (a ≠ 0 or b ≠ 0), without cancellation; false when none.
+bool latheQuadraticRoots(double a, double b, double c, double& x1, double& x2) {
+    if (a == 0.0) {
+        if (b == 0.0) return false;
+        x1 = x2 = -c / b;
+        return true;
+    }
+    const double disc = b * b - 4.0 * a * c;
+    if (disc < 0.0) return false;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    x1 = q / a;
+    x2 = q != 0.0 ? c / q : x1;
+    return true;
+}
+
+class Lathe final : public ImplicitBackedPrimitive<Lathe> {
+public:
+    Lathe(const std::vector<std::vector<Vec2>>& loops, NodePtr implicitForm)
+        : ImplicitBackedPrimitive(std::move(implicitForm)), mEdges(clampedEdges(loops)) {}
+
+private:
+    friend class ClosedFormPrimitive<Lathe>;
+
+    /// The surface normal at the ray's point p of a segment with profile normal n (in (r, y)).
+    static Vec3 normalAt(const Vec3& p, Vec2 n) {
+        const double radial = std::hypot(p.x, p.z);
+        if (radial > 0.0) return Vec3(n.x * p.x / radial, n.y, n.x * p.z / radial);
+        return Vec3(0.0, n.y >= 0.0 ? 1.0 : -1.0, 0.0);  // on the axis: a cone's apex or a disc
+    }
+
+    static Vec2 profileNormal(const LatheEdge& s) {
+        const Vec2 e = s.b - s.a;
+        return Vec2(e.y, -e.x) / glm::length(e);
+    }
+
+    /// The root in [lo, hi] of F(s) = qa·s² + qb·s + f0, where F is monotone and changes class
+    /// (F > 0) from flo to fhi: the quadratic's root nearest that piece, kept in it.
+    static double rootOnPiece(double qa, double qb, double f0, double lo, double hi, double flo,
+                              double fhi) {
+        double s1, s2;
+        if (!latheQuadraticRoots(qa, qb, f0, s1, s2))  // lost to rounding: the chord's root
+            return lo + flo / (flo - fhi) * (hi - lo);
+        const auto away = [&](double r) { return r < lo ? lo - r : r > hi ? r - hi : 0.0; };
+        return std::clamp(away(s1) <= away(s2) ? s1 : s2, lo, hi);
+    }
+
+    /// The ray's t where it crosses the edge's surface at the edge's parameter s: from the
+    /// height there, polished on the edge's cone r = m + k·dy·t, |o + t·d|² = (m + k·dy·t)².
+    /// At an end the end's own height, so both edges there give one t.
+    static double crossingT(const LatheEdge& seg, double s, Vec2 o, Vec2 d, double oy, double dy) {
+        const Vec2 e = seg.b - seg.a;
+        const double y = s == 0.0 ? seg.a.y : s == 1.0 ? seg.b.y : seg.a.y + s * e.y;
+        const double t = (y - oy) / dy;
+        if (e.y == 0.0 || s == 0.0 || s == 1.0) return t;
+        const double k = e.x / e.y, m = seg.a.x + k * (oy - seg.a.y);
+        double t1, t2;
+        if (!latheQuadraticRoots(glm::dot(d, d) - k * k * dy * dy,
+                                 2.0 * (glm::dot(o, d) - m * k * dy), glm::dot(o, o) - m * m, t1,
+                                 t2))
+            return t;
+        return std::abs(t1 - t) <= std::abs(t2 - t) ? t1 : t2;
+    }
+
+    /// A ray with dy ≠ 0 meets height y once, at radius |o + (y − oy)/dy · d| (o, d: its
+    /// (x, z) parts). F(r, y) = (dy·r)² − |dy·o + (y − oy)·d|² is positive where a point of the
+    /// plane lies beyond the ray's radius at its height; each vertex's class F > 0 is computed
+    /// from its own coordinates alone, so the two edges at a vertex agree and the crossings of
+    /// a loop come in pairs. Along an edge F is a quadratic in the edge's parameter s: split at
+    /// its extremum, each monotone piece crosses once where the classes of its ends differ
+    /// (an edge the ray's curve cuts twice gives both crossings, one it touches none).
+    void crossSloped(const Ray& ray, std::vector<LatheCrossing>& hits) const {
+        const Vec2 o(ray.origin.x, ray.origin.z), d(ray.dir.x, ray.dir.z);
+        const double oy = ray.origin.y, dy = ray.dir.y, dd = glm::dot(d, d);
+        const auto level = [&](Vec2 v) {
+            const Vec2 w = dy * o + (v.y - oy) * d;
+            return dy * v.x * dy * v.x - glm::dot(w, w);
+        };
+        for (const LatheEdge& seg : mEdges) {
+            const double fa = level(seg.a), fb = level(seg.b);
+            const Vec2 e = seg.b - seg.a;
+            const Vec2 wa = dy * o + (seg.a.y - oy) * d;
+            const double qa = dy * dy * e.x * e.x - e.y * e.y * dd,
+                         qb = 2.0 * (dy * dy * seg.a.x * e.x - e.y * glm::dot(wa, d));
+            double cut[3] = {0.0, 1.0, 1.0}, value[3] = {fa, fb, fb};
+            int pieces = 1;
+            const double se = qa != 0.0 ? -qb / (2.0 * qa) : -1.0;
+            if (se > 0.0 && se < 1.0) {
+                cut[1] = se;
+                value[1] = fa + se * (qb + qa * se);
+                pieces = 2;
+            }
+            for (int k = 0; k < pieces; ++k) {
+                const double flo = value[k], fhi = value[k + 1];
+                if ((flo > 0.0) == (fhi > 0.0)) continue;
+                const double s = k == 0 && fa == 0.0 ? 0.0
+                                 : k + 1 == pieces && fb == 0.0
+                                     ? 1.0
+                                     : rootOnPiece(qa, qb, fa, cut[k], cut[k + 1], flo, fhi);
+                const double t = crossingT(seg, s, o, d, oy, dy);
+                hits.push_back({t, normalAt(ray.origin + t * ray.dir, profileNormal(seg))});
+            }
+        }
+    }
+
+    /// A ray with dy = 0 stays at height oy and meets radius ρ twice, at tc ± √(ρ² − ρc²)/|d|
+    /// about its closest approach ρc to the axis: the edges crossing the line y = oy (classes
+    /// y > oy, as the prism's) give the radii.
+    void crossLevel(const Ray& ray, std::vector<LatheCrossing>& hits) const {
+        const Vec2 o(ray.origin.x, ray.origin.z), d(ray.dir.x, ray.dir.z);
+        const double oy = ray.origin.y, dd = glm::dot(d, d);
+        const double tc = -glm::dot(o, d) / dd;
+        const Vec2 closest = o + tc * d;
+        const double rc2 = glm::dot(closest, closest);
+        for (const LatheEdge& seg : mEdges) {
+            if ((seg.a.y > oy) == (seg.b.y > oy)) continue;
+            const double r = seg.a.y == oy   ? seg.a.x
+                             : seg.b.y == oy ? seg.b.x
+                                             : seg.a.x + (oy - seg.a.y) / (seg.b.y - seg.a.y) *
+                                                             (seg.b.x - seg.a.x);
+            const double h2 = r * r - rc2;
+            if (!(h2 > 0.0)) continue;  // missed or touched: both crossings or neither
+            const double h = std::sqrt(h2 / dd);
+            const Vec2 n = profileNormal(seg);
+            for (const double t : {tc - h, tc + h})
+                hits.push_back({t, normalAt(ray.origin + t * ray.dir, n)});
+        }
+    }
+
+    void closedSpans(const Ray& ray, SpanList& out) const {
+        std::vector<LatheCrossing>& hits = mScratch;
+        hits.clear();
+        const double dxz = std::hypot(ray.dir.x, ray.dir.z);
+        // Below 1e-100 of the horizontal part, a slope moves the ray's height by less than
+        // rounding anywhere the ray can reach the solid.
+        if (std::abs(ray.dir.y) <= 1e-100 * dxz)
+            crossLevel(ray, hits);
+        else
+            crossSloped(ray, hits);
+        std::sort(hits.begin(), hits.end(),
+                  [](const LatheCrossing& x, const LatheCrossing& y) { return x.t < y.t; });
+        const auto side = [&](const LatheCrossing& c, bool entering) {
+            return (glm::dot(c.normal, ray.dir) < 0.0) == entering ? c.normal : -c.normal;
+        };
+        // The line starts and ends outside: crossings pair up into inside intervals.
+        for (size_t k = 0; k + 1 < hits.size(); k += 2) {
+            const Boundary leave = boundary(hits[k + 1].t, side(hits[k + 1], false));
+            // Leaving and entering at one t (a vertex touched from outside): one span.
+            if (!out.empty() && out.back().out.t == hits[k].t) {
+                out.back().out = leave;
+                continue;
+            }
+            out.push_back({boundary(hits[k].t, side(hits[k], true)), leave});
+        }
+    }
+
+    std::vector<LatheEdge> mEdges;
+    static thread_local std::vector<LatheCrossing> mScratch;
+};
+
+thread_local std::vector<LatheCrossing> Lathe::mScratch;
+
+}  // namespace
+
+NodePtr makeLathe(const std::vector<std::vector<Vec2>>& loops, NodePtr implicitForm) {
+    return std::make_shared<Lathe>(loops, std::move(implicitForm));
+}
+
+}  // namespace kerf
