@@ -65,14 +65,16 @@ bool latheQuadraticRoots(double a, double b, double c, double& x1, double& x2) {
 class Lathe final : public ImplicitBackedPrimitive<Lathe> {
 public:
     Lathe(const std::vector<std::vector<Vec2>>& loops, NodePtr implicitForm)
-        : ImplicitBackedPrimitive(std::move(implicitForm)), mEdges(clampedEdges(loops)) {}
+        : ImplicitBackedPrimitive(std::move(implicitForm)), mEdges(clampedEdges(loops)) {
+        for (const LatheEdge& e : mEdges) mReach = std::max({mReach, e.a.x, e.b.x});
+    }
 
 private:
     friend class ClosedFormPrimitive<Lathe>;
 
     /// The surface normal at the ray's point p of a segment with profile normal n (in (r, y)).
     static Vec3 normalAt(const Vec3& p, Vec2 n) {
-        const double radial = std::hypot(p.x, p.z);
+        const double radial = std::sqrt(p.x * p.x + p.z * p.z);
         if (radial > 0.0) return Vec3(n.x * p.x / radial, n.y, n.x * p.z / radial);
         return Vec3(0.0, n.y >= 0.0 ? 1.0 : -1.0, 0.0);  // on the axis: a cone's apex or a disc
     }
@@ -124,12 +126,19 @@ private:
             const Vec2 w = dy * o + (v.y - oy) * d;
             return dy * v.x * dy * v.x - glm::dot(w, w);
         };
+        Vec2 last(-1.0);  // the previous edge's end, whose level carries over (r ≥ 0 at ends)
+        double lastLevel = 0.0;
         for (const LatheEdge& seg : mEdges) {
-            const double fa = level(seg.a), fb = level(seg.b);
+            const double fa = seg.a == last ? lastLevel : level(seg.a), fb = level(seg.b);
+            last = seg.b;
+            lastLevel = fb;
             const Vec2 e = seg.b - seg.a;
+            const double qa = dy * dy * e.x * e.x - e.y * e.y * dd;
+            // Ends of one class: the curve crosses only if F's extremum is of the other.
+            const bool above = fa > 0.0;
+            if (above == (fb > 0.0) && !(above ? qa > 0.0 : qa < 0.0)) continue;
             const Vec2 wa = dy * o + (seg.a.y - oy) * d;
-            const double qa = dy * dy * e.x * e.x - e.y * e.y * dd,
-                         qb = 2.0 * (dy * dy * seg.a.x * e.x - e.y * glm::dot(wa, d));
+            const double qb = 2.0 * (dy * dy * seg.a.x * e.x - e.y * glm::dot(wa, d));
             double cut[3] = {0.0, 1.0, 1.0}, value[3] = {fa, fb, fb};
             int pieces = 1;
             const double se = qa != 0.0 ? -qb / (2.0 * qa) : -1.0;
@@ -178,7 +187,13 @@ private:
     void closedSpans(const Ray& ray, SpanList& out) const {
         std::vector<LatheCrossing>& hits = mScratch;
         hits.clear();
-        const double dxz = std::hypot(ray.dir.x, ray.dir.z);
+        const Vec2 o(ray.origin.x, ray.origin.z), d(ray.dir.x, ray.dir.z);
+        const double dd = glm::dot(d, d);
+        // A line that stays farther from the axis than the outline reaches misses (the margin
+        // covers the rounding of its closest approach).
+        const Vec2 closest = dd > 0.0 ? o - (glm::dot(o, d) / dd) * d : o;
+        if (glm::dot(closest, closest) > mReach * mReach * (1.0 + 0x1p-40)) return;
+        const double dxz = std::sqrt(dd);
         // Below 1e-100 of the horizontal part, a slope moves the ray's height by less than
         // rounding anywhere the ray can reach the solid.
         if (std::abs(ray.dir.y) <= 1e-100 * dxz)
@@ -203,6 +218,7 @@ private:
     }
 
     std::vector<LatheEdge> mEdges;
+    double mReach = 0.0;  ///< the largest r of the outline
     static thread_local std::vector<LatheCrossing> mScratch;
 };
 
