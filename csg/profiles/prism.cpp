@@ -44,6 +44,26 @@ Vec2 tangent(const std::array<Vec2, 4>& p, double s) {
     return d != Vec2(0.0) ? d : p[3] - p[0];
 }
 
+/// Whether the segment from a to b meets the closed box grown by `slack` (clipped against its
+/// slabs).
+bool segmentMeetsBox(Vec2 a, Vec2 b, Bounds2 box, double slack) {
+    box = {box.lo - slack, box.hi + slack};
+    double lo = 0.0, hi = 1.0;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double e = b[axis] - a[axis];
+        if (e == 0.0) {
+            if (a[axis] < box.lo[axis] || a[axis] > box.hi[axis]) return false;
+            continue;
+        }
+        double t0 = (box.lo[axis] - a[axis]) / e, t1 = (box.hi[axis] - a[axis]) / e;
+        if (t0 > t1) std::swap(t0, t1);
+        lo = std::max(lo, t0);
+        hi = std::min(hi, t1);
+        if (lo > hi) return false;
+    }
+    return true;
+}
+
 class Prism final : public ImplicitBackedPrimitive<Prism> {
 public:
     Prism(const PathShape& shape, double y0, double y1, NodePtr implicitForm)
@@ -68,7 +88,15 @@ public:
                 }
                 pieces.push_back(piece);
             }
-            if (!pieces.empty()) mLoops.push_back(std::move(pieces));
+            if (pieces.empty()) continue;
+            Bounds2 box{Vec2(kInf), Vec2(-kInf)};
+            for (const BezierPiece& piece : pieces)
+                for (const Vec2& c : piece.p) box = {glm::min(box.lo, c), glm::max(box.hi, c)};
+            // Grown by a hair, so the cull below is conservative under rounding.
+            const Vec2 pad = 0x1p-40 * (box.hi - box.lo) +
+                             0x1p-50 * glm::max(glm::abs(box.lo), glm::abs(box.hi));
+            mLoopBoxes.push_back({box.lo - pad, box.hi + pad});
+            mLoops.push_back(std::move(pieces));
         }
     }
 
@@ -176,8 +204,17 @@ private:
         std::vector<Crossing>& hits = mScratch;
         hits.clear();
         const double dd = glm::dot(d, d);
-        for (const auto& loop : mLoops)
-            for (const BezierPiece& piece : loop) crossSegment(piece, o, d, dd, hits);
+        // A loop whose box the ray's shadow within the slab misses neither holds a point of it
+        // nor crosses it there: its crossings (an even number) change nothing in the slab.
+        const Vec2 from = o + ta * d, to = o + tb * d;
+        const bool finite = std::isfinite(ta) && std::isfinite(tb);
+        // The ends' rounding: a few ulps of the largest coordinate that went into them.
+        const double slack = 0x1p-44 * (std::max(std::abs(o.x), std::abs(o.y)) +
+                                        std::max(std::abs(d.x), std::abs(d.y)) *
+                                            std::max(std::abs(ta), std::abs(tb)));
+        for (size_t i = 0; i < mLoops.size(); ++i)
+            if (!finite || segmentMeetsBox(from, to, mLoopBoxes[i], slack))
+                for (const BezierPiece& piece : mLoops[i]) crossSegment(piece, o, d, dd, hits);
         std::sort(hits.begin(), hits.end(),
                   [](const Crossing& x, const Crossing& y) { return x.t < y.t; });
         // The line starts and ends outside: crossings pair up into inside intervals.
@@ -203,6 +240,7 @@ private:
     }
 
     std::vector<std::vector<BezierPiece>> mLoops;
+    std::vector<Bounds2> mLoopBoxes;  ///< each loop's control points' box
     double mY0, mY1;
     static thread_local std::vector<Crossing> mScratch;
 };
