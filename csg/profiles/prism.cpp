@@ -64,6 +64,28 @@ bool segmentMeetsBox(Vec2 a, Vec2 b, Bounds2 box, double slack) {
     return true;
 }
 
+/// The root in [lo, hi] of the cubic Bézier g, monotone there with g(lo) = glo and g(hi) = ghi
+/// of two classes (≤ 0, > 0); g' = 3·(qa·s² + qb·s + qc). Newton's steps from the chord's
+/// root, kept in the bracket (bisecting when a step leaves it), end in a few steps at a root
+/// to rounding, where bisection alone takes fifty.
+double monotoneRoot(const std::array<double, 4>& g, double qa, double qb, double qc, double lo,
+                    double hi, double glo, double ghi) {
+    const bool clo = glo <= 0.0;
+    double s = lo + glo / (glo - ghi) * (hi - lo);
+    for (int it = 0; it < 100; ++it) {
+        if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
+        const double gs = bezier1(g, s);
+        ((gs <= 0.0) == clo ? lo : hi) = s;
+        const double slope = 3.0 * (s * (qa * s + qb) + qc);
+        const double next = slope != 0.0 ? s - gs / slope : 0.5 * (lo + hi);
+        if (gs == 0.0 || std::abs(next - s) <= 0x1p-52 * std::max(1.0, std::abs(s)) ||
+            hi - lo <= 0x1p-52)
+            return std::clamp(next, lo, hi);
+        s = next;
+    }
+    return hi;
+}
+
 class Prism final : public ImplicitBackedPrimitive<Prism> {
 public:
     Prism(const PathShape& shape, double y0, double y1, NodePtr implicitForm)
@@ -161,13 +183,8 @@ private:
                 add(piece.p[0], tangent(piece.p, 0.0));
                 continue;
             }
-            double lo = lo0, hi = hi0;
-            for (int it = 0; it < 200 && hi - lo > 0.0; ++it) {
-                const double mid = 0.5 * (lo + hi);
-                if (mid <= lo || mid >= hi) break;
-                ((bezier1(g, mid) <= 0.0) == clo ? lo : hi) = mid;
-            }
-            add(bezier2(piece.p, hi), tangent(piece.p, hi));
+            const double s = monotoneRoot(g, qa, qb, qc, lo0, hi0, glo, ghi);
+            add(bezier2(piece.p, s), tangent(piece.p, s));
         }
     }
 
