@@ -162,3 +162,41 @@ TEST_CASE("prism: an outline of Béziers (a glyph, a path) has the implicit's sp
         requireSameSpans(exact.spans, traced(implicit, ray).spans, ray);
     }
 }
+
+TEST_CASE("prism: skipping the loops the ray's shadow misses in the slab changes no span") {
+    // Nine squares with square holes, one inside another's hole: a ray meets a few of them
+    // within the slab, and starts inside others' boxes (far-away origins: the cull's slack).
+    std::vector<Vec2> outline;
+    std::vector<std::vector<Vec2>> holes;
+    PathShape shape;
+    const auto square = [&](Vec2 c, double h) {
+        PathLoop loop;
+        const Vec2 corner[4] = {c + Vec2(-h, -h), c + Vec2(h, -h), c + Vec2(h, h), c + Vec2(-h, h)};
+        for (int k = 0; k < 4; ++k) {
+            PathSegment s;
+            s.p = {corner[k], corner[(k + 1) % 4], Vec2(0), Vec2(0)};
+            loop.segments.push_back(s);
+        }
+        shape.loops.push_back(loop);
+    };
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            square(Vec2(3.0 * i, 3.0 * j), 1.2);
+            square(Vec2(3.0 * i, 3.0 * j), 0.7);
+        }
+    square(Vec2(3.0, 3.0), 0.3);
+    ExtrudeOptions o;
+    o.height = 0.5;
+    const NodePtr prism = makeExtrude(profilePath(shape), o);
+    const NodePtr implicit = implicitOf(prism);
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3 target(3 + 4 * unit(rng), 0.25 + 0.4 * unit(rng), 3 + 4 * unit(rng));
+        const double far = i % 2 ? 10.0 : 1e5;
+        Ray ray;
+        ray.origin = target + far * glm::normalize(Vec3(unit(rng), unit(rng), unit(rng)));
+        ray.dir = glm::normalize(target - ray.origin);
+        requireSameSpans(traced(prism, ray).spans, traced(implicit, ray).spans, ray, false);
+    }
+}
