@@ -2,6 +2,7 @@
 // (csg/profiles/lathe.h).
 #include "csg/profiles/lathe.h"
 
+#include "csg/profiles/bernstein.h"
 #include "csg/profiles/implicit_backed.h"
 
 #include <algorithm>
@@ -23,28 +24,57 @@ struct LatheCrossing {
     Vec3 normal;  ///< unit, either side
 };
 
-/// The loops' edges with the part at r < 0 put on the axis (split where an edge crosses it):
-/// a point at r > 0 is inside the clamped loops exactly when it is inside the given ones (the
-/// even-odd count along +r never reaches r < 0). Edges on the axis turn into nothing.
-std::vector<LatheEdge> clampedEdges(const std::vector<std::vector<Vec2>>& loops) {
+/// A Bézier of the outline: control points p[0 … degree] at r ≥ 0.
+struct LatheCurve {
+    std::array<Vec2, 4> p;
+    int degree;
+};
+
+/// The lines with the part at r < 0 put on the axis (split where a line crosses it): a point
+/// at r > 0 is inside the clamped loops exactly when it is inside the given ones (the even-odd
+/// count along +r never reaches r < 0). Lines on the axis turn into nothing.
+std::vector<LatheEdge> clampedEdges(const std::vector<LatheSegment>& segments) {
     std::vector<LatheEdge> out;
     const auto add = [&](Vec2 a, Vec2 b) {
         a.x = std::max(a.x, 0.0);
         b.x = std::max(b.x, 0.0);
         if (a != b && !(a.x == 0.0 && b.x == 0.0)) out.push_back({a, b});
     };
-    for (const std::vector<Vec2>& loop : loops)
-        for (size_t i = 0; i < loop.size(); ++i) {
-            const Vec2 p = loop[i], q = loop[(i + 1) % loop.size()];
-            if ((p.x < 0.0 && q.x > 0.0) || (p.x > 0.0 && q.x < 0.0)) {
-                const Vec2 m(0.0, p.y + p.x / (p.x - q.x) * (q.y - p.y));
-                add(p, m);
-                add(m, q);
-            } else {
-                add(p, q);
-            }
+    for (const LatheSegment& segment : segments) {
+        if (segment.degree != 1) continue;
+        const Vec2 p = segment.p[0], q = segment.p[1];
+        if ((p.x < 0.0 && q.x > 0.0) || (p.x > 0.0 && q.x < 0.0)) {
+            const Vec2 m(0.0, p.y + p.x / (p.x - q.x) * (q.y - p.y));
+            add(p, m);
+            add(m, q);
+        } else {
+            add(p, q);
         }
+    }
     return out;
+}
+
+/// A Bézier's point and tangent at s (de Casteljau; the chord where the tangent vanishes).
+Vec2 curvePoint(const LatheCurve& c, double s, Vec2* tangent) {
+    std::array<Vec2, 4> b = c.p;
+    for (int r = 1; r <= c.degree; ++r) {
+        if (r == c.degree && tangent) *tangent = b[1] - b[0];
+        for (int i = 0; i + r <= c.degree; ++i) b[i] += s * (b[i + 1] - b[i]);
+    }
+    if (tangent && *tangent == Vec2(0.0)) *tangent = c.p[c.degree] - c.p[0];
+    return b[0];
+}
+
+/// Binomial coefficients up to 6.
+double choose(int n, int k) {
+    static constexpr double row[7][7] = {{1},
+                                         {1, 1},
+                                         {1, 2, 1},
+                                         {1, 3, 3, 1},
+                                         {1, 4, 6, 4, 1},
+                                         {1, 5, 10, 10, 5, 1},
+                                         {1, 6, 15, 20, 15, 6, 1}};
+    return row[n][k];
 }
 
 /// The roots of a·x² + b·x + c (a ≠ 0 or b ≠ 0), without cancellation; false when none.
@@ -64,9 +94,14 @@ bool latheQuadraticRoots(double a, double b, double c, double& x1, double& x2) {
 
 class Lathe final : public ImplicitBackedPrimitive<Lathe> {
 public:
-    Lathe(const std::vector<std::vector<Vec2>>& loops, NodePtr implicitForm)
-        : ImplicitBackedPrimitive(std::move(implicitForm)), mEdges(clampedEdges(loops)) {
+    Lathe(const std::vector<LatheSegment>& segments, NodePtr implicitForm)
+        : ImplicitBackedPrimitive(std::move(implicitForm)), mEdges(clampedEdges(segments)) {
         for (const LatheEdge& e : mEdges) mReach = std::max({mReach, e.a.x, e.b.x});
+        for (const LatheSegment& segment : segments) {
+            if (segment.degree == 1) continue;
+            mCurves.push_back({segment.p, segment.degree});
+            for (int i = 0; i <= segment.degree; ++i) mReach = std::max(mReach, segment.p[i].x);
+        }
     }
 
 private:
@@ -82,6 +117,71 @@ private:
     static Vec2 profileNormal(const LatheEdge& s) {
         const Vec2 e = s.b - s.a;
         return Vec2(e.y, -e.x) / glm::length(e);
+    }
+
+    /// F(v) of crossSloped: the class of a vertex, computed from its coordinates alone.
+    static double levelAt(Vec2 v, Vec2 o, Vec2 d, double oy, double dy) {
+        const Vec2 w = dy * o + (v.y - oy) * d;
+        return dy * v.x * dy * v.x - glm::dot(w, w);
+    }
+
+    /// The crossings with the Béziers of a ray with dy ≠ 0: F along a Bézier of degree n is
+    /// dy²·r(s)² − |w(s)|² with w = dy·o + (y − oy)·d, a polynomial of degree 2n whose
+    /// Bernstein coefficients are the products' (its end values the vertices' own levels).
+    void crossCurvesSloped(const Ray& ray, std::vector<LatheCrossing>& hits) const {
+        const Vec2 o(ray.origin.x, ray.origin.z), d(ray.dir.x, ray.dir.z);
+        const double oy = ray.origin.y, dy = ray.dir.y;
+        std::vector<double>& roots = mRoots;
+        for (const LatheCurve& c : mCurves) {
+            const int n = c.degree;
+            std::array<Vec2, 4> w;
+            for (int i = 0; i <= n; ++i) w[i] = dy * o + (c.p[i].y - oy) * d;
+            BernsteinCoefficients f{};
+            for (int i = 0; i <= n; ++i)
+                for (int j = 0; j <= n; ++j)
+                    f[i + j] += choose(n, i) * choose(n, j) / choose(2 * n, i + j) *
+                                (dy * c.p[i].x * dy * c.p[j].x - glm::dot(w[i], w[j]));
+            f[0] = levelAt(c.p[0], o, d, oy, dy);
+            f[2 * n] = levelAt(c.p[n], o, d, oy, dy);
+            roots.clear();
+            bernsteinClassChanges(f, 2 * n, roots);
+            for (const double s : roots) {
+                Vec2 tangent;
+                const Vec2 q = s == 0.0 ? c.p[0] : s == 1.0 ? c.p[n] : curvePoint(c, s, &tangent);
+                if (s == 0.0 || s == 1.0) curvePoint(c, s, &tangent);
+                const double t = (q.y - oy) / dy;
+                hits.push_back({t, normalAt(ray.origin + t * ray.dir,
+                                            Vec2(tangent.y, -tangent.x) / glm::length(tangent))});
+            }
+        }
+    }
+
+    /// The crossings with the Béziers of a level ray (crossLevel): where y(s) − oy changes
+    /// class, at radius r(s).
+    void crossCurvesLevel(const Ray& ray, std::vector<LatheCrossing>& hits) const {
+        const Vec2 o(ray.origin.x, ray.origin.z), d(ray.dir.x, ray.dir.z);
+        const double oy = ray.origin.y, dd = glm::dot(d, d);
+        const double tc = -glm::dot(o, d) / dd;
+        const Vec2 closest = o + tc * d;
+        const double rc2 = glm::dot(closest, closest);
+        std::vector<double>& roots = mRoots;
+        for (const LatheCurve& c : mCurves) {
+            BernsteinCoefficients g{};
+            for (int i = 0; i <= c.degree; ++i) g[i] = c.p[i].y - oy;
+            roots.clear();
+            bernsteinClassChanges(g, c.degree, roots);
+            for (const double s : roots) {
+                Vec2 tangent;
+                const Vec2 q = curvePoint(c, s, &tangent);
+                const double r = s == 0.0 ? c.p[0].x : s == 1.0 ? c.p[c.degree].x : q.x;
+                const double h2 = r * r - rc2;
+                if (!(h2 > 0.0)) continue;
+                const double h = std::sqrt(h2 / dd);
+                const Vec2 n = Vec2(tangent.y, -tangent.x) / glm::length(tangent);
+                for (const double t : {tc - h, tc + h})
+                    hits.push_back({t, normalAt(ray.origin + t * ray.dir, n)});
+            }
+        }
     }
 
     /// The root in [lo, hi] of F(s) = qa·s² + qb·s + f0, where F is monotone and changes class
@@ -122,10 +222,7 @@ private:
     void crossSloped(const Ray& ray, std::vector<LatheCrossing>& hits) const {
         const Vec2 o(ray.origin.x, ray.origin.z), d(ray.dir.x, ray.dir.z);
         const double oy = ray.origin.y, dy = ray.dir.y, dd = glm::dot(d, d);
-        const auto level = [&](Vec2 v) {
-            const Vec2 w = dy * o + (v.y - oy) * d;
-            return dy * v.x * dy * v.x - glm::dot(w, w);
-        };
+        const auto level = [&](Vec2 v) { return levelAt(v, o, d, oy, dy); };
         Vec2 last(-1.0);  // the previous edge's end, whose level carries over (r ≥ 0 at ends)
         double lastLevel = 0.0;
         for (const LatheEdge& seg : mEdges) {
@@ -197,9 +294,9 @@ private:
         // Below 1e-100 of the horizontal part, a slope moves the ray's height by less than
         // rounding anywhere the ray can reach the solid.
         if (std::abs(ray.dir.y) <= 1e-100 * dxz)
-            crossLevel(ray, hits);
+            crossLevel(ray, hits), crossCurvesLevel(ray, hits);
         else
-            crossSloped(ray, hits);
+            crossSloped(ray, hits), crossCurvesSloped(ray, hits);
         std::sort(hits.begin(), hits.end(),
                   [](const LatheCrossing& x, const LatheCrossing& y) { return x.t < y.t; });
         const auto side = [&](const LatheCrossing& c, bool entering) {
@@ -218,16 +315,19 @@ private:
     }
 
     std::vector<LatheEdge> mEdges;
+    std::vector<LatheCurve> mCurves;
     double mReach = 0.0;  ///< the largest r of the outline
     static thread_local std::vector<LatheCrossing> mScratch;
+    static thread_local std::vector<double> mRoots;
 };
 
 thread_local std::vector<LatheCrossing> Lathe::mScratch;
+thread_local std::vector<double> Lathe::mRoots;
 
 }  // namespace
 
-NodePtr makeLathe(const std::vector<std::vector<Vec2>>& loops, NodePtr implicitForm) {
-    return std::make_shared<Lathe>(loops, std::move(implicitForm));
+NodePtr makeLathe(const std::vector<LatheSegment>& segments, NodePtr implicitForm) {
+    return std::make_shared<Lathe>(segments, std::move(implicitForm));
 }
 
 }  // namespace kerf

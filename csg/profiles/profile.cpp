@@ -270,29 +270,36 @@ NodePtr plainExtrusion(const PlainOutline& plain, double y0, double y1,
 }
 
 /// A full turn of a plain outline as a closed-form solid, or null: a circle clear of the axis
-/// is a torus, a rectangle or polygon a lathe. Béziers and arcs stay implicit (not yet solved
-/// along the ray in closed form).
+/// is a torus, a rectangle or a path of lines and Béziers a lathe. Arcs, and Béziers reaching
+/// across the axis, stay implicit.
 NodePtr plainRevolution(const PlainOutline& plain, const NodePtr& implicitForm) {
     switch (plain.kind) {
         case PlainOutline::Kind::Circle:
             if (!(plain.a.x > plain.radius)) return nullptr;
             return makeTransform(makeTorus(plain.a.x, plain.radius),
                                  Affine::translate(Vec3(0.0, plain.a.y, 0.0)));
-        case PlainOutline::Kind::Rect:
-            return makeLathe(
-                {{plain.a, Vec2(plain.b.x, plain.a.y), plain.b, Vec2(plain.a.x, plain.b.y)}},
-                implicitForm);
+        case PlainOutline::Kind::Rect: {
+            const Vec2 c[4] = {plain.a, Vec2(plain.b.x, plain.a.y), plain.b,
+                               Vec2(plain.a.x, plain.b.y)};
+            std::vector<LatheSegment> sides;
+            for (int k = 0; k < 4; ++k) sides.push_back({{c[k], c[(k + 1) % 4]}, 1});
+            return makeLathe(sides, implicitForm);
+        }
         case PlainOutline::Kind::Path: {
-            std::vector<std::vector<Vec2>> loops;
-            for (const PathLoop& loop : plain.path.loops) {
-                std::vector<Vec2> points;
+            std::vector<LatheSegment> segments;
+            for (const PathLoop& loop : plain.path.loops)
                 for (const PathSegment& s : loop.segments) {
-                    if (s.kind != PathSegment::Kind::Line) return nullptr;
-                    points.push_back(s.start());
+                    const int degree = s.kind == PathSegment::Kind::Line        ? 1
+                                       : s.kind == PathSegment::Kind::Quadratic ? 2
+                                       : s.kind == PathSegment::Kind::Cubic     ? 3
+                                                                                : 0;
+                    if (degree == 0) return nullptr;  // an arc
+                    // A Bézier reaching r < 0 is not clipped at the axis: implicit.
+                    for (int i = 0; degree > 1 && i <= degree; ++i)
+                        if (s.p[i].x < 0.0) return nullptr;
+                    segments.push_back({s.p, degree});
                 }
-                if (!points.empty()) loops.push_back(std::move(points));
-            }
-            return makeLathe(loops, implicitForm);
+            return makeLathe(segments, implicitForm);
         }
         case PlainOutline::Kind::None: break;
     }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <catch2/catch.hpp>
+#include <iomanip>
 #include <string>
 #include <variant>
 #include <vector>
@@ -37,8 +38,9 @@ inline NodePtr implicitOf(const NodePtr& node) {
 /// any side; the closed form's must still face out: against the ray entering, along leaving).
 inline void requireSameSpans(const SpanList& exact, const SpanList& isolated, const Ray& ray,
                              bool normals = true) {
-    INFO("ray o=(" << ray.origin.x << "," << ray.origin.y << "," << ray.origin.z << ") d=("
-                   << ray.dir.x << "," << ray.dir.y << "," << ray.dir.z << ")");
+    INFO(std::setprecision(17) << "ray o=(" << ray.origin.x << "," << ray.origin.y << ","
+                               << ray.origin.z << ") d=(" << ray.dir.x << "," << ray.dir.y << ","
+                               << ray.dir.z << ")");
     // Spans and gaps thinner than the isolation's tolerance (a ray through or within rounding
     // of a vertex) may be kept by one and not the other: drop such spans, close such gaps.
     const auto normalised = [](const SpanList& in) {

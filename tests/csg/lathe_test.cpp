@@ -86,6 +86,32 @@ TEST_CASE("lathe: a polygon's full turn has the implicit's spans, without root i
     }
 }
 
+TEST_CASE("lathe: a path of lines and Béziers turned has the implicit's spans") {
+    // A goblet's outline (as models/profiles.kerf draws it, without its arc): a foot, a stem,
+    // a cubic bowl, a quadratic lip, back down the inside by a cubic to the axis.
+    PathShape shape;
+    PathLoop loop;
+    const auto add = [&](PathSegment::Kind kind, std::array<Vec2, 4> p) {
+        PathSegment s;
+        s.kind = kind;
+        s.p = p;
+        loop.segments.push_back(s);
+    };
+    using K = PathSegment::Kind;
+    add(K::Line, {Vec2(0, 0), Vec2(0.5, 0)});
+    add(K::Quadratic, {Vec2(0.5, 0), Vec2(0.5, 0.08), Vec2(0.1, 0.1)});
+    add(K::Line, {Vec2(0.1, 0.1), Vec2(0.08, 0.7)});
+    add(K::Cubic, {Vec2(0.08, 0.7), Vec2(0.6, 0.75), Vec2(0.6, 1.2), Vec2(0.55, 1.4)});
+    add(K::Quadratic, {Vec2(0.55, 1.4), Vec2(0.525, 1.45), Vec2(0.5, 1.4)});
+    add(K::Cubic, {Vec2(0.5, 1.4), Vec2(0.5, 1.2), Vec2(0.5, 0.85), Vec2(0, 0.82)});
+    add(K::Line, {Vec2(0, 0.82), Vec2(0, 0)});
+    shape.loops.push_back(loop);
+    const NodePtr goblet = makeRevolve(profilePath(shape));
+    requireLikeImplicit(
+        goblet, {{0, 0}, {0.5, 0}, {0.1, 0.1}, {0.08, 0.7}, {0.55, 1.4}, {0.5, 1.4}, {0, 0.82}},
+        0.6, 0.0, 1.45, 29);
+}
+
 TEST_CASE("lathe: hard rays against hand-solved spans, at scales 1e-6 to 1e6") {
     for (const double scale : {1e-6, 1.0, 1e6}) {
         INFO("scale " << scale);
@@ -160,7 +186,7 @@ TEST_CASE("lathe: hard rays against hand-solved spans, at scales 1e-6 to 1e6") {
     }
 }
 
-TEST_CASE("lathe: circles clear of the axis are tori; Béziers and part turns stay implicit") {
+TEST_CASE("lathe: circles clear of the axis are tori; arcs and part turns stay implicit") {
     const NodePtr torus = makeRevolve(profileCircle({3, 0.5}, 1));
     REQUIRE(torus->kind() == NodeKind::Transform);
     const Traced r = traced(torus, {Vec3(-5, 0.5, 0), Vec3(1, 0, 0)});
