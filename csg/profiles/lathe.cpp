@@ -16,6 +16,7 @@ namespace {
 /// One edge of the outline in (r, y), both ends at r ≥ 0.
 struct LatheEdge {
     Vec2 a, b;
+    Vec2 normal;  ///< in (r, y), unit, either side: fixed per edge, so made once
 };
 
 /// Where the ray crosses the surface of one segment.
@@ -38,7 +39,8 @@ std::vector<LatheEdge> clampedEdges(const std::vector<LatheSegment>& segments) {
     const auto add = [&](Vec2 a, Vec2 b) {
         a.x = std::max(a.x, 0.0);
         b.x = std::max(b.x, 0.0);
-        if (a != b && !(a.x == 0.0 && b.x == 0.0)) out.push_back({a, b});
+        if (a != b && !(a.x == 0.0 && b.x == 0.0))
+            out.push_back({a, b, Vec2(b.y - a.y, a.x - b.x) / glm::length(b - a)});
     };
     for (const LatheSegment& segment : segments) {
         if (segment.degree != 1) continue;
@@ -112,11 +114,6 @@ private:
         const double radial = std::sqrt(p.x * p.x + p.z * p.z);
         if (radial > 0.0) return Vec3(n.x * p.x / radial, n.y, n.x * p.z / radial);
         return Vec3(0.0, n.y >= 0.0 ? 1.0 : -1.0, 0.0);  // on the axis: a cone's apex or a disc
-    }
-
-    static Vec2 profileNormal(const LatheEdge& s) {
-        const Vec2 e = s.b - s.a;
-        return Vec2(e.y, -e.x) / glm::length(e);
     }
 
     /// F(v) of crossSloped: the class of a vertex, computed from its coordinates alone.
@@ -252,7 +249,7 @@ private:
                                      ? 1.0
                                      : rootOnPiece(qa, qb, fa, cut[k], cut[k + 1], flo, fhi);
                 const double t = crossingT(seg, s, o, d, oy, dy);
-                hits.push_back({t, normalAt(ray.origin + t * ray.dir, profileNormal(seg))});
+                hits.push_back({t, normalAt(ray.origin + t * ray.dir, seg.normal)});
             }
         }
     }
@@ -275,7 +272,7 @@ private:
             const double h2 = r * r - rc2;
             if (!(h2 > 0.0)) continue;  // missed or touched: both crossings or neither
             const double h = std::sqrt(h2 / dd);
-            const Vec2 n = profileNormal(seg);
+            const Vec2 n = seg.normal;
             for (const double t : {tc - h, tc + h})
                 hits.push_back({t, normalAt(ray.origin + t * ray.dir, n)});
         }
