@@ -209,6 +209,20 @@ private:
         return std::abs(t1 - t) <= std::abs(t2 - t) ? t1 : t2;
     }
 
+    /// The ray's crossings with the cone of a sloped edge, r = m + k·dy·t:
+    /// |o + t·d|² = (m + k·dy·t)², with the edge parameter s of each; false when none.
+    static bool coneRoots(const LatheEdge& seg, Vec2 o, Vec2 d, double oy, double dy, double t[2],
+                          double s[2]) {
+        const Vec2 e = seg.b - seg.a;
+        const double k = e.x / e.y, m = seg.a.x + k * (oy - seg.a.y);
+        if (!latheQuadraticRoots(glm::dot(d, d) - k * k * dy * dy,
+                                 2.0 * (glm::dot(o, d) - m * k * dy), glm::dot(o, o) - m * m, t[0],
+                                 t[1]))
+            return false;
+        for (int i = 0; i < 2; ++i) s[i] = (oy + t[i] * dy - seg.a.y) / e.y;
+        return true;
+    }
+
     /// A ray with dy ≠ 0 meets height y once, at radius |o + (y − oy)/dy · d| (o, d: its
     /// (x, z) parts). F(r, y) = (dy·r)² − |dy·o + (y − oy)·d|² is positive where a point of the
     /// plane lies beyond the ray's radius at its height; each vertex's class F > 0 is computed
@@ -241,14 +255,29 @@ private:
                 value[1] = fa + se * (qb + qa * se);
                 pieces = 2;
             }
+            // The cone's roots, once for both pieces: each is the root of F at its own s.
+            double coneT[2], coneS[2];
+            bool cone = false, coneSolved = false;
             for (int k = 0; k < pieces; ++k) {
                 const double flo = value[k], fhi = value[k + 1];
                 if ((flo > 0.0) == (fhi > 0.0)) continue;
-                const double s = k == 0 && fa == 0.0 ? 0.0
-                                 : k + 1 == pieces && fb == 0.0
-                                     ? 1.0
-                                     : rootOnPiece(qa, qb, fa, cut[k], cut[k + 1], flo, fhi);
-                const double t = crossingT(seg, s, o, d, oy, dy);
+                double t;
+                if (e.y == 0.0) {  // an annulus: one height
+                    t = (seg.a.y - oy) / dy;
+                } else if ((k == 0 && fa == 0.0) || (k + 1 == pieces && fb == 0.0)) {
+                    t = ((k == 0 && fa == 0.0 ? seg.a.y : seg.b.y) - oy) / dy;
+                } else {
+                    if (!coneSolved) {
+                        cone = coneRoots(seg, o, d, oy, dy, coneT, coneS);
+                        coneSolved = true;
+                    }
+                    const auto away = [&](double r) {
+                        return r < cut[k] ? cut[k] - r : r > cut[k + 1] ? r - cut[k + 1] : 0.0;
+                    };
+                    t = cone ? coneT[away(coneS[0]) <= away(coneS[1]) ? 0 : 1]
+                             : crossingT(seg, rootOnPiece(qa, qb, fa, cut[k], cut[k + 1], flo, fhi),
+                                         o, d, oy, dy);
+                }
                 hits.push_back({t, normalAt(ray.origin + t * ray.dir, seg.normal)});
             }
         }
