@@ -29,6 +29,7 @@ struct LatheCrossing {
 struct LatheCurve {
     std::array<Vec2, 4> p;
     int degree;
+    Vec2 lo, hi;  ///< the control points' box (holds the curve)
 };
 
 /// The lines with the part at r < 0 put on the axis (split where a line crosses it): a point
@@ -101,7 +102,12 @@ public:
         for (const LatheEdge& e : mEdges) mReach = std::max({mReach, e.a.x, e.b.x});
         for (const LatheSegment& segment : segments) {
             if (segment.degree == 1) continue;
-            mCurves.push_back({segment.p, segment.degree});
+            Vec2 lo = segment.p[0], hi = segment.p[0];
+            for (int i = 1; i <= segment.degree; ++i) {
+                lo = glm::min(lo, segment.p[i]);
+                hi = glm::max(hi, segment.p[i]);
+            }
+            mCurves.push_back({segment.p, segment.degree, lo, hi});
             for (int i = 0; i <= segment.degree; ++i) mReach = std::max(mReach, segment.p[i].x);
         }
     }
@@ -122,6 +128,27 @@ private:
         return dy * v.x * dy * v.x - glm::dot(w, w);
     }
 
+    /// Whether a ray with dy ≠ 0 stays clear of a Bézier's hull, beyond it or within it at
+    /// every height the hull spans, with both ends' classes saying the same: then F keeps one
+    /// class along the curve and it has no crossing. The ray's scaled squared radius
+    /// G(y) = |dy·o + (y − oy)·d|² is convex in y: its least value on the hull's heights is at
+    /// the clamped vertex, its greatest at an end. The margins cover rounding.
+    static bool curveClear(const LatheCurve& c, Vec2 o, Vec2 d, double oy, double dy) {
+        const double fa = levelAt(c.p[0], o, d, oy, dy), fb = levelAt(c.p[c.degree], o, d, oy, dy);
+        if ((fa > 0.0) != (fb > 0.0)) return false;
+        const auto g = [&](double y) {
+            const Vec2 w = dy * o + (y - oy) * d;
+            return glm::dot(w, w);
+        };
+        const double dd = glm::dot(d, d);
+        const double r2 = dy * dy;
+        if (fa > 0.0)  // beyond the ray's radius at both ends: clear if the ray stays inside
+            return std::max(g(c.lo.y), g(c.hi.y)) < r2 * c.lo.x * c.lo.x * (1.0 - 0x1p-40);
+        const double vertex =
+            dd > 0.0 ? std::clamp(oy - dy * glm::dot(o, d) / dd, c.lo.y, c.hi.y) : c.lo.y;
+        return g(vertex) > r2 * c.hi.x * c.hi.x * (1.0 + 0x1p-40);
+    }
+
     /// The crossings with the Béziers of a ray with dy ≠ 0: F along a Bézier of degree n is
     /// dy²·r(s)² − |w(s)|² with w = dy·o + (y − oy)·d, a polynomial of degree 2n whose
     /// Bernstein coefficients are the products' (its end values the vertices' own levels).
@@ -130,6 +157,7 @@ private:
         const double oy = ray.origin.y, dy = ray.dir.y;
         std::vector<double>& roots = mRoots;
         for (const LatheCurve& c : mCurves) {
+            if (curveClear(c, o, d, oy, dy)) continue;
             const int n = c.degree;
             std::array<Vec2, 4> w;
             for (int i = 0; i <= n; ++i) w[i] = dy * o + (c.p[i].y - oy) * d;
