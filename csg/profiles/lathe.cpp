@@ -68,6 +68,9 @@ Vec2 curvePoint(const LatheCurve& c, double s, Vec2* tangent) {
     return b[0];
 }
 
+/// How far r lies outside [lo, hi] (0 inside).
+double outside(double r, double lo, double hi) { return r < lo ? lo - r : r > hi ? r - hi : 0.0; }
+
 /// Binomial coefficients up to 6.
 double choose(int n, int k) {
     static constexpr double row[7][7] = {{1},
@@ -181,34 +184,6 @@ private:
         }
     }
 
-    /// The crossings with the Béziers of a level ray (crossLevel): where y(s) − oy changes
-    /// class, at radius r(s).
-    void crossCurvesLevel(const Ray& ray, std::vector<LatheCrossing>& hits) const {
-        const Vec2 o(ray.origin.x, ray.origin.z), d(ray.dir.x, ray.dir.z);
-        const double oy = ray.origin.y, dd = glm::dot(d, d);
-        const double tc = -glm::dot(o, d) / dd;
-        const Vec2 closest = o + tc * d;
-        const double rc2 = glm::dot(closest, closest);
-        std::vector<double>& roots = mRoots;
-        for (const LatheCurve& c : mCurves) {
-            BernsteinCoefficients g{};
-            for (int i = 0; i <= c.degree; ++i) g[i] = c.p[i].y - oy;
-            roots.clear();
-            bernsteinClassChanges(g, c.degree, roots);
-            for (const double s : roots) {
-                Vec2 tangent;
-                const Vec2 q = curvePoint(c, s, &tangent);
-                const double r = s == 0.0 ? c.p[0].x : s == 1.0 ? c.p[c.degree].x : q.x;
-                const double h2 = r * r - rc2;
-                if (!(h2 > 0.0)) continue;
-                const double h = std::sqrt(h2 / dd);
-                const Vec2 n = Vec2(tangent.y, -tangent.x) / glm::length(tangent);
-                for (const double t : {tc - h, tc + h})
-                    hits.push_back({t, normalAt(ray.origin + t * ray.dir, n)});
-            }
-        }
-    }
-
     /// The root in [lo, hi] of F(s) = qa·s² + qb·s + f0, where F is monotone and changes class
     /// (F > 0) from flo to fhi: the quadratic's root nearest that piece, kept in it.
     static double rootOnPiece(double qa, double qb, double f0, double lo, double hi, double flo,
@@ -216,25 +191,16 @@ private:
         double s1, s2;
         if (!latheQuadraticRoots(qa, qb, f0, s1, s2))  // lost to rounding: the chord's root
             return lo + flo / (flo - fhi) * (hi - lo);
-        const auto away = [&](double r) { return r < lo ? lo - r : r > hi ? r - hi : 0.0; };
-        return std::clamp(away(s1) <= away(s2) ? s1 : s2, lo, hi);
+        return std::clamp(outside(s1, lo, hi) <= outside(s2, lo, hi) ? s1 : s2, lo, hi);
     }
 
-    /// The ray's t where it crosses the edge's surface at the edge's parameter s: from the
-    /// height there, polished on the edge's cone r = m + k·dy·t, |o + t·d|² = (m + k·dy·t)².
-    /// At an end the end's own height, so both edges there give one t.
-    static double crossingT(const LatheEdge& seg, double s, Vec2 o, Vec2 d, double oy, double dy) {
-        const Vec2 e = seg.b - seg.a;
-        const double y = s == 0.0 ? seg.a.y : s == 1.0 ? seg.b.y : seg.a.y + s * e.y;
-        const double t = (y - oy) / dy;
-        if (e.y == 0.0 || s == 0.0 || s == 1.0) return t;
-        const double k = e.x / e.y, m = seg.a.x + k * (oy - seg.a.y);
-        double t1, t2;
-        if (!latheQuadraticRoots(glm::dot(d, d) - k * k * dy * dy,
-                                 2.0 * (glm::dot(o, d) - m * k * dy), glm::dot(o, o) - m * m, t1,
-                                 t2))
-            return t;
-        return std::abs(t1 - t) <= std::abs(t2 - t) ? t1 : t2;
+    /// The ray's t at the height of the edge's parameter s (at an end, the end's own height,
+    /// so both edges there give one t).
+    static double heightT(const LatheEdge& seg, double s, double oy, double dy) {
+        const double y = s == 0.0   ? seg.a.y
+                         : s == 1.0 ? seg.b.y
+                                    : seg.a.y + s * (seg.b.y - seg.a.y);
+        return (y - oy) / dy;
     }
 
     /// The ray's crossings with the cone of a sloped edge, r = m + k·dy·t:
@@ -291,20 +257,17 @@ private:
                 if ((flo > 0.0) == (fhi > 0.0)) continue;
                 double t;
                 if (e.y == 0.0) {  // an annulus: one height
-                    t = (seg.a.y - oy) / dy;
+                    t = heightT(seg, 0.0, oy, dy);
                 } else if ((k == 0 && fa == 0.0) || (k + 1 == pieces && fb == 0.0)) {
-                    t = ((k == 0 && fa == 0.0 ? seg.a.y : seg.b.y) - oy) / dy;
+                    t = heightT(seg, k == 0 && fa == 0.0 ? 0.0 : 1.0, oy, dy);
                 } else {
                     if (!coneSolved) {
                         cone = coneRoots(seg, o, d, oy, dy, coneT, coneS);
                         coneSolved = true;
                     }
-                    const auto away = [&](double r) {
-                        return r < cut[k] ? cut[k] - r : r > cut[k + 1] ? r - cut[k + 1] : 0.0;
-                    };
-                    t = cone ? coneT[away(coneS[0]) <= away(coneS[1]) ? 0 : 1]
-                             : crossingT(seg, rootOnPiece(qa, qb, fa, cut[k], cut[k + 1], flo, fhi),
-                                         o, d, oy, dy);
+                    const double lo = cut[k], hi = cut[k + 1];
+                    t = cone ? coneT[outside(coneS[0], lo, hi) <= outside(coneS[1], lo, hi) ? 0 : 1]
+                             : heightT(seg, rootOnPiece(qa, qb, fa, lo, hi, flo, fhi), oy, dy);
                 }
                 hits.push_back({t, normalAt(ray.origin + t * ray.dir, seg.normal)});
             }
@@ -312,26 +275,43 @@ private:
     }
 
     /// A ray with dy = 0 stays at height oy and meets radius ρ twice, at tc ± √(ρ² − ρc²)/|d|
-    /// about its closest approach ρc to the axis: the edges crossing the line y = oy (classes
-    /// y > oy, as the prism's) give the radii.
+    /// about its closest approach ρc to the axis: the lines and Béziers crossing the line
+    /// y = oy (classes y > oy, as the prism's) give the radii.
     void crossLevel(const Ray& ray, std::vector<LatheCrossing>& hits) const {
         const Vec2 o(ray.origin.x, ray.origin.z), d(ray.dir.x, ray.dir.z);
         const double oy = ray.origin.y, dd = glm::dot(d, d);
         const double tc = -glm::dot(o, d) / dd;
         const Vec2 closest = o + tc * d;
         const double rc2 = glm::dot(closest, closest);
-        for (const LatheEdge& seg : mEdges) {
-            if ((seg.a.y > oy) == (seg.b.y > oy)) continue;
-            const double r = seg.a.y == oy   ? seg.a.x
-                             : seg.b.y == oy ? seg.b.x
-                                             : seg.a.x + (oy - seg.a.y) / (seg.b.y - seg.a.y) *
-                                                             (seg.b.x - seg.a.x);
+        const auto atRadius = [&](double r, Vec2 n) {
             const double h2 = r * r - rc2;
-            if (!(h2 > 0.0)) continue;  // missed or touched: both crossings or neither
+            if (!(h2 > 0.0)) return;  // missed or touched: both crossings or neither
             const double h = std::sqrt(h2 / dd);
-            const Vec2 n = seg.normal;
             for (const double t : {tc - h, tc + h})
                 hits.push_back({t, normalAt(ray.origin + t * ray.dir, n)});
+        };
+        for (const LatheEdge& seg : mEdges) {
+            if ((seg.a.y > oy) == (seg.b.y > oy)) continue;
+            atRadius(seg.a.y == oy ? seg.a.x
+                     : seg.b.y == oy
+                         ? seg.b.x
+                         : seg.a.x + (oy - seg.a.y) / (seg.b.y - seg.a.y) * (seg.b.x - seg.a.x),
+                     seg.normal);
+        }
+        std::vector<double>& roots = mRoots;
+        for (const LatheCurve& c : mCurves) {
+            BernsteinCoefficients g{};
+            for (int i = 0; i <= c.degree; ++i) g[i] = c.p[i].y - oy;
+            roots.clear();
+            bernsteinClassChanges(g, c.degree, roots);
+            for (const double s : roots) {
+                Vec2 tangent;
+                const Vec2 q = curvePoint(c, s, &tangent);
+                atRadius(s == 0.0   ? c.p[0].x
+                         : s == 1.0 ? c.p[c.degree].x
+                                    : q.x,
+                         Vec2(tangent.y, -tangent.x) / glm::length(tangent));
+            }
         }
     }
 
@@ -348,7 +328,7 @@ private:
         // Below 1e-100 of the horizontal part, a slope moves the ray's height by less than
         // rounding anywhere the ray can reach the solid.
         if (std::abs(ray.dir.y) <= 1e-100 * dxz)
-            crossLevel(ray, hits), crossCurvesLevel(ray, hits);
+            crossLevel(ray, hits);
         else
             crossSloped(ray, hits), crossCurvesSloped(ray, hits);
         std::sort(hits.begin(), hits.end(),
